@@ -1,0 +1,210 @@
+// `woven bsdf-eval` (JSON lines in, JSON lines out) and `woven bsdf-plot` (a PNG of the lobe).
+#include <stb/stb_image_write.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "commands.h"
+#include "woven_material.h"
+#include "woven_params_json.h"
+
+namespace woven {
+
+namespace {
+
+const char* yarnName(YarnType t) {
+    switch (t) {
+        case YarnType::Weft: return "weft";
+        case YarnType::Warp: return "warp";
+        case YarnType::Gap: return "gap";
+    }
+    return "gap";
+}
+
+glm::vec3 readDirection(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key)) throw std::invalid_argument(std::string("missing '") + key + "'");
+    const auto& v = j.at(key);
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+        throw std::invalid_argument(std::string("'") + key + "' must be an array of 3 numbers");
+    glm::vec3 d(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+    const float len = glm::length(d);
+    if (!std::isfinite(len) || len <= 0.0f)
+        throw std::invalid_argument(std::string("'") + key + "' must be a finite non-zero vector");
+    return d / len;
+}
+
+glm::dvec2 readUv(const nlohmann::json& j) {
+    if (!j.contains("uv")) return glm::dvec2(0.0);
+    const auto& v = j.at("uv");
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        throw std::invalid_argument("'uv' must be an array of 2 numbers");
+    glm::dvec2 uv(v[0].get<double>(), v[1].get<double>());
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) throw std::invalid_argument("'uv' must be finite");
+    return uv;
+}
+
+// Materials are rebuilt only when a line's material differs from every one seen before.
+class MaterialCache {
+public:
+    const WovenMaterial& get(const nlohmann::json& j) {
+        const std::string key = j.dump();
+        auto it = cache_.find(key);
+        if (it != cache_.end()) return *it->second;
+        auto material = std::make_unique<WovenMaterial>(paramsFromJson(j));
+        return *cache_.emplace(key, std::move(material)).first->second;
+    }
+
+private:
+    std::map<std::string, std::unique_ptr<WovenMaterial>> cache_;
+};
+
+// The flat surface of bsdf-eval: normal +z, dp/du = +x, dp/dv = +y. A viewer below it sees the
+// back face.
+ShadingInput flatSurface(const glm::dvec2& uv, const glm::vec3& wo) {
+    ShadingInput in;
+    in.uv = uv;
+    in.backSide = wo.z < 0.0f;
+    return in;
+}
+
+nlohmann::json evalLine(MaterialCache& cache, const nlohmann::json& query) {
+    if (!query.is_object()) throw std::invalid_argument("each line must be a JSON object");
+    if (!query.contains("material")) throw std::invalid_argument("missing 'material'");
+    const WovenMaterial& material = cache.get(query.at("material"));
+    const glm::vec3 wi = readDirection(query, "wi"), wo = readDirection(query, "wo");
+    const auto shading = material.shade(flatSurface(readUv(query), wo));
+    nlohmann::json out;
+    if (!shading) {
+        out["f"] = {0.0, 0.0, 0.0};
+        out["pdf"] = 0.0;
+        out["yarn"] = "gap";
+        return out;
+    }
+    const glm::vec3 f = shading->bsdf.eval(wo, wi);
+    out["f"] = {f.r, f.g, f.b};
+    out["pdf"] = shading->bsdf.pdf(wo, wi);
+    out["yarn"] = yarnName(shading->yarn);
+    return out;
+}
+
+int runBsdfEval() {
+    MaterialCache cache;
+    std::string line;
+    int lineNumber = 0, errors = 0;
+    while (std::getline(std::cin, line)) {
+        ++lineNumber;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        try {
+            std::cout << evalLine(cache, nlohmann::json::parse(line)).dump() << "\n";
+        } catch (const std::exception& e) {
+            // One output line per input line, so a caller can still pair them up.
+            const std::string message = "stdin line " + std::to_string(lineNumber) + ": " + e.what();
+            std::cout << nlohmann::json{{"error", message}}.dump() << "\n";
+            std::cerr << "woven bsdf-eval: error: " << message << "\n";
+            ++errors;
+        }
+    }
+    std::cout.flush();
+    return errors ? 1 : 0;
+}
+
+// A perceptual heat map (black - red - yellow - white) for the plot.
+glm::vec3 heat(float x) {
+    x = glm::clamp(x, 0.0f, 1.0f);
+    return glm::clamp(glm::vec3(3.0f * x, 3.0f * x - 1.0f, 3.0f * x - 2.0f), 0.0f, 1.0f);
+}
+
+// The centre of the first element of the tile whose top yarn is `type`, if any.
+std::optional<glm::dvec2> elementCentre(const WovenMaterial& m, YarnType type) {
+    const WeavePattern& p = m.pattern(false);
+    for (int V = 0; V < p.height(); ++V)
+        for (int U = 0; U < p.width(); ++U)
+            if (p.top(U, V) == type)
+                return glm::dvec2((U + 0.5) / m.params().repeat.x, (V + 0.5) / m.params().repeat.y);
+    return std::nullopt;
+}
+
+void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, int size, const std::string& out) {
+    nlohmann::json j;
+    try {
+        j = materialText.empty() ? nlohmann::json::object() : nlohmann::json::parse(materialText);
+    } catch (const std::exception& e) {
+        throw std::invalid_argument(std::string("--material: not valid JSON: ") + e.what());
+    }
+    const WovenMaterial material(paramsFromJson(j));
+    const float theta = glm::radians(thetaDeg), phi = glm::radians(phiDeg);
+    const glm::vec3 wo(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+
+    // One panel per yarn type: f(wo, wi) cos(wi) over the hemisphere of wi, seen from above
+    // (orthographic: x = +u to the right, y = +v up). Weft and warp lobes are the same lobe
+    // turned by 90 degrees, which is the alternating anisotropy.
+    const YarnType types[2] = {YarnType::Weft, YarnType::Warp};
+    const int width = 2 * size;
+    std::vector<float> value(size_t(width) * size, -1.0f);
+    float maxValue = 0.0f;
+    for (int panel = 0; panel < 2; ++panel) {
+        const auto centre = elementCentre(material, types[panel]);
+        if (!centre) continue;
+        ShadingInput in;
+        in.uv = *centre;
+        const auto shading = material.shade(in);
+        if (!shading) continue;
+        for (int py = 0; py < size; ++py)
+            for (int px = 0; px < size; ++px) {
+                const float x = (px + 0.5f) / size * 2.0f - 1.0f, y = 1.0f - (py + 0.5f) / size * 2.0f;
+                const float r2 = x * x + y * y;
+                if (r2 >= 1.0f) continue;
+                const glm::vec3 wi(x, y, std::sqrt(1.0f - r2));
+                const float v = glm::dot(shading->bsdf.eval(wo, wi), glm::vec3(1.0f / 3.0f)) * wi.z;
+                value[size_t(py) * width + panel * size + px] = v;
+                maxValue = std::max(maxValue, v);
+            }
+    }
+    std::vector<unsigned char> rgb(size_t(width) * size * 3, 40);
+    for (size_t i = 0; i < value.size(); ++i) {
+        if (value[i] < 0.0f) continue;
+        // Square-root scale so the diffuse floor and the specular peak both show.
+        const glm::vec3 c = heat(maxValue > 0.0f ? std::sqrt(value[i] / maxValue) : 0.0f);
+        for (int k = 0; k < 3; ++k) rgb[i * 3 + k] = (unsigned char)std::lround(c[k] * 255.0f);
+    }
+    const std::string tmp = out + ".partial";
+    if (!stbi_write_png(tmp.c_str(), width, size, 3, rgb.data(), width * 3))
+        throw std::runtime_error("cannot write '" + out + "'");
+    if (std::rename(tmp.c_str(), out.c_str()) != 0) throw std::runtime_error("cannot write '" + out + "'");
+    std::cerr << "wrote " << out << " (left: weft element, right: warp element; f cos over the hemisphere of wi, "
+              << "x = +u, y = +v, peak f cos = " << maxValue << ")\n";
+}
+
+}  // namespace
+
+void addBsdfCommands(CLI::App& app) {
+    CLI::App* eval = app.add_subcommand(
+        "bsdf-eval",
+        "Evaluate the woven BSDF: JSON lines on stdin {\"material\":{...},\"uv\":[u,v],\"wi\":[x,y,z],\"wo\":[x,y,z]},\n"
+        "one line out each {\"f\":[r,g,b],\"pdf\":p,\"yarn\":\"weft|warp|gap\"}. Local frame: normal +z, dp/du +x,\n"
+        "dp/dv +y. f excludes the cosine; pdf is the density of sampling wi given wo.");
+    eval->callback([] {
+        if (int rc = runBsdfEval()) throw CLI::RuntimeError(rc);
+    });
+
+    struct PlotOptions {
+        std::string material, out = "lobe.png";
+        float theta = 45.0f, phi = 0.0f;
+        int size = 256;
+    };
+    auto opts = std::make_shared<PlotOptions>();
+    CLI::App* plot = app.add_subcommand("bsdf-plot", "Write a PNG of the lobe f cos over the hemisphere, weft and warp");
+    plot->add_option("--material", opts->material, "woven material as JSON (bsdf-eval's names)");
+    plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(CLI::Range(0.0f, 89.9f));
+    plot->add_option("--phi", opts->phi, "azimuth of wo in degrees, 0 = +u");
+    plot->add_option("--size", opts->size, "pixels per panel")->check(CLI::Range(16, 4096));
+    plot->add_option("-o,--out", opts->out, "output PNG");
+    plot->callback([opts] { runBsdfPlot(opts->material, opts->theta, opts->phi, opts->size, opts->out); });
+}
+
+}  // namespace woven

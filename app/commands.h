@@ -1,0 +1,10 @@
+#pragma once
+// Each subcommand of `woven` registers its options and its action on the CLI11 app.
+#include <CLI/CLI.hpp>
+
+namespace woven {
+
+void addPatternCommand(CLI::App& app);
+void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
+
+}  // namespace woven

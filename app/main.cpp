@@ -1,0 +1,21 @@
+// `woven`: the command-line entry point; one subcommand per job.
+#include <exception>
+#include <iostream>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"woven: a renderer for woven fabric"};
+    app.require_subcommand(1);
+    woven::addPatternCommand(app);
+    woven::addBsdfCommands(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "woven: error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,72 @@
+#include "woven_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "yarn_noise.h"
+
+namespace woven {
+
+namespace {
+glm::vec3 projectOut(const glm::vec3& v, const glm::vec3& n) { return v - glm::dot(v, n) * n; }
+bool usable(const glm::vec3& v) {
+    const float l2 = glm::dot(v, v);
+    return l2 > 1e-24f && std::isfinite(l2);
+}
+}  // namespace
+
+Frame tangentFrame(const glm::vec3& n, const glm::vec3& dpdu, const glm::vec3& dpdv) {
+    glm::vec3 t = projectOut(dpdu, n);
+    glm::vec3 b = projectOut(dpdv, n);
+    Frame f;
+    f.z = n;
+    if (usable(t)) {
+        f.x = glm::normalize(t);
+        // Keep dp/dv's orientation (it tells which way +v runs, on either face).
+        b = projectOut(b, f.x);
+        f.y = usable(b) ? glm::normalize(b) : glm::cross(n, f.x);
+    } else if (usable(b)) {
+        f.y = glm::normalize(b);
+        f.x = glm::cross(f.y, n);
+    } else {
+        return Frame::fromNormal(n);
+    }
+    return f;
+}
+
+WovenMaterial::WovenMaterial(const WovenParams& params)
+    : params_((validate(params), params)),
+      front_(WeavePattern::fromParams(params)),
+      back_(front_.reversed()),
+      mayHaveGaps_(params.yarn_width < 1.0f && params.warp_width < 1.0f && params.backing == 0) {}
+
+bool WovenMaterial::isSeeThrough(const glm::dvec2& uv) const {
+    if (!mayHaveGaps_) return false;
+    // Both yarns' coverage is the same on either face, so the front tile answers for both.
+    return yarnAt(front_, params_, uv).type == YarnType::Gap;
+}
+
+std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in) const {
+    const YarnPoint y = yarnAt(pattern(in.backSide), params_, in.uv);
+    const glm::vec3 n = in.backSide ? -in.ns : in.ns;
+    const Frame tangent = tangentFrame(n, in.dpdu, in.dpdv);
+
+    if (y.type == YarnType::Gap) {
+        if (!params_.backing) return std::nullopt;
+        return WovenShading{YarnType::Gap, SurfaceBsdf(tangent, AshikhminShirley(0.0f, 0.0f, 0.0f, params_.backing_color))};
+    }
+    const bool weft = y.type == YarnType::Weft;
+    glm::vec3 color = weft ? params_.weft_color : params_.warp_color;
+    if (params_.noise > 0.0f) {
+        const uint64_t seed = uint64_t(y.yarnIndex) * 2 + (weft ? 0 : 1);
+        const float n01 = yarnNoise(y.along * params_.noise_scale, seed);
+        color = glm::clamp(color * (1.0f + params_.noise * n01), 0.0f, 1.0f);
+    }
+    const glm::vec3 bumped = tangent.toWorld(y.normal);
+    const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
+    const AshikhminShirley lobe = weft ? AshikhminShirley(params_.ex, params_.ey, params_.rs, color)
+                                       : AshikhminShirley(params_.warp_ex, params_.warp_ey, params_.rs, color);
+    return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
+}
+
+}  // namespace woven

@@ -1,0 +1,82 @@
+#include "yarn_geometry.h"
+
+#include <cmath>
+
+namespace woven {
+
+glm::vec2 crossSectionNormal(float cy, float x) {
+    const float up = std::sqrt(std::fmax(0.0f, 1.0f - x * x));
+    const glm::vec2 n(cy * x, up);
+    const float len = glm::length(n);
+    // c_y = 0 at |x| = 1 is 0/0: a flat yarn's normal is straight up everywhere.
+    return len > 1e-12f ? n / len : glm::vec2(0.0f, 1.0f);
+}
+
+namespace {
+
+// Crimp: along a float of L elements the yarn rises between the crossings that hold it down,
+// h(q) = crimp (1 - 1/L) sin(pi q), q in [0, 1] along the float. A float of one element is
+// held at both ends (plain weave stays tight); long floats (satin) bulge.
+float crimpSlope(float crimp, WeavePattern::Float f, double alongInElement) {
+    if (crimp <= 0.0f || f.length <= 1) return 0.0f;
+    const double L = f.length;
+    const double q = (f.position + alongInElement) / L;
+    return float(crimp * (1.0 - 1.0 / L) * M_PI / L * std::cos(M_PI * q));
+}
+
+// The normal of a yarn whose along axis is `alongAxis` (0 = u, 1 = v) at across position x,
+// tilted along the yarn by the crimp slope.
+glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
+    const glm::vec2 section = crossSectionNormal(cy, x);  // (across, up)
+    // Rotate the section normal about the across axis by atan(slope): norm is preserved.
+    const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
+    const float alongComp = -slope * inv * section.y;
+    const float upComp = inv * section.y;
+    glm::vec3 n;
+    n[alongAxis] = alongComp;
+    n[1 - alongAxis] = section.x;
+    n.z = upComp;
+    return n;
+}
+
+}  // namespace
+
+YarnPoint yarnAt(const WeavePattern& pattern, const WovenParams& p, glm::dvec2 uv) {
+    // Double precision and 64-bit element indices keep |u|, |v| up to 1e6 (and repeat counts
+    // far beyond) free of overflow; the fractional position inside the element stays in [0, 1).
+    const glm::dvec2 e = uv * glm::dvec2(p.repeat);
+    const double Uf = std::floor(e.x), Vf = std::floor(e.y);
+    const int64_t U = int64_t(Uf), V = int64_t(Vf);
+    const double s = std::fmin(e.x - Uf, 1.0 - 1e-12), t = std::fmin(e.y - Vf, 1.0 - 1e-12);
+
+    const YarnType top = pattern.top(U, V);
+    // Across coordinates of the weft (across = t) and of the warp (across = s) in half widths.
+    const float xWeft = float((t - 0.5) / (0.5 * p.yarn_width));
+    const float xWarp = float((s - 0.5) / (0.5 * p.warp_width));
+
+    YarnPoint y;
+    auto onWeft = [&](float slope) {
+        y.type = YarnType::Weft;
+        y.yarnIndex = V;
+        y.along = e.x;
+        y.normal = yarnNormal(0, p.cy, xWeft, slope);
+    };
+    auto onWarp = [&](float slope) {
+        y.type = YarnType::Warp;
+        y.yarnIndex = U;
+        y.along = e.y;
+        y.normal = yarnNormal(1, p.cy, xWarp, slope);
+    };
+    // The top yarn where it covers the point, else the crossing yarn below it in the gap
+    // beside the top yarn (no crimp there: it is dipping under), else a true gap.
+    if (top == YarnType::Weft) {
+        if (std::fabs(xWeft) <= 1.0f) onWeft(crimpSlope(p.crimp, pattern.floatAt(U, V), s));
+        else if (std::fabs(xWarp) <= 1.0f) onWarp(0.0f);
+    } else {
+        if (std::fabs(xWarp) <= 1.0f) onWarp(crimpSlope(p.crimp, pattern.floatAt(U, V), t));
+        else if (std::fabs(xWeft) <= 1.0f) onWeft(0.0f);
+    }
+    return y;
+}
+
+}  // namespace woven

@@ -1,0 +1,55 @@
+#pragma once
+// One final-frame render: a scene, settings, and the film it fills. Used by `woven render`, the
+// previewer's Render button and the benchmarks alike. The frame is a pure function of (scene,
+// settings.seed, sample range): random numbers are keyed by pixel and sample index only.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "scene_description.h"
+
+namespace woven {
+
+struct RenderSettings {
+    int width = 640, height = 480;
+    int spp = 64;              // samples per pixel to take (from firstSample on)
+    int firstSample = 0;       // start of this render's sample range (for distributed renders)
+    double timeLimit = 0.0;    // seconds; > 0 stops after the pass that crosses it
+    std::string integrator = "auto";  // "bdpt", "path" or "auto"
+    uint64_t seed = 0;
+    int threads = 0;           // 0 = all cores
+    int maxDepth = 8;          // path vertices after the camera
+    std::optional<Camera> camera;  // overrides the scene's
+};
+
+struct RenderProgress {
+    int samplesDone = 0, samplesTotal = 0;  // per pixel
+    double elapsed = 0.0, remaining = 0.0;  // seconds (remaining: estimate)
+    double samplesPerSecond = 0.0;          // camera samples (pixels x spp) per second
+};
+
+// Mean radiance and sample count per pixel: what an EXR keeps so renders can be merged.
+struct FilmImage {
+    Image radiance;          // linear RGB mean
+    std::vector<float> sampleCount;  // per pixel
+};
+
+class RenderJob {
+public:
+    RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings);
+    ~RenderJob();
+
+    // Blocks until done or `cancel` becomes true; renders in passes of one sample per pixel so
+    // that snapshot() is a valid image after every pass. Calls onProgress after each pass.
+    void run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress = {});
+    FilmImage snapshot() const;  // thread-safe
+    const std::string& integratorName() const;  // the one chosen ("auto" resolved)
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace woven

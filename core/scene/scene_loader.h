@@ -1,0 +1,19 @@
+#pragma once
+// Loading a scene from disk: a glTF 2.0 file (.gltf, .glb) or a woven scene file (.json) that
+// names a glTF file and makes its materials woven, sets lights, environment and camera
+// (docs/SCENE_FORMAT.md). Every failure throws SceneError whose message names the file and
+// the problem; nothing is ever half-loaded.
+#include <stdexcept>
+#include <string>
+
+#include "scene_description.h"
+
+namespace woven {
+
+struct SceneError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+SceneDescription loadScene(const std::string& path);
+
+}  // namespace woven
