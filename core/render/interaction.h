@@ -1,0 +1,30 @@
+#pragma once
+// Rays and ray-surface hits in world space.
+#include <glm/glm.hpp>
+#include <limits>
+
+namespace woven {
+
+struct Ray {
+    glm::vec3 o{0.0f}, d{0.0f, 0.0f, 1.0f};
+    float tMax = std::numeric_limits<float>::infinity();
+};
+
+struct SurfaceHit {
+    float t = 0.0f;
+    glm::vec3 p{0.0f};
+    glm::vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal of the front face (winding order)
+    glm::vec3 ns{0.0f, 0.0f, 1.0f};  // unit interpolated shading normal, on ng's side
+    glm::vec2 uv{0.0f};
+    glm::vec3 dpdu{0.0f}, dpdv{0.0f};  // from the triangle's UVs (zero when degenerate)
+    int mesh = -1, triangle = -1;
+    int material = -1;
+};
+
+// A reflection-only BSDF may only connect directions on the same side of the geometric
+// surface: this is what keeps shading normals from leaking light (Veach 1997, 5.3).
+inline bool sameGeometricSide(const SurfaceHit& hit, const glm::vec3& a, const glm::vec3& b) {
+    return glm::dot(a, hit.ng) * glm::dot(b, hit.ng) > 0.0f;
+}
+
+}  // namespace woven

@@ -1,0 +1,55 @@
+#pragma once
+// The scene as the integrators see it: one Embree 3 BVH over every triangle, materials ready to
+// shade, and the lights. Woven gaps that are see-through are skipped inside Embree's filter
+// callbacks, so camera rays, bounces and shadow rays all pass through them the same way.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "camera_model.h"
+#include "light.h"
+#include "surface_bsdf.h"
+
+namespace woven {
+
+class RenderScene {
+public:
+    // Throws SceneError (scene_loader.h) for what cannot be rendered: NaN vertices, no geometry.
+    explicit RenderScene(std::shared_ptr<const SceneDescription> scene);
+    ~RenderScene();
+    RenderScene(const RenderScene&) = delete;
+    RenderScene& operator=(const RenderScene&) = delete;
+
+    std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    // Is the segment from a surface point to `target` blocked? The origin is offset off the
+    // surface; the far end stops short of target by the same relative epsilon.
+    bool occluded(const SurfaceHit& from, const glm::vec3& target) const;
+    bool occludedFrom(const glm::vec3& p, const glm::vec3& target) const;  // from a non-surface point (camera, light)
+    bool occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const;
+
+    // A ray leaving a hit in direction d, offset off the surface on d's side so that it cannot
+    // re-hit the same triangle (no acne, no leaks at shading-normal edges).
+    Ray spawnRay(const SurfaceHit& from, const glm::vec3& d) const;
+
+    // The BSDF seen from direction wo (pointing away from the surface); nullopt for a surface
+    // that reflects nothing there.
+    std::optional<SurfaceBsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const;
+    // Radiance emitted by the hit surface towards w (zero unless it is an area light).
+    glm::vec3 emitted(const SurfaceHit& hit, const glm::vec3& w) const;
+
+    const std::vector<Light>& lights() const;
+    int lightIndex(const SurfaceHit& hit) const;  // the area light of the hit triangle, or -1
+    int environmentLight() const;                 // index of the environment light, or -1
+    // Lights are chosen in proportion to their power.
+    int sampleLight(float u, float* pmf) const;
+    float lightPmf(int index) const;
+
+    const Bounds& bounds() const;
+    const SceneDescription& description() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace woven
