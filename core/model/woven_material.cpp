@@ -58,7 +58,8 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in) const {
     const bool weft = y.type == YarnType::Weft;
     glm::vec3 color = weft ? params_.weft_color : params_.warp_color;
     if (params_.noise > 0.0f) {
-        const uint64_t seed = uint64_t(y.yarnIndex) * 2 + (weft ? 0 : 1);
+        // The seed wraps the yarn index to 32 bits, as the GLSL twin does.
+        const uint32_t seed = uint32_t(y.yarnIndex) * 2U + (weft ? 0U : 1U);
         const float n01 = yarnNoise(y.along * params_.noise_scale, seed);
         color = glm::clamp(color * (1.0f + params_.noise * n01), 0.0f, 1.0f);
     }

@@ -2,24 +2,22 @@
 
 #include <cmath>
 
-#include "sampling.h"
-
 namespace woven {
 
 namespace {
-float gradient(int64_t lattice, uint64_t seed) {
-    return float(mix64(uint64_t(lattice) * 0x9e3779b97f4a7c15ULL ^ seed) >> 40) * 0x1p-23f - 1.0f;
+float gradient(uint32_t lattice, uint32_t key) {
+    return float(hash32(lattice ^ key) >> 8) * 0x1p-23f - 1.0f;  // [-1, 1)
 }
 }  // namespace
 
-float yarnNoise(double along, uint64_t seed) {
-    const uint64_t key = mix64(seed + 0x5851f42d4c957f2dULL);
-    const double x = along + double(key >> 40) * 0x1p-24;  // per-yarn lattice offset in [0, 1)
+float yarnNoise(double along, uint32_t seed) {
+    const uint32_t key = hash32(seed + 0x9e3779b9U);
+    const double x = along + double(key >> 8) * 0x1p-24;  // per-yarn lattice offset in [0, 1)
     const double cell = std::floor(x);
     const float f = float(x - cell);
-    const int64_t i = int64_t(cell);
+    const uint32_t i = uint32_t(int64_t(cell));  // wraps like a GLSL int -> uint conversion
     const float fade = f * f * f * (f * (f * 6.0f - 15.0f) + 10.0f);
-    const float a = gradient(i, key) * f, b = gradient(i + 1, key) * (f - 1.0f);
+    const float a = gradient(i, key) * f, b = gradient(i + 1U, key) * (f - 1.0f);
     return 2.0f * (a + fade * (b - a));  // 1D Perlin lies in [-0.5, 0.5]
 }
 
