@@ -1,0 +1,223 @@
+#include "image_io.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+#include "atomic_file.h"
+
+namespace woven {
+
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float c) {
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+    throw ImageError(path + ": " + problem);
+}
+
+void requireReadable(const std::string& path) {
+    if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot open the file (missing or unreadable)");
+}
+
+std::string takeExrError(const char* err, int code) {
+    std::string message = err ? err : "tinyexr error " + std::to_string(code);
+    if (err) FreeEXRErrorMessage(err);
+    return message;
+}
+
+Image readWithStb(const std::string& path, ChannelEncoding encoding) {
+    Image image;
+    int channels = 0;
+    if (stbi_is_hdr(path.c_str())) {
+        float* data = stbi_loadf(path.c_str(), &image.width, &image.height, &channels, 3);
+        if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
+        image.pixels.resize(size_t(image.width) * image.height);
+        std::memcpy(image.pixels.data(), data, image.pixels.size() * sizeof(glm::vec3));
+        stbi_image_free(data);
+        return image;
+    }
+    const auto decode = [encoding](float c) {
+        return encoding == ChannelEncoding::Srgb ? srgbToLinear(c) : c;
+    };
+    if (stbi_is_16_bit(path.c_str())) {
+        stbi_us* data = stbi_load_16(path.c_str(), &image.width, &image.height, &channels, 3);
+        if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
+        image.pixels.resize(size_t(image.width) * image.height);
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) image.pixels[i][c] = decode(data[3 * i + c] / 65535.0f);
+        stbi_image_free(data);
+        return image;
+    }
+    stbi_uc* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+    if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
+    // 256-entry table: the pow() per channel would dominate loading large textures.
+    std::array<float, 256> table;
+    for (int v = 0; v < 256; ++v) table[v] = decode(v / 255.0f);
+    image.pixels.resize(size_t(image.width) * image.height);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i][c] = table[data[3 * i + c]];
+    stbi_image_free(data);
+    return image;
+}
+
+float toneMap(float c, ToneMap curve) {
+    switch (curve) {
+        case ToneMap::Clamp: return c;
+        case ToneMap::Reinhard: return c / (1.0f + c);
+        case ToneMap::Aces:
+            return (c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f);
+    }
+    return c;
+}
+
+}  // namespace
+
+ExrImage readExr(const std::string& path) {
+    requireReadable(path);
+    EXRVersion version;
+    int code = ParseEXRVersionFromFile(&version, path.c_str());
+    if (code != TINYEXR_SUCCESS) fail(path, "not an OpenEXR file (bad magic number or version)");
+    if (version.multipart) fail(path, "multi-part OpenEXR files are not supported");
+
+    EXRHeader header;
+    InitEXRHeader(&header);
+    const char* err = nullptr;
+    code = ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err);
+    if (code != TINYEXR_SUCCESS) fail(path, "cannot read the OpenEXR header: " + takeExrError(err, code));
+    for (int c = 0; c < header.num_channels; ++c)
+        if (header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF)
+            header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+
+    EXRImage loaded;
+    InitEXRImage(&loaded);
+    code = LoadEXRImageFromFile(&loaded, &header, path.c_str(), &err);
+    if (code != TINYEXR_SUCCESS) {
+        FreeEXRHeader(&header);
+        fail(path, "cannot decode the OpenEXR image: " + takeExrError(err, code));
+    }
+
+    ExrImage result;
+    std::string problem;
+    if (!loaded.images) problem = "tiled OpenEXR files are not supported";
+    const auto channel = [&](const char* name) -> const float* {
+        for (int c = 0; c < header.num_channels; ++c)
+            if (std::strcmp(header.channels[c].name, name) == 0 &&
+                header.requested_pixel_types[c] == TINYEXR_PIXELTYPE_FLOAT)
+                return reinterpret_cast<const float*>(loaded.images[c]);
+        return nullptr;
+    };
+    if (problem.empty()) {
+        const float* r = channel("R");
+        const float* g = channel("G");
+        const float* b = channel("B");
+        const float* y = channel("Y");
+        if (!(r && g && b) && y) r = g = b = y;
+        if (!(r && g && b)) problem = "no float or half R, G, B (or Y) channels";
+        else {
+            Image& image = result.image;
+            image.width = loaded.width;
+            image.height = loaded.height;
+            image.pixels.resize(size_t(image.width) * image.height);
+            for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = {r[i], g[i], b[i]};
+            if (const float* n = channel("N")) result.sampleCount.assign(n, n + image.pixels.size());
+        }
+    }
+    FreeEXRImage(&loaded);
+    FreeEXRHeader(&header);
+    if (!problem.empty()) fail(path, problem);
+    return result;
+}
+
+Image readImage(const std::string& path, ChannelEncoding encoding) {
+    requireReadable(path);
+    if (IsEXR(path.c_str()) == TINYEXR_SUCCESS) return readExr(path).image;
+    return readWithStb(path, encoding);
+}
+
+void writePng(const std::string& path, const Image& image, const PngOptions& options) {
+    if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * image.height)
+        fail(path, "cannot write an empty or inconsistent image");
+    const float scale = std::exp2(options.exposure);
+    std::vector<unsigned char> bytes(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            float v = toneMap(image.pixels[i][c] * scale, options.toneMap);
+            // NaN (a bug upstream) shows as black rather than undefined behaviour in the cast.
+            v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);
+            bytes[3 * i + c] = static_cast<unsigned char>(std::lround(linearToSrgb(v) * 255.0f));
+        }
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        if (!stbi_write_png(tmp.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
+            throw ImageError("cannot write the PNG data");
+    });
+}
+
+void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precision) {
+    const Image& image = exr.image;
+    const size_t count = size_t(image.width) * image.height;
+    if (image.width <= 0 || image.height <= 0 || image.pixels.size() != count)
+        fail(path, "cannot write an empty or inconsistent image");
+    if (!exr.sampleCount.empty() && exr.sampleCount.size() != count)
+        fail(path, "the sample-count channel does not match the image size");
+
+    // Channels in alphabetical order, as OpenEXR readers expect: B, G, (N,) R.
+    std::vector<std::vector<float>> planes(3, std::vector<float>(count));
+    for (size_t i = 0; i < count; ++i) {
+        planes[0][i] = image.pixels[i].b;
+        planes[1][i] = image.pixels[i].g;
+        planes[2][i] = image.pixels[i].r;
+    }
+    std::vector<std::string> names = {"B", "G", "R"};
+    const int colorType = precision == ExrPrecision::Half ? TINYEXR_PIXELTYPE_HALF : TINYEXR_PIXELTYPE_FLOAT;
+    std::vector<int> requested(3, colorType);
+    if (!exr.sampleCount.empty()) {
+        planes.insert(planes.begin() + 2, exr.sampleCount);
+        names.insert(names.begin() + 2, "N");
+        requested.insert(requested.begin() + 2, TINYEXR_PIXELTYPE_FLOAT);
+    }
+    const int channels = int(planes.size());
+    std::vector<unsigned char*> pointers(channels);
+    std::vector<EXRChannelInfo> infos(channels);
+    std::vector<int> inputTypes(channels, TINYEXR_PIXELTYPE_FLOAT);
+    for (int c = 0; c < channels; ++c) {
+        pointers[c] = reinterpret_cast<unsigned char*>(planes[c].data());
+        std::memset(&infos[c], 0, sizeof(EXRChannelInfo));
+        std::strncpy(infos[c].name, names[c].c_str(), sizeof(infos[c].name) - 1);
+    }
+
+    EXRImage exrImage;
+    InitEXRImage(&exrImage);
+    exrImage.num_channels = channels;
+    exrImage.images = pointers.data();
+    exrImage.width = image.width;
+    exrImage.height = image.height;
+
+    EXRHeader header;
+    InitEXRHeader(&header);
+    header.num_channels = channels;
+    header.channels = infos.data();
+    header.pixel_types = inputTypes.data();
+    header.requested_pixel_types = requested.data();
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        const char* err = nullptr;
+        const int code = SaveEXRImageToFile(&exrImage, &header, tmp.c_str(), &err);
+        if (code != TINYEXR_SUCCESS) throw ImageError("cannot write the OpenEXR data: " + takeExrError(err, code));
+    });
+}
+
+}  // namespace woven

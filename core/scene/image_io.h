@@ -1,0 +1,55 @@
+#pragma once
+// Reading and writing woven::Image: PNG/JPEG/HDR/EXR in, PNG (display-ready) and EXR (linear,
+// with a per-pixel sample count so renders of disjoint sample ranges can be merged) out.
+// Every failure throws ImageError naming the file; every write is atomic (atomic_file.h).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+struct ImageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// How 8- and 16-bit channels are turned into linear floats. Colour textures (baseColor,
+// emissive) are sRGB-encoded; data textures (roughness, normals) are already linear.
+// Float formats (.hdr, .exr) are always linear and ignore this.
+enum class ChannelEncoding { Srgb, Linear };
+
+// Reads .png, .jpg/.jpeg, .hdr (stb_image) or .exr (tinyexr, its R, G, B channels; a file with
+// only Y is read as grey). Grey images are expanded to RGB; alpha is dropped.
+Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncoding::Srgb);
+
+// Display transform of writePng: scale by 2^exposure, tone-map, then sRGB-encode to 8 bits.
+enum class ToneMap {
+    Clamp,     // values above 1 clip to white
+    Reinhard,  // c / (1 + c) per channel
+    Aces       // Narkowicz's fit of the ACES filmic curve
+};
+struct PngOptions {
+    float exposure = 0.0f;  // in stops
+    ToneMap toneMap = ToneMap::Clamp;
+};
+void writePng(const std::string& path, const Image& image, const PngOptions& options = {});
+
+// A linear image with, optionally, how many samples each pixel's value is the mean of.
+struct ExrImage {
+    Image image;
+    std::vector<float> sampleCount;  // empty, or one per pixel (channel "N")
+};
+enum class ExrPrecision { Half, Float };
+
+// Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
+// float, exact for counts below 2^24), ZIP-compressed.
+void writeExr(const std::string& path, const ExrImage& exr,
+              ExrPrecision precision = ExrPrecision::Half);
+ExrImage readExr(const std::string& path);
+
+// The sRGB transfer functions (IEC 61966-2-1), on one channel.
+float srgbToLinear(float encoded);
+float linearToSrgb(float linear);
+
+}  // namespace woven

@@ -1,0 +1,210 @@
+// Image reading and writing: round trips through real PNG and EXR files, the sRGB transfer
+// functions against their published constants, and that failed writes leave no file.
+#include "image_io.h"
+
+#include <gtest/gtest.h>
+#include <stb_image_write.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "atomic_file.h"
+#include "temp_dir.h"
+
+namespace woven {
+namespace {
+
+using test::TempDir;
+namespace fs = std::filesystem;
+
+Image gradient(int width, int height) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.pixels.resize(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.at(x, y) = {x / float(width - 1), y / float(height - 1), 0.5f * (x + y) / float(width + height)};
+    return image;
+}
+
+bool onlyFileIs(const TempDir& dir, const std::string& name) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(dir.path())) {
+        if (entry.path().filename() != name) return false;
+        ++count;
+    }
+    return count == 1;
+}
+
+TEST(Srgb, MatchesTheStandardsBreakpointsAndWhite) {
+    // IEC 61966-2-1: the linear segment ends at 0.04045 encoded = 0.0031308 linear.
+    EXPECT_NEAR(srgbToLinear(0.04045f), 0.04045f / 12.92f, 1e-7f);
+    EXPECT_NEAR(srgbToLinear(1.0f), 1.0f, 1e-6f);
+    EXPECT_NEAR(srgbToLinear(0.5f), 0.214041f, 1e-5f);  // the widely tabulated mid-grey
+    EXPECT_NEAR(linearToSrgb(0.214041f), 0.5f, 1e-5f);
+    EXPECT_NEAR(linearToSrgb(0.0031308f), 0.0031308f * 12.92f, 1e-6f);
+}
+
+TEST(Png, RoundTripIsWithinHalfAnEightBitStep) {
+    TempDir dir;
+    const Image original = gradient(37, 21);
+    writePng(dir.file("g.png"), original);
+    const Image back = readImage(dir.file("g.png"), ChannelEncoding::Srgb);
+    ASSERT_EQ(back.width, 37);
+    ASSERT_EQ(back.height, 21);
+    EXPECT_TRUE(onlyFileIs(dir, "g.png"));
+    // Quantisation happens in sRGB space: the encoded value is within 0.5/255 of the exact one.
+    for (size_t i = 0; i < original.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(linearToSrgb(back.pixels[i][c]), linearToSrgb(original.pixels[i][c]), 0.5f / 255.0f + 1e-5f);
+}
+
+TEST(Png, RowZeroIsTheTop) {
+    TempDir dir;
+    Image image;
+    image.width = 2;
+    image.height = 2;
+    image.pixels = {{1, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}};
+    writePng(dir.file("rows.png"), image);
+    const Image back = readImage(dir.file("rows.png"));
+    EXPECT_EQ(back.at(0, 0), glm::vec3(1, 0, 0));
+    EXPECT_EQ(back.at(1, 1), glm::vec3(0, 0, 1));
+}
+
+TEST(Png, ExposureAndToneMapping) {
+    TempDir dir;
+    Image image;
+    image.width = 3;
+    image.height = 1;
+    image.pixels = {{0.25f, 0.25f, 0.25f}, {1.0f, 1.0f, 1.0f}, {-1.0f, std::nanf(""), 7.0f}};
+    writePng(dir.file("e.png"), image, {1.0f, ToneMap::Clamp});
+    Image back = readImage(dir.file("e.png"));
+    EXPECT_NEAR(back.at(0, 0).r, 0.5f, 0.005f);  // one stop up doubles 0.25
+    EXPECT_EQ(back.at(1, 0).r, 1.0f);            // 2.0 clips to white
+    EXPECT_EQ(back.at(2, 0), glm::vec3(0.0f, 0.0f, 1.0f));  // negative and NaN are black
+
+    writePng(dir.file("r.png"), image, {0.0f, ToneMap::Reinhard});
+    back = readImage(dir.file("r.png"));
+    EXPECT_NEAR(back.at(1, 0).r, 0.5f, 0.005f);    // 1 / (1 + 1)
+    EXPECT_NEAR(back.at(2, 0).b, 0.875f, 0.006f);  // 7 / 8
+}
+
+TEST(Png, LinearEncodingKeepsTheStoredValues) {
+    TempDir dir;
+    const unsigned char data[3] = {0, 128, 255};
+    ASSERT_TRUE(stbi_write_png(dir.file("d.png").c_str(), 1, 1, 3, data, 3));
+    const Image linear = readImage(dir.file("d.png"), ChannelEncoding::Linear);
+    EXPECT_FLOAT_EQ(linear.at(0, 0).g, 128.0f / 255.0f);
+    const Image srgb = readImage(dir.file("d.png"), ChannelEncoding::Srgb);
+    EXPECT_NEAR(srgb.at(0, 0).g, 0.2158605f, 1e-5f);  // sRGB 128/255 decoded
+}
+
+TEST(Hdr, ReadIsLinear) {
+    TempDir dir;
+    const float data[6] = {0.5f, 4.0f, 100.0f, 0.0f, 1.0f, 0.25f};
+    ASSERT_TRUE(stbi_write_hdr(dir.file("e.hdr").c_str(), 2, 1, 3, data));
+    const Image back = readImage(dir.file("e.hdr"));
+    ASSERT_EQ(back.width, 2);
+    // Radiance RGBE keeps 8 bits of mantissa per channel relative to the largest: 1% is generous
+    // for the largest channel; the others are checked against its quantum.
+    EXPECT_NEAR(back.at(0, 0).b, 100.0f, 1.0f);
+    EXPECT_NEAR(back.at(0, 0).g, 4.0f, 0.5f);
+    EXPECT_NEAR(back.at(1, 0).g, 1.0f, 0.01f);
+}
+
+TEST(Exr, FloatRoundTripIsExactAndKeepsTheSampleCount) {
+    TempDir dir;
+    ExrImage exr;
+    exr.image = gradient(13, 7);
+    exr.image.at(3, 2) = {1e-8f, 12345.678f, 3.14159265f};
+    for (size_t i = 0; i < exr.image.pixels.size(); ++i) exr.sampleCount.push_back(float(16 + 3 * i));
+    writeExr(dir.file("f.exr"), exr, ExrPrecision::Float);
+    EXPECT_TRUE(onlyFileIs(dir, "f.exr"));
+    const ExrImage back = readExr(dir.file("f.exr"));
+    ASSERT_EQ(back.image.width, 13);
+    ASSERT_EQ(back.image.height, 7);
+    EXPECT_EQ(back.image.pixels, exr.image.pixels);
+    EXPECT_EQ(back.sampleCount, exr.sampleCount);
+}
+
+TEST(Exr, HalfRoundTripIsWithinHalfPrecision) {
+    TempDir dir;
+    ExrImage exr;
+    exr.image = gradient(9, 5);
+    writeExr(dir.file("h.exr"), exr, ExrPrecision::Half);
+    const ExrImage back = readExr(dir.file("h.exr"));
+    EXPECT_TRUE(back.sampleCount.empty());
+    // Half has an 11-bit significand: relative error at most 2^-11 after rounding.
+    for (size_t i = 0; i < exr.image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(back.image.pixels[i][c], exr.image.pixels[i][c], exr.image.pixels[i][c] * 0.00049f + 1e-7f);
+    // readImage dispatches on the content, not the extension.
+    fs::rename(dir.file("h.exr"), dir.file("h.png"));
+    EXPECT_EQ(readImage(dir.file("h.png")).pixels, back.image.pixels);
+}
+
+TEST(ImageErrors, MissingAndCorruptFilesNameTheFile) {
+    TempDir dir;
+    const std::string missing = dir.file("nothere.png");
+    try {
+        readImage(missing);
+        FAIL() << "no error for a missing file";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
+    }
+    const std::string corrupt = dir.file("corrupt.png");
+    std::ofstream(corrupt) << "\x89PNG\r\n\x1a\n this is not really a png";
+    try {
+        readImage(corrupt);
+        FAIL() << "no error for a corrupt file";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find(corrupt), std::string::npos) << e.what();
+    }
+    std::ofstream(dir.file("corrupt.exr")) << "v/1\x01 and then garbage";
+    EXPECT_THROW(readExr(dir.file("corrupt.exr")), ImageError);
+}
+
+TEST(AtomicWrite, FailureLeavesNoFileAndKeepsTheOldOne) {
+    TempDir dir;
+    const std::string path = dir.file("out.png");
+    Image good = gradient(4, 4);
+    writePng(path, good);
+    const auto sizeBefore = fs::file_size(path);
+    // A writer that fails after writing part of its output.
+    try {
+        writeFileAtomically(path, [](const std::string& tmp) {
+            std::ofstream(tmp) << "half";
+            throw std::runtime_error("disk full");
+        });
+        FAIL() << "no error";
+    } catch (const FileWriteError& e) {
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("disk full"), std::string::npos);
+    }
+    EXPECT_TRUE(onlyFileIs(dir, "out.png"));
+    EXPECT_EQ(fs::file_size(path), sizeBefore);
+}
+
+TEST(AtomicWrite, UnwritableDirectoryLeavesNothing) {
+    TempDir dir;
+    const std::string path = dir.file("no/such/dir/out.exr");
+    ExrImage exr;
+    exr.image = gradient(4, 4);
+    EXPECT_THROW(writeExr(path, exr), FileWriteError);
+    EXPECT_THROW(writePng(dir.file("no/such/dir/out.png"), exr.image), FileWriteError);
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+TEST(AtomicWrite, InconsistentImageIsRefusedBeforeWriting) {
+    TempDir dir;
+    Image bad;
+    bad.width = 4;
+    bad.height = 4;
+    bad.pixels.resize(3);
+    EXPECT_THROW(writePng(dir.file("bad.png"), bad), ImageError);
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+}  // namespace
+}  // namespace woven
