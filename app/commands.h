@@ -6,5 +6,6 @@ namespace woven {
 
 void addPatternCommand(CLI::App& app);
 void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
+void addPreviewCommand(CLI::App& app);
 
 }  // namespace woven

@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     woven::addPatternCommand(app);
     woven::addBsdfCommands(app);
+    woven::addPreviewCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

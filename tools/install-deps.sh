@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libtinyexr-dev
-  libglfw3-dev libimgui-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
+  libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   libgtest-dev libbenchmark-dev xvfb xauth
 )
 missing=()

@@ -1,0 +1,53 @@
+#include "gpu_mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace woven {
+
+namespace {
+struct Vertex {
+    glm::vec3 position, normal;
+    glm::vec2 uv;
+};
+}  // namespace
+
+GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
+    std::vector<Vertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        vertices[i].position = mesh.positions[i];
+        vertices[i].normal = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[i];
+        vertices[i].uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i];
+    }
+    indexCount_ = GLsizei(mesh.triangles.size() * 3);
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(1, &vertexBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &indexBuffer_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)),
+                 mesh.triangles.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+    glDeleteBuffers(1, &indexBuffer_);
+    glDeleteBuffers(1, &vertexBuffer_);
+    glDeleteVertexArrays(1, &vao_);
+}
+
+void GpuMesh::draw() const {
+    glBindVertexArray(vao_);
+    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+}  // namespace woven

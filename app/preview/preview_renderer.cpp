@@ -1,0 +1,192 @@
+#include "preview_renderer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "gl_error.h"
+#include "orbit_camera.h"
+
+namespace woven {
+
+namespace {
+
+// The standard fallback material as an isotropic A-S lobe: Blinn-Phong's exponent for the
+// GGX-like alpha = roughness^2, metals tinting the specular reflectance.
+struct StandardLobe {
+    glm::vec3 diffuse;
+    float exponent, rs;
+};
+StandardLobe standardLobe(const Material& m) {
+    const float alpha = std::max(m.roughness * m.roughness, 1e-3f);
+    const float luminance = glm::dot(m.baseColor, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+    return {m.baseColor * (1.0f - m.metallic), std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e4f),
+            0.04f + (luminance - 0.04f) * m.metallic};
+}
+
+void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
+    const int n = std::min<int>(int(lights.lights.size()), PreviewLights::kMaxLights);
+    std::vector<glm::vec4> position(n), axis(n), intensity(n);
+    for (int i = 0; i < n; ++i) {
+        const PreviewLight& l = lights.lights[i];
+        position[i] = glm::vec4(l.position, float(l.type));
+        axis[i] = glm::vec4(l.axis, l.cosOuter);
+        intensity[i] = glm::vec4(l.intensity, l.cosInner);
+    }
+    glUniform1i(program.uniform("lightCount"), n);
+    if (n > 0) {
+        glUniform4fv(program.uniform("lightPosition"), n, glm::value_ptr(position[0]));
+        glUniform4fv(program.uniform("lightAxis"), n, glm::value_ptr(axis[0]));
+        glUniform4fv(program.uniform("lightIntensity"), n, glm::value_ptr(intensity[0]));
+    }
+    glUniform3fv(program.uniform("ambientRadiance"), 1, glm::value_ptr(lights.ambient));
+}
+
+}  // namespace
+
+PreviewRenderer::PreviewRenderer() {
+    displayProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
+                                                      std::vector<std::string>{"display.frag"});
+    glGenVertexArrays(1, &emptyVao_);
+}
+
+PreviewRenderer::~PreviewRenderer() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteTextures(1, &colour_);
+    glDeleteRenderbuffers(1, &depth_);
+    glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void PreviewRenderer::setMeshes(const SceneDescription& scene) {
+    meshes_.clear();
+    tiles_.clear();
+    for (const Mesh& m : scene.meshes)
+        if (!m.triangles.empty()) meshes_.push_back(std::make_unique<GpuMesh>(m));
+}
+
+const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave) {
+    const std::string preamble = surfaceProgramPreamble(material, filterWeave);
+    auto it = programs_.find(preamble);
+    if (it == programs_.end()) it = programs_.emplace(preamble, buildSurfaceProgram(preamble)).first;
+    return *it->second;
+}
+
+void PreviewRenderer::ensureTarget(glm::ivec2 size) {
+    if (size == size_) return;
+    if (size.x < 1 || size.y < 1) throw GlError("preview size must be positive");
+    size_ = size;
+    if (!framebuffer_) {
+        glGenFramebuffers(1, &framebuffer_);
+        glGenTextures(1, &colour_);
+        glGenRenderbuffers(1, &depth_);
+    }
+    glBindTexture(GL_TEXTURE_2D, colour_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw GlError("the preview's float framebuffer is incomplete on this OpenGL implementation");
+}
+
+void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
+                             glm::ivec2 size, const PreviewOptions& options) {
+    ensureTarget(size);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, size.x, size.y);
+    // Rays that miss everything see the environment; its mean stands in for it here.
+    const glm::vec3 background = meanEnvironmentRadiance(scene.environment);
+    glClearColor(background.r, background.g, background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+
+    const SceneBox box = sceneBounds(scene);
+    const glm::vec3 eye(camera.cameraToWorld[3]);
+    const float distance = glm::length(box.centre() - eye);
+    const float radius = std::max(box.radius(), 1e-4f);
+    const float zFar = distance + radius * 1.01f;
+    const float zNear = std::max(distance - radius * 1.01f, zFar * 1e-4f);
+    const float aspect = camera.aspect > 0.0f ? camera.aspect : float(size.x) / float(size.y);
+    const glm::mat4 viewProjection =
+        glm::perspective(camera.yfov, aspect, zNear, zFar) * glm::inverse(camera.cameraToWorld);
+
+    const Material fallback;
+    for (const auto& mesh : meshes_) {
+        const int index = mesh->material();
+        const bool valid = index >= 0 && index < int(scene.materials.size());
+        drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, camera, viewProjection,
+                 options);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,
+                               const PreviewLights& lights, const Camera& camera, const glm::mat4& viewProjection,
+                               const PreviewOptions& options) {
+    const ShaderProgram& program = surfaceProgram(material, options.filterWeave);
+    glUseProgram(program.id());
+    glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniform3fv(program.uniform("cameraPosition"), 1, glm::value_ptr(glm::vec3(camera.cameraToWorld[3])));
+    glUniform3fv(program.uniform("emission"), 1, glm::value_ptr(material.emission));
+    uploadLights(program, lights);
+    if (material.woven) {
+        auto& tile = tiles_[materialIndex];
+        if (!tile) tile = std::make_unique<WeaveTileTexture>();
+        tile->update(*material.woven);
+        uploadWovenParams(program, *material.woven);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, tile->texture());
+        glUniform1i(program.uniform("weaveTile"), 0);
+        glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(tile->yarnCoverage()));
+    } else {
+        const StandardLobe lobe = standardLobe(material);
+        glUniform3fv(program.uniform("baseColor"), 1, glm::value_ptr(lobe.diffuse));
+        glUniform1f(program.uniform("standardExponent"), lobe.exponent);
+        glUniform1f(program.uniform("standardRs"), lobe.rs);
+    }
+    mesh.draw();
+}
+
+void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, float exposure) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(origin.x, origin.y, size_.x, size_.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(displayProgram_->id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, colour_);
+    glUniform1i(displayProgram_->uniform("radianceImage"), 0);
+    glUniform1f(displayProgram_->uniform("exposureScale"), std::exp2(exposure));
+    glUniform2i(displayProgram_->uniform("origin"), origin.x, origin.y);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+Image PreviewRenderer::radiance() const {
+    Image image;
+    image.width = size_.x;
+    image.height = size_.y;
+    std::vector<glm::vec4> rgba(size_t(size_.x) * size_.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    image.pixels.resize(rgba.size());
+    for (int y = 0; y < size_.y; ++y)  // GL's row 0 is the bottom one
+        for (int x = 0; x < size_.x; ++x) image.at(x, y) = glm::vec3(rgba[size_t(size_.y - 1 - y) * size_.x + x]);
+    return image;
+}
+
+}  // namespace woven

@@ -1,0 +1,56 @@
+#pragma once
+// Draws the preview frame: every mesh with the GLSL twin of its material (woven or standard),
+// lit by PreviewLights, into a linear-radiance target; then shows it through the same display
+// transform as core's PNG output. The window and the headless path both draw through this.
+// Needs a current OpenGL 4.1 core context.
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "gpu_mesh.h"
+#include "preview_lights.h"
+#include "shader_program.h"
+#include "woven_gl_material.h"
+
+namespace woven {
+
+struct PreviewOptions {
+    float exposure = 0.0f;     // stops
+    bool filterWeave = true;   // fade to the element-averaged reflectance where the weave is finer than a pixel
+};
+
+class PreviewRenderer {
+public:
+    PreviewRenderer();
+    ~PreviewRenderer();
+    PreviewRenderer(const PreviewRenderer&) = delete;
+    PreviewRenderer& operator=(const PreviewRenderer&) = delete;
+
+    // Uploads the scene's meshes (materials and lights are read at every render()).
+    void setMeshes(const SceneDescription& scene);
+
+    // Renders the radiance image of `camera` at `size` into the internal target.
+    void render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera, glm::ivec2 size,
+                const PreviewOptions& options);
+    // Draws the last radiance image into `framebuffer` at `origin`, display-transformed.
+    void display(GLuint framebuffer, glm::ivec2 origin, float exposure);
+    // The last radiance image, row 0 at the top.
+    Image radiance() const;
+
+    // The program a material is drawn with (compiled on first use, then cached).
+    const ShaderProgram& surfaceProgram(const Material& material, bool filterWeave);
+
+private:
+    void ensureTarget(glm::ivec2 size);
+    void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
+                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options);
+
+    std::vector<std::unique_ptr<GpuMesh>> meshes_;
+    std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
+    std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
+    std::unique_ptr<ShaderProgram> displayProgram_;
+    GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0, emptyVao_ = 0;
+    glm::ivec2 size_{0, 0};
+};
+
+}  // namespace woven

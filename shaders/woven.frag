@@ -1,0 +1,148 @@
+// The surface shader: core's WovenMaterial::shade (or the standard fallback material) lit by
+// lighting.glsl. Features a material does not use are compiled out by #defines that the C++
+// side picks from its parameters (woven_gl_material.cpp): WOVEN_MATERIAL (else standard),
+// WOVEN_NOISE, WOVEN_CRIMP, WOVEN_GAPS (both yarns narrower than their element) and
+// WOVEN_FILTER (the far-field weave filter).
+in vec3 vPosition;
+in vec3 vNormal;
+in vec2 vUv;
+
+layout(location = 0) out vec4 outRadiance;
+
+uniform vec3 cameraPosition;
+uniform vec3 emission;  // radiance of the front face
+#ifndef WOVEN_MATERIAL
+uniform vec3 baseColor;
+uniform float standardExponent;
+uniform float standardRs;
+#endif
+
+// As core's tangentFrame(): x along +u, y along +v, both projected into the plane of n.
+Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
+    vec3 t = dpdu - dot(dpdu, n) * n;
+    vec3 b = dpdv - dot(dpdv, n) * n;
+    if (dot(t, t) > 1e-24) {
+        vec3 x = normalize(t);
+        b -= dot(b, x) * x;
+        return Frame(x, dot(b, b) > 1e-24 ? normalize(b) : cross(n, x), n);
+    }
+    if (dot(b, b) > 1e-24) {
+        vec3 y = normalize(b);
+        return Frame(cross(y, n), y, n);
+    }
+    return frameFromNormal(n);
+}
+
+#ifdef WOVEN_MATERIAL
+vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
+    if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
+    bool weft = y.type == WEFT;
+    vec3 color = weft ? material.weft_color : material.warp_color;
+#ifdef WOVEN_NOISE
+    uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
+    color = clamp(color * (1.0 + material.noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
+#endif
+    Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
+    Lobe lobe = weft ? Lobe(material.ex, material.ey, material.rs, color)
+                     : Lobe(material.warp_ex, material.warp_ey, material.rs, color);
+    return reflectedLight(f, lobe, p, ng, wo);
+}
+
+#ifdef WOVEN_FILTER
+// Across positions per yarn type for the element-averaged reflectance.
+const int FILTER_SAMPLES = 8;
+
+// The reflectance averaged over the weave, for pixels that cover several elements: each yarn
+// type weighted by the area it covers, its cross-section sampled uniformly across (crimp and
+// noise average out and are left out). Returns radiance x coverage; `coverage` = the opaque
+// fraction (1 unless gaps are see-through).
+vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out float coverage) {
+    vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < FILTER_SAMPLES; ++k) {
+        float x = (float(k) + 0.5) * (2.0 / float(FILTER_SAMPLES)) - 1.0;
+        if (yarnArea.x > 0.0) {
+            Frame f = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(0, material.cy, x, 0.0)), tangent.x);
+            sum += yarnArea.x * reflectedLight(f, Lobe(material.ex, material.ey, material.rs, material.weft_color), p, ng, wo);
+        }
+        if (yarnArea.y > 0.0) {
+            Frame f = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(1, material.cy, x, 0.0)), tangent.y);
+            sum += yarnArea.y * reflectedLight(f, Lobe(material.warp_ex, material.warp_ey, material.rs, material.warp_color), p, ng, wo);
+        }
+    }
+    sum /= float(FILTER_SAMPLES);
+    coverage = 1.0;
+#ifdef WOVEN_GAPS
+    float gapArea = max(0.0, 1.0 - yarnArea.x - yarnArea.y);
+    if (material.backing != 0) sum += gapArea * reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
+    else coverage = 1.0 - gapArea;
+#endif
+    return sum;
+}
+#endif
+
+// Threshold in (0, 1) from a 4x4 ordered-dither matrix: partial coverage of see-through gaps
+// becomes a screen-door pattern, which needs no sorting.
+float ditherThreshold() {
+    ivec2 q = ivec2(gl_FragCoord.xy) & 3;
+    const int bayer[16] = int[](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+    return (float(bayer[q.y * 4 + q.x]) + 0.5) / 16.0;
+}
+#endif
+
+void main() {
+    vec3 p = vPosition;
+    vec3 wo = normalize(cameraPosition - p);
+    // Derivatives first, while control flow is uniform.
+    vec3 dpx = dFdx(p), dpy = dFdy(p);
+    vec2 dux = dFdx(vUv), duy = dFdy(vUv);
+    vec3 ng = normalize(cross(dpx, dpy));
+    if (dot(ng, wo) < 0.0) ng = -ng;
+    vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
+    bool backSide = dot(wo, ns) < 0.0;
+    vec3 n = backSide ? -ns : ns;
+    vec3 radiance = backSide ? vec3(0.0) : emission;
+
+#ifdef WOVEN_MATERIAL
+    // dp/du and dp/dv of the triangle: p is an affine function of uv across a triangle, so
+    // screen-space differences give them exactly, like core's per-triangle derivatives.
+    float det = dux.x * duy.y - duy.x * dux.y;
+    vec3 dpdu = vec3(0.0), dpdv = vec3(0.0);
+    if (abs(det) > 1e-30) {
+        dpdu = (dpx * duy.y - dpy * dux.y) / det;
+        dpdv = (dpy * dux.x - dpx * duy.x) / det;
+    }
+    Frame tangent = tangentFrame(n, dpdu, dpdv);
+    int face = backSide ? 1 : 0;
+
+#ifdef WOVEN_FILTER
+    // Elements per pixel: from a quarter element on, fade to the averaged reflectance, so no
+    // moire appears where the weave is finer than the pixels.
+    vec2 e = vUv * material.repeat;
+    float farWeight = smoothstep(0.25, 1.0, max(fwidth(e.x), fwidth(e.y)));
+#else
+    const float farWeight = 0.0;
+#endif
+    vec3 near = vec3(0.0);
+    float nearOpacity = 1.0;
+    if (farWeight < 1.0) {
+        YarnPoint y = yarnAt(vUv, face);
+#ifdef WOVEN_GAPS
+        if (y.type == GAP && material.backing == 0) nearOpacity = 0.0;
+        else
+#endif
+        near = yarnRadiance(y, tangent, p, ng, wo);
+    }
+    vec3 far = vec3(0.0);
+    float farOpacity = 1.0;
+#ifdef WOVEN_FILTER
+    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, farOpacity);
+#endif
+    float opacity = mix(nearOpacity, farOpacity, farWeight);
+    if (opacity < ditherThreshold()) discard;
+    radiance += ((1.0 - farWeight) * nearOpacity * near + farWeight * far) / opacity;
+#else
+    radiance += reflectedLight(frameFromNormal(n), Lobe(standardExponent, standardExponent, standardRs, baseColor), p, ng, wo);
+#endif
+    outRadiance = vec4(radiance, 1.0);
+}
