@@ -28,49 +28,24 @@ namespace {
     throw ImageError(path + ": " + problem);
 }
 
+std::vector<unsigned char> readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot open the file (missing or unreadable)");
+    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 void requireReadable(const std::string& path) {
     if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot open the file (missing or unreadable)");
+}
+
+bool hasExrMagic(const std::vector<unsigned char>& bytes) {
+    return bytes.size() >= 4 && bytes[0] == 0x76 && bytes[1] == 0x2f && bytes[2] == 0x31 && bytes[3] == 0x01;
 }
 
 std::string takeExrError(const char* err, int code) {
     std::string message = err ? err : "tinyexr error " + std::to_string(code);
     if (err) FreeEXRErrorMessage(err);
     return message;
-}
-
-Image readWithStb(const std::string& path, ChannelEncoding encoding) {
-    Image image;
-    int channels = 0;
-    if (stbi_is_hdr(path.c_str())) {
-        float* data = stbi_loadf(path.c_str(), &image.width, &image.height, &channels, 3);
-        if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
-        image.pixels.resize(size_t(image.width) * image.height);
-        std::memcpy(image.pixels.data(), data, image.pixels.size() * sizeof(glm::vec3));
-        stbi_image_free(data);
-        return image;
-    }
-    const auto decode = [encoding](float c) {
-        return encoding == ChannelEncoding::Srgb ? srgbToLinear(c) : c;
-    };
-    if (stbi_is_16_bit(path.c_str())) {
-        stbi_us* data = stbi_load_16(path.c_str(), &image.width, &image.height, &channels, 3);
-        if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
-        image.pixels.resize(size_t(image.width) * image.height);
-        for (size_t i = 0; i < image.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c) image.pixels[i][c] = decode(data[3 * i + c] / 65535.0f);
-        stbi_image_free(data);
-        return image;
-    }
-    stbi_uc* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
-    if (!data) fail(path, std::string("cannot decode the image: ") + stbi_failure_reason());
-    // 256-entry table: the pow() per channel would dominate loading large textures.
-    std::array<float, 256> table;
-    for (int v = 0; v < 256; ++v) table[v] = decode(v / 255.0f);
-    image.pixels.resize(size_t(image.width) * image.height);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) image.pixels[i][c] = table[data[3 * i + c]];
-    stbi_image_free(data);
-    return image;
 }
 
 float toneMap(float c, ToneMap curve) {
@@ -84,6 +59,44 @@ float toneMap(float c, ToneMap curve) {
 }
 
 }  // namespace
+
+Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
+                  const std::string& name) {
+    const int length = static_cast<int>(size);
+    Image image;
+    int channels = 0;
+    const auto failDecode = [&]() { fail(name, std::string("cannot decode the image: ") + stbi_failure_reason()); };
+    if (stbi_is_hdr_from_memory(data, length)) {
+        float* pixels = stbi_loadf_from_memory(data, length, &image.width, &image.height, &channels, 3);
+        if (!pixels) failDecode();
+        image.pixels.resize(size_t(image.width) * image.height);
+        std::memcpy(image.pixels.data(), pixels, image.pixels.size() * sizeof(glm::vec3));
+        stbi_image_free(pixels);
+        return image;
+    }
+    const auto decode = [encoding](float c) {
+        return encoding == ChannelEncoding::Srgb ? srgbToLinear(c) : c;
+    };
+    if (stbi_is_16_bit_from_memory(data, length)) {
+        stbi_us* pixels = stbi_load_16_from_memory(data, length, &image.width, &image.height, &channels, 3);
+        if (!pixels) failDecode();
+        image.pixels.resize(size_t(image.width) * image.height);
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) image.pixels[i][c] = decode(pixels[3 * i + c] / 65535.0f);
+        stbi_image_free(pixels);
+        return image;
+    }
+    stbi_uc* pixels = stbi_load_from_memory(data, length, &image.width, &image.height, &channels, 3);
+    if (!pixels) failDecode();
+    // 256-entry table: the pow() per channel would dominate loading large textures.
+    std::array<float, 256> table;
+    for (int v = 0; v < 256; ++v) table[v] = decode(v / 255.0f);
+    image.pixels.resize(size_t(image.width) * image.height);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i][c] = table[pixels[3 * i + c]];
+    stbi_image_free(pixels);
+    return image;
+}
 
 ExrImage readExr(const std::string& path) {
     requireReadable(path);
@@ -142,9 +155,9 @@ ExrImage readExr(const std::string& path) {
 }
 
 Image readImage(const std::string& path, ChannelEncoding encoding) {
-    requireReadable(path);
-    if (IsEXR(path.c_str()) == TINYEXR_SUCCESS) return readExr(path).image;
-    return readWithStb(path, encoding);
+    const std::vector<unsigned char> bytes = readBytes(path);
+    if (hasExrMagic(bytes)) return readExr(path).image;
+    return decodeImage(bytes.data(), bytes.size(), encoding, path);
 }
 
 void writePng(const std::string& path, const Image& image, const PngOptions& options) {

@@ -23,6 +23,11 @@ enum class ChannelEncoding { Srgb, Linear };
 // only Y is read as grey). Grey images are expanded to RGB; alpha is dropped.
 Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncoding::Srgb);
 
+// The same for an encoded PNG/JPEG/HDR image held in memory (a texture embedded in a .glb);
+// `name` identifies it in error messages.
+Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
+                  const std::string& name);
+
 // Display transform of writePng: scale by 2^exposure, tone-map, then sRGB-encode to 8 bits.
 enum class ToneMap {
     Clamp,     // values above 1 clip to white

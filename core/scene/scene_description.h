@@ -65,6 +65,13 @@ struct Camera {
     float aspect = 0.0f;            // 0: take it from the image size
 };
 
+// Render settings a scene file asks for; 0 or empty = not given (the command line decides).
+struct RenderHints {
+    int width = 0, height = 0;
+    int spp = 0;
+    std::string integrator;  // "bdpt", "path", "auto", ...
+};
+
 struct SceneDescription {
     std::string source;  // the file it came from, for messages
     std::vector<Mesh> meshes;
@@ -74,6 +81,10 @@ struct SceneDescription {
     Environment environment;
     Camera camera;
     bool hasCamera = false;
+    RenderHints render;
+    // What the loader skipped or approximated (also printed on stderr), e.g. line primitives,
+    // dropped degenerate triangles.
+    std::vector<std::string> warnings;
 };
 
 }  // namespace woven

@@ -1,0 +1,23 @@
+#pragma once
+// Per-vertex attributes derived from the triangles when a file lacks them, and the clean-up
+// every loaded mesh gets. All work on a world-space woven::Mesh.
+#include <cstddef>
+
+#include "scene_description.h"
+
+namespace woven {
+
+// Drops triangles with a repeated index or zero (or non-finite) area; returns how many.
+size_t removeDegenerateTriangles(Mesh& mesh);
+
+// Fills mesh.normals with area-weighted averages of the face normals (counter-clockwise front).
+// A vertex no triangle uses gets +z.
+void computeVertexNormals(Mesh& mesh);
+
+// Fills mesh.tangents from the UV parameterisation (dp/du per triangle, accumulated per vertex,
+// made orthogonal to the normal; w = +1 when (n x t) points along dp/dv, -1 when it points
+// against it). Where the UV mapping is degenerate (dp/du = 0) any unit vector orthogonal to the
+// normal is used. Requires normals and uvs.
+void computeTangents(Mesh& mesh);
+
+}  // namespace woven

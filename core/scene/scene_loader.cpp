@@ -1,0 +1,17 @@
+#include "scene_loader.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "gltf_loader.h"
+
+namespace woven {
+
+SceneDescription loadScene(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension == ".gltf" || extension == ".glb") return loadGltf(path);
+    throw SceneError(path + ": unknown scene file type '" + extension + "' (expected .gltf, .glb or .json)");
+}
+
+}  // namespace woven

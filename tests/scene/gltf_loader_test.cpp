@@ -1,0 +1,597 @@
+// glTF loading: each supported feature in a small file written by GltfBuilder, with the expected
+// numbers worked out by hand in the comments; each broken file gives its own error, naming the file.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <stb_image_write.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "gltf_builder.h"
+#include "scene_loader.h"
+#include "temp_dir.h"
+
+namespace woven {
+namespace {
+
+using test::GltfBuilder;
+using test::TempDir;
+using ::testing::HasSubstr;
+using json = nlohmann::json;
+
+constexpr float kEps = 1e-5f;
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected, float eps = kEps) {
+    EXPECT_NEAR(actual.x, expected.x, eps);
+    EXPECT_NEAR(actual.y, expected.y, eps);
+    EXPECT_NEAR(actual.z, expected.z, eps);
+}
+
+// A unit right triangle in the z = 0 plane, counter-clockwise seen from +z.
+const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+
+int triangleMesh(GltfBuilder& b, json extraAttributes = json::object(), int material = -1) {
+    json primitive = {{"attributes", {{"POSITION", b.addPositions(kTriangle)}}}};
+    primitive["attributes"].update(extraAttributes);
+    if (material >= 0) primitive["material"] = material;
+    return b.addMesh(primitive, "Tri");
+}
+
+std::string loadError(const std::string& path) {
+    try {
+        loadScene(path);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+json quaternion(const glm::vec3& axis, float degrees) {
+    const float half = glm::radians(degrees) / 2;
+    return {axis.x * std::sin(half), axis.y * std::sin(half), axis.z * std::sin(half), std::cos(half)};
+}
+
+TEST(GltfNodes, TranslationRotationScaleAndParent) {
+    TempDir dir;
+    GltfBuilder b;
+    const int mesh = triangleMesh(b);
+    const int child = b.addNode({{"mesh", mesh}, {"translation", {1, 2, 3}}, {"rotation", quaternion({0, 0, 1}, 90)},
+                                 {"scale", {2, 2, 2}}});
+    const int parent = b.addNode({{"translation", {10, 0, 0}}, {"children", {child}}});
+    b.setScene({parent});
+    b.writeGltf(dir.file("trs.gltf"));
+    const SceneDescription scene = loadScene(dir.file("trs.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const Mesh& m = scene.meshes[0];
+    // (1,0,0): scale -> (2,0,0), 90 deg about z -> (0,2,0), + (1,2,3) -> (1,4,3), + parent -> (11,4,3).
+    expectNear(m.positions[0], {11, 2, 3});
+    expectNear(m.positions[1], {11, 4, 3});
+    expectNear(m.positions[2], {9, 2, 3});  // (0,1,0) -> (0,2,0) -> (-2,0,0) -> (-1,2,3) -> (9,2,3)
+    ASSERT_EQ(m.normals.size(), 3u);        // none in the file: computed, +z survives a z rotation
+    for (const auto& n : m.normals) expectNear(n, {0, 0, 1});
+    EXPECT_EQ(m.name, "node0/Tri/0");
+    EXPECT_TRUE(m.uvs.empty());
+    EXPECT_TRUE(m.tangents.empty());  // no UVs, nothing to derive them from
+}
+
+TEST(GltfNodes, MatrixIsColumnMajor) {
+    TempDir dir;
+    GltfBuilder b;
+    b.setScene({b.addNode({{"mesh", triangleMesh(b)}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 6, 7, 1}}})});
+    b.writeGltf(dir.file("m.gltf"));
+    const Mesh m = loadScene(dir.file("m.gltf")).meshes.at(0);
+    expectNear(m.positions[1], {6, 6, 7});
+}
+
+TEST(GltfNodes, AllRootNodesWithoutAScene) {
+    TempDir dir;
+    GltfBuilder b;
+    const int mesh = triangleMesh(b);
+    const int leaf = b.addNode({{"mesh", mesh}, {"translation", {0, 0, 1}}});
+    b.addNode({{"mesh", mesh}, {"children", {leaf}}});
+    b.addNode({{"mesh", mesh}, {"translation", {0, 0, 2}}});
+    b.writeGltf(dir.file("roots.gltf"));
+    const SceneDescription all = loadScene(dir.file("roots.gltf"));
+    ASSERT_EQ(all.meshes.size(), 3u);  // nodes 1 and 2 are roots; 0 is reached through 1
+    b.setScene({2});
+    b.writeGltf(dir.file("one.gltf"));
+    const SceneDescription one = loadScene(dir.file("one.gltf"));
+    ASSERT_EQ(one.meshes.size(), 1u);
+    EXPECT_FLOAT_EQ(one.meshes[0].positions[0].z, 2.0f);
+}
+
+TEST(GltfNodes, MirroredTransformKeepsTheFrontAndTheTangentFrame) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec2> uvs = {{0, 0}, {1, 0}, {0, 1}};
+    const int withFrame = triangleMesh(b, {{"NORMAL", b.addVec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}})},
+                                           {"TEXCOORD_0", b.addVec2(uvs)},
+                                           {"TANGENT", b.addVec4({{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, 1}})}});
+    const int bare = triangleMesh(b, {{"TEXCOORD_0", b.addVec2(uvs)}});
+    b.setScene({b.addNode({{"mesh", withFrame}, {"scale", {-1, 1, 1}}}),
+                b.addNode({{"mesh", bare}, {"scale", {-1, 1, 1}}})});
+    b.writeGltf(dir.file("mirror.gltf"));
+    const SceneDescription scene = loadScene(dir.file("mirror.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    for (const Mesh& m : scene.meshes) {
+        SCOPED_TRACE(m.name);
+        // World positions (0,0,0), (-1,0,0), (0,1,0) are clockwise from +z; the swap makes the
+        // geometric normal of the stored winding +z again, agreeing with the file's normal.
+        const glm::uvec3 t = m.triangles.at(0);
+        const glm::vec3 geometric = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+        expectNear(glm::normalize(geometric), {0, 0, 1});
+        expectNear(m.normals[1], {0, 0, 1});
+        // u runs along world -x, v along +y: tangent (-1,0,0); n x t = (0,-1,0) is against dp/dv -> w = -1.
+        ASSERT_EQ(m.tangents.size(), 3u);
+        expectNear(glm::vec3(m.tangents[1]), {-1, 0, 0});
+        EXPECT_EQ(m.tangents[1].w, -1.0f);
+    }
+}
+
+TEST(GltfMeshes, MissingNormalsAreAreaWeighted) {
+    TempDir dir;
+    GltfBuilder b;
+    // Triangle A (0,1,2): normal +z, |cross| = 1. Triangle B (0,3,4): cross((0,0,2),(2,0,0)) = (0,4,0).
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 0}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}},
+                                               {"indices", b.addIndices({0, 1, 2, 0, 3, 4})}})}})});
+    b.writeGltf(dir.file("n.gltf"));
+    const Mesh m = loadScene(dir.file("n.gltf")).meshes.at(0);
+    expectNear(m.normals[0], glm::vec3(0, 4, 1) / std::sqrt(17.0f));  // (0,0,1) + (0,4,0), normalised
+    expectNear(m.normals[1], {0, 0, 1});
+    expectNear(m.normals[3], {0, 1, 0});
+}
+
+TEST(GltfMeshes, MissingTangentsFollowTheUvs) {
+    TempDir dir;
+    GltfBuilder b;
+    // A 2 x 1 quad in z = 0; three UV layouts.
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+    const auto quad = [&](const std::vector<glm::vec2>& uv) {
+        return b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}, {"TEXCOORD_0", b.addVec2(uv)}}},
+                                              {"indices", b.addIndices({0, 1, 2, 0, 2, 3})}})}});
+    };
+    b.setScene({quad({{0, 0}, {1, 0}, {1, 1}, {0, 1}}),    // u along +x, v along +y
+                quad({{0, 1}, {1, 1}, {1, 0}, {0, 0}}),    // v flipped: along -y
+                quad({{0, 0}, {0, 1}, {1, 1}, {1, 0}})});  // u along +y, v along +x
+    b.writeGltf(dir.file("t.gltf"));
+    const SceneDescription scene = loadScene(dir.file("t.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 3u);
+    for (int v = 0; v < 4; ++v) {
+        expectNear(glm::vec3(scene.meshes[0].tangents[v]), {1, 0, 0});
+        EXPECT_EQ(scene.meshes[0].tangents[v].w, 1.0f);   // n x t = +y = dp/dv
+        expectNear(glm::vec3(scene.meshes[1].tangents[v]), {1, 0, 0});
+        EXPECT_EQ(scene.meshes[1].tangents[v].w, -1.0f);  // dp/dv = -y
+        expectNear(glm::vec3(scene.meshes[2].tangents[v]), {0, 1, 0});
+        EXPECT_EQ(scene.meshes[2].tangents[v].w, -1.0f);  // n x t = -x, dp/dv = +x
+    }
+}
+
+TEST(GltfMeshes, TriangleStripAndFan) {
+    TempDir dir;
+    GltfBuilder b;
+    // Strip over a zigzag p_i = (i / 2, i % 2): triangles (0,1,2), (2,1,3), (2,3,4), all clockwise from +z.
+    const std::vector<glm::vec3> zigzag = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}};
+    const int strip = b.addMesh({{"attributes", {{"POSITION", b.addPositions(zigzag)}}}, {"mode", 5}});
+    // Fan around vertex 0 with 16-bit indices: triangles (1,2,0), (2,3,0), counter-clockwise from +z.
+    const std::vector<glm::vec3> rim = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+    const std::vector<uint16_t> fanIndices = {0, 1, 2, 3};
+    const int fan = b.addMesh({{"attributes", {{"POSITION", b.addPositions(rim)}}},
+                               {"indices", b.addAccessor(fanIndices.data(), 8, test::kUnsignedShort, "SCALAR", 4)},
+                               {"mode", 6}});
+    b.setScene({b.addNode({{"mesh", strip}}), b.addNode({{"mesh", fan}})});
+    b.writeGltf(dir.file("sf.gltf"));
+    const SceneDescription scene = loadScene(dir.file("sf.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.meshes[0].triangles,
+              (std::vector<glm::uvec3>{{0, 1, 2}, {2, 1, 3}, {2, 3, 4}}));
+    for (const auto& n : scene.meshes[0].normals) expectNear(n, {0, 0, -1});  // a wrong swap would cancel
+    EXPECT_EQ(scene.meshes[1].triangles, (std::vector<glm::uvec3>{{1, 2, 0}, {2, 3, 0}}));
+    for (const auto& n : scene.meshes[1].normals) expectNear(n, {0, 0, 1});
+}
+
+TEST(GltfMeshes, QuantizedAttributes) {
+    TempDir dir;
+    GltfBuilder b;
+    b.useExtension("KHR_mesh_quantization", true);
+    // Normalized SHORT positions, padded to an 8-byte stride as glTF requires for vertex data.
+    const int16_t positions[12] = {0, 0, 0, 0, 32767, 0, 0, 0, -32768, 16384, 0, 0};
+    const int posView = b.addView(positions, sizeof(positions));
+    b.json()["bufferViews"][posView]["byteStride"] = 8;
+    b.json()["accessors"].push_back({{"bufferView", posView}, {"componentType", test::kShort}, {"type", "VEC3"},
+                                     {"count", 3}, {"normalized", true}, {"min", {-1, 0, 0}}, {"max", {1, 0.5, 0}}});
+    const int position = int(b.json()["accessors"].size()) - 1;
+    const uint16_t uv16[6] = {0, 65535, 32768, 0, 65535, 65535};
+    const uint8_t uv8[6] = {255, 51, 0, 0, 0, 255};  // 4-byte aligned elements are not needed for 2 bytes
+    const int8_t normals[12] = {0, 0, 127, 0, -128, 0, 0, 0, 0, 127, 0, 0};
+    const int normalView = b.addView(normals, sizeof(normals));
+    b.json()["bufferViews"][normalView]["byteStride"] = 4;
+    b.json()["accessors"].push_back({{"bufferView", normalView}, {"componentType", test::kByte}, {"type", "VEC3"},
+                                     {"count", 3}, {"normalized", true}});
+    const int normal = int(b.json()["accessors"].size()) - 1;
+    const uint16_t rawUv[6] = {3, 0, 0, 7, 1, 1};
+    const auto mesh = [&](int uvAccessor) {
+        return b.addMesh({{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uvAccessor}}}});
+    };
+    const int m16 = mesh(b.addAccessor(uv16, sizeof(uv16), test::kUnsignedShort, "VEC2", 3, true));
+    const int m8 = mesh(b.addAccessor(uv8, sizeof(uv8), test::kUnsignedByte, "VEC2", 3, true));
+    const int mRaw = mesh(b.addAccessor(rawUv, sizeof(rawUv), test::kUnsignedShort, "VEC2", 3, false));
+    const int mNormal = b.addMesh({{"attributes", {{"POSITION", position}, {"NORMAL", normal}}}});
+    b.setScene({b.addNode({{"mesh", m16}, {"scale", {2, 2, 2}}}), b.addNode({{"mesh", m8}}), b.addNode({{"mesh", mRaw}}),
+                b.addNode({{"mesh", mNormal}})});
+    b.writeGltf(dir.file("q.gltf"));
+    const SceneDescription scene = loadScene(dir.file("q.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 4u);
+    const Mesh& q16 = scene.meshes[0];
+    // SHORT normalized: c / 32767, with -32768 clamped to -1; then the node's scale 2.
+    expectNear(q16.positions[1], {2, 0, 0});
+    expectNear(q16.positions[2], {-2, 2 * 16384 / 32767.0f, 0});
+    EXPECT_NEAR(q16.uvs[1].x, 32768 / 65535.0f, 1e-7f);
+    EXPECT_EQ(q16.uvs[0], glm::vec2(0, 1));
+    EXPECT_EQ(q16.uvs[2], glm::vec2(1, 1));
+    EXPECT_NEAR(scene.meshes[1].uvs[0].y, 0.2f, 1e-7f);  // 51 / 255
+    EXPECT_EQ(scene.meshes[1].uvs[0].x, 1.0f);
+    EXPECT_EQ(scene.meshes[2].uvs[0], glm::vec2(3, 0));  // not normalized: the integer itself
+    EXPECT_EQ(scene.meshes[2].uvs[1], glm::vec2(0, 7));
+    const Mesh& n8 = scene.meshes[3];
+    expectNear(n8.normals[0], {0, 0, 1});
+    expectNear(n8.normals[1], {-1, 0, 0});  // BYTE -128 -> -1 (clamped)
+    expectNear(n8.normals[2], {0, 1, 0});
+}
+
+TEST(GltfMeshes, SparseAccessors) {
+    TempDir dir;
+    GltfBuilder b;
+    const int base = b.addPositions(kTriangle);
+    const uint8_t index[1] = {1};
+    const glm::vec3 value(5, 5, 5);
+    b.json()["accessors"][base]["sparse"] = {
+        {"count", 1},
+        {"indices", {{"bufferView", b.addView(index, 1)}, {"componentType", test::kUnsignedByte}}},
+        {"values", {{"bufferView", b.addView(&value, 12)}}}};
+    // No buffer view at all: zeros, then every element replaced.
+    const uint16_t all[3] = {0, 1, 2};
+    const int valuesView = b.addView(kTriangle.data(), 36);
+    b.json()["accessors"].push_back({{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 3},
+                                     {"min", {0, 0, 0}}, {"max", {1, 1, 0}},
+                                     {"sparse", {{"count", 3},
+                                                 {"indices", {{"bufferView", b.addView(all, 6)}, {"componentType", test::kUnsignedShort}}},
+                                                 {"values", {{"bufferView", valuesView}}}}}});
+    const int viewless = int(b.json()["accessors"].size()) - 1;
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", base}}}})}}),
+                b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", viewless}}}})}})});
+    b.writeGltf(dir.file("sparse.gltf"));
+    const SceneDescription scene = loadScene(dir.file("sparse.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.meshes[0].positions, (std::vector<glm::vec3>{{0, 0, 0}, {5, 5, 5}, {0, 1, 0}}));
+    EXPECT_EQ(scene.meshes[1].positions, kTriangle);
+}
+
+TEST(GltfScene, FirstPerspectiveCamera) {
+    TempDir dir;
+    GltfBuilder b;
+    b.json()["cameras"] = {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 1.5}, {"znear", 0.1}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}}};
+    b.setScene({b.addNode({{"camera", 0}}),
+                b.addNode({{"camera", 1}, {"translation", {0, 1, 5}}, {"rotation", quaternion({0, 1, 0}, 90)}, {"scale", {3, 3, 3}}}),
+                b.addNode({{"camera", 2}})});
+    b.writeGltf(dir.file("cam.gltf"));
+    const SceneDescription scene = loadScene(dir.file("cam.gltf"));
+    ASSERT_TRUE(scene.hasCamera);
+    EXPECT_FLOAT_EQ(scene.camera.yfov, 0.5f);  // the orthographic one is skipped, the third one comes later
+    EXPECT_FLOAT_EQ(scene.camera.aspect, 1.5f);
+    // 90 degrees about +y turns the view direction -z into -x; the node's scale is dropped.
+    expectNear(glm::vec3(scene.camera.cameraToWorld * glm::vec4(0, 0, -1, 0)), {-1, 0, 0});
+    expectNear(glm::vec3(scene.camera.cameraToWorld * glm::vec4(0, 1, 0, 0)), {0, 1, 0});
+    expectNear(glm::vec3(scene.camera.cameraToWorld[3]), {0, 1, 5});
+    EXPECT_THAT(scene.warnings.at(0), HasSubstr("orthographic"));
+}
+
+TEST(GltfScene, PunctualLights) {
+    TempDir dir;
+    GltfBuilder b;
+    b.useExtension("KHR_lights_punctual");
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 4}},
+        {{"type", "spot"}, {"intensity", 10}, {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 0.3}}}},
+        {{"type", "directional"}, {"intensity", 2}}};
+    const auto lightNode = [](int light, json extra) {
+        extra["extensions"] = {{"KHR_lights_punctual", {{"light", light}}}};
+        return extra;
+    };
+    const int directional = b.addNode(lightNode(2, json::object()));
+    b.setScene({b.addNode(lightNode(0, {{"translation", {1, 2, 3}}})),
+                b.addNode(lightNode(1, {{"translation", {0, 4, 0}}, {"rotation", quaternion({1, 0, 0}, -90)}})),
+                b.addNode({{"rotation", quaternion({0, 1, 0}, 180)}, {"children", {directional}}})});
+    b.writeGltf(dir.file("lights.gltf"));
+    const SceneDescription scene = loadScene(dir.file("lights.gltf"));
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const PunctualLight& point = scene.lights[0];
+    EXPECT_EQ(point.type, PunctualLight::Type::Point);
+    expectNear(point.position, {1, 2, 3});
+    expectNear(point.intensity, {4, 2, 1});  // colour x intensity
+    const PunctualLight& spot = scene.lights[1];
+    EXPECT_EQ(spot.type, PunctualLight::Type::Spot);
+    expectNear(spot.direction, {0, -1, 0});  // -90 degrees about x turns -z into -y
+    expectNear(spot.intensity, {10, 10, 10});
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.1f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.3f);
+    const PunctualLight& sun = scene.lights[2];
+    EXPECT_EQ(sun.type, PunctualLight::Type::Directional);
+    expectNear(sun.direction, {0, 0, 1});  // the parent's half turn about y
+}
+
+TEST(GltfMaterials, StandardFallbackAndEmissiveStrength) {
+    TempDir dir;
+    GltfBuilder b;
+    b.useExtension("KHR_materials_emissive_strength");
+    const int plain = b.addMaterial({{"name", "Plain"},
+                                     {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.6, 0.7, 1}}, {"roughnessFactor", 0.3}, {"metallicFactor", 0.2}}},
+                                     {"doubleSided", false}});
+    const int lamp = b.addMaterial({{"name", "Lamp"}, {"emissiveFactor", {1, 0.5, 0.25}},
+                                    {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4}}}}}});
+    b.setScene({b.addNode({{"mesh", triangleMesh(b, json::object(), plain)}}), b.addNode({{"mesh", triangleMesh(b, json::object(), lamp)}}),
+                b.addNode({{"mesh", triangleMesh(b)}})});
+    b.writeGltf(dir.file("mat.gltf"));
+    const SceneDescription scene = loadScene(dir.file("mat.gltf"));
+    ASSERT_EQ(scene.materials.size(), 2u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "Plain");
+    expectNear(m.baseColor, {0.5f, 0.6f, 0.7f});
+    EXPECT_FLOAT_EQ(m.roughness, 0.3f);
+    EXPECT_FLOAT_EQ(m.metallic, 0.2f);
+    EXPECT_FALSE(m.doubleSided);
+    EXPECT_FALSE(m.woven.has_value());
+    EXPECT_EQ(m.baseColorTexture, -1);
+    EXPECT_EQ(m.emission, glm::vec3(0.0f));
+    expectNear(scene.materials[1].emission, {4, 2, 1});
+    EXPECT_FLOAT_EQ(scene.materials[1].metallic, 1.0f);  // glTF's default metallicFactor
+    EXPECT_EQ(scene.meshes[0].material, 0);
+    EXPECT_EQ(scene.meshes[1].material, 1);
+    EXPECT_EQ(scene.meshes[2].material, -1);
+}
+
+TEST(GltfMaterials, WovenFromTheExtensionAndFromExtras) {
+    TempDir dir;
+    GltfBuilder b;
+    b.useExtension("WOVEN_fabric");
+    b.addMaterial({{"name", "Cloth"},
+                   {"extensions", {{"WOVEN_fabric", {{"pattern", {1, 2, 1}}, {"ex", 300}, {"cy", 0.75},
+                                                      {"repeat", {40, 30}}, {"weft_color", {0.1, 0.2, 0.3}}}}}},
+                   // The extension wins over extras when both are there.
+                   {"extras", {{"woven", {{"pattern", {9, 1, 3}}}}}}});
+    b.addMaterial({{"name", "Satin"}, {"extras", {{"woven", {{"pattern", {9, 1, 3}}, {"tile", {"-|", "|-"}}}}, {"other", 1}}}});
+    b.setScene({b.addNode({{"mesh", triangleMesh(b, json::object(), 0)}})});
+    b.writeGltf(dir.file("woven.gltf"));
+    const SceneDescription scene = loadScene(dir.file("woven.gltf"));
+    ASSERT_EQ(scene.materials.size(), 2u);
+    ASSERT_TRUE(scene.materials[0].woven.has_value());
+    const WovenParams& w = *scene.materials[0].woven;
+    EXPECT_EQ(w.pattern, glm::ivec3(1, 2, 1));
+    EXPECT_EQ(w.ex, 300.0f);
+    EXPECT_EQ(w.warp_ex, 300.0f);  // follows ex, as in bsdf-eval
+    EXPECT_EQ(w.cy, 0.75f);
+    EXPECT_EQ(w.repeat, glm::vec2(40, 30));
+    expectNear(w.weft_color, {0.1f, 0.2f, 0.3f});
+    EXPECT_EQ(w.ey, WovenParams{}.ey);  // not given: the default
+    ASSERT_TRUE(scene.materials[1].woven.has_value());
+    EXPECT_EQ(scene.materials[1].woven->pattern, glm::ivec3(9, 1, 3));
+    EXPECT_EQ(scene.materials[1].woven->tile, (std::vector<std::string>{"-|", "|-"}));
+}
+
+TEST(GltfMaterials, BaseColorTextureFromAFileAndEmbedded) {
+    TempDir dir;
+    const unsigned char pixels[6] = {255, 0, 0, 0, 128, 255};
+    ASSERT_TRUE(stbi_write_png(dir.file("albedo.png").c_str(), 2, 1, 3, pixels, 6));
+    GltfBuilder b;
+    b.json()["images"] = {{{"uri", "albedo.png"}}};
+    b.json()["textures"] = {{{"source", 0}}};
+    b.addMaterial({{"name", "A"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {0.5, 1, 1, 1}}}}});
+    b.addMaterial({{"name", "B"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    b.setScene({b.addNode({{"mesh", triangleMesh(b, json::object(), 0)}})});
+    b.writeGltf(dir.file("tex.gltf"));
+    const SceneDescription scene = loadScene(dir.file("tex.gltf"));
+    ASSERT_EQ(scene.textures.size(), 1u);  // one image used twice is decoded once
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[1].baseColorTexture, 0);
+    expectNear(scene.materials[0].baseColor, {0.5f, 1, 1});
+    const Image& t = scene.textures[0];
+    ASSERT_EQ(t.width, 2);
+    expectNear(t.at(0, 0), {1, 0, 0});
+    expectNear(t.at(1, 0), {0, 0.2158605f, 1});  // sRGB 128 decoded to linear
+
+    // The same PNG inside a .glb, through a buffer view.
+    std::ifstream in(dir.file("albedo.png"), std::ios::binary);
+    const std::vector<char> png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    b.json()["images"] = {{{"bufferView", b.addView(png.data(), png.size())}, {"mimeType", "image/png"}}};
+    b.writeGlb(dir.file("tex.glb"));
+    std::filesystem::remove(dir.file("albedo.png"));
+    const SceneDescription embedded = loadScene(dir.file("tex.glb"));
+    ASSERT_EQ(embedded.textures.size(), 1u);
+    EXPECT_EQ(embedded.textures[0].pixels, t.pixels);
+}
+
+TEST(GltfMeshes, PointsAndLinesAreSkippedWithAWarning) {
+    TempDir dir;
+    GltfBuilder b;
+    const int mesh = triangleMesh(b);
+    b.json()["meshes"][mesh]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 1}});
+    b.setScene({b.addNode({{"mesh", mesh}})});
+    b.writeGltf(dir.file("lines.gltf"));
+    const SceneDescription scene = loadScene(dir.file("lines.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_THAT(scene.warnings[0], HasSubstr("line primitive skipped"));
+}
+
+TEST(GltfMeshes, DegenerateTrianglesAreDroppedAndCounted) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
+    // (0,0,1) repeats an index; (0,1,3) is collinear (zero area).
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}},
+                                               {"indices", b.addIndices({0, 1, 2, 0, 0, 1, 0, 1, 3})}})}})});
+    b.writeGltf(dir.file("degenerate.gltf"));
+    const SceneDescription scene = loadScene(dir.file("degenerate.gltf"));
+    EXPECT_EQ(scene.meshes.at(0).triangles, (std::vector<glm::uvec3>{{0, 1, 2}}));
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_THAT(scene.warnings[0], HasSubstr("dropped 2 degenerate"));
+}
+
+TEST(GltfFormats, GlbAndDataUriLoadTheSameAsExternalBuffers) {
+    TempDir dir;
+    GltfBuilder b;
+    b.setScene({b.addNode({{"mesh", triangleMesh(b, {{"TEXCOORD_0", b.addVec2({{0, 0}, {1, 0}, {0, 1}})}})}, {"translation", {1, 0, 0}}})});
+    b.writeGltf(dir.file("a.gltf"));
+    b.writeGltf(dir.file("b.gltf"), GltfBuilder::Storage::DataUri);
+    b.writeGlb(dir.file("c.glb"));
+    const SceneDescription a = loadScene(dir.file("a.gltf"));
+    for (const char* other : {"b.gltf", "c.glb"}) {
+        const SceneDescription s = loadScene(dir.file(other));
+        ASSERT_EQ(s.meshes.size(), 1u);
+        EXPECT_EQ(s.meshes[0].positions, a.meshes[0].positions);
+        EXPECT_EQ(s.meshes[0].uvs, a.meshes[0].uvs);
+        EXPECT_EQ(s.source, dir.file(other));
+    }
+    expectNear(a.meshes[0].positions[1], {2, 0, 0});
+}
+
+// ---- broken files ------------------------------------------------------------------------
+
+class BrokenGltf : public ::testing::Test {
+protected:
+    TempDir dir;
+    GltfBuilder b;
+    // A valid one-triangle file named `name`, after `edit` changed the document.
+    std::string write(const std::string& name, const std::function<void(GltfBuilder&)>& edit = nullptr) {
+        if (b.json()["nodes"].empty()) b.setScene({b.addNode({{"mesh", triangleMesh(b)}})});
+        if (edit) edit(b);
+        const std::string path = dir.file(name);
+        if (name.size() > 4 && name.substr(name.size() - 4) == ".glb") b.writeGlb(path);
+        else b.writeGltf(path);
+        return path;
+    }
+};
+
+TEST_F(BrokenGltf, MissingFile) {
+    const std::string path = dir.file("nothere.gltf");
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": no such file"));
+}
+
+TEST_F(BrokenGltf, BadJson) {
+    const std::string path = dir.file("bad.gltf");
+    std::ofstream(path) << "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [ {";
+    const std::string message = loadError(path);
+    EXPECT_THAT(message, HasSubstr(path + ": cannot read glTF: "));
+    EXPECT_THAT(message, HasSubstr("parse error"));
+}
+
+TEST_F(BrokenGltf, TruncatedGlb) {
+    const std::string path = write("t.glb");
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": cannot read glTF binary: "));
+}
+
+TEST_F(BrokenGltf, MissingBuffer) {
+    const std::string path = write("nobin.gltf");
+    std::filesystem::remove(dir.file("nobin.bin"));
+    const std::string message = loadError(path);
+    EXPECT_THAT(message, HasSubstr(path + ": cannot read glTF: "));
+    EXPECT_THAT(message, HasSubstr("not found"));
+    EXPECT_THAT(message, HasSubstr("nobin.bin"));
+}
+
+TEST_F(BrokenGltf, MissingTexture) {
+    const std::string path = write("notex.gltf", [](GltfBuilder& g) {
+        g.json()["images"] = {{{"uri", "gone.png"}}};
+        g.json()["textures"] = {{{"source", 0}}};
+        g.addMaterial({{"name", "M"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    });
+    const std::string message = loadError(path);
+    EXPECT_THAT(message, HasSubstr(path + ": M baseColorTexture: cannot read texture file 'gone.png'"));
+}
+
+TEST_F(BrokenGltf, CorruptTexture) {
+    std::ofstream(dir.file("junk.png")) << "not a png at all";
+    const std::string path = write("junktex.gltf", [](GltfBuilder& g) {
+        g.json()["images"] = {{{"uri", "junk.png"}}};
+        g.json()["textures"] = {{{"source", 0}}};
+        g.addMaterial({{"name", "M"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    });
+    EXPECT_THAT(loadError(path), HasSubstr("junk.png': cannot decode"));
+}
+
+TEST_F(BrokenGltf, NanVertexNamesTheMesh) {
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {std::nanf(""), 0, 0}, {0, 1, 0}};
+    b.setScene({b.addNode({{"name", "Drape"}, {"mesh", b.addMesh({{"attributes", {{"POSITION", b.addVec3(p)}}}}, "Cloth")}})});
+    const std::string path = write("nan.gltf");
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": mesh 'Drape/Cloth/0': POSITION holds a NaN or infinite value"));
+}
+
+TEST_F(BrokenGltf, IndexOutOfRange) {
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(kTriangle)}}},
+                                               {"indices", b.addIndices({0, 1, 7})}})}})});
+    const std::string path = write("index.gltf");
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": mesh 'node0/mesh0/0': index 7 is out of range (3 vertices)"));
+}
+
+TEST_F(BrokenGltf, AccessorOutOfRange) {
+    const std::string path = write("range.gltf", [](GltfBuilder& g) { g.json()["accessors"][0]["count"] = 10; });
+    // 10 VEC3 floats need 120 bytes; the view holds the 36 of three vertices.
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": mesh 'node0/Tri/0': accessor 0: needs 120 bytes of buffer view 0, which has 36"));
+}
+
+TEST_F(BrokenGltf, BufferViewPastTheBuffer) {
+    const std::string path = write("view.gltf", [](GltfBuilder& g) { g.json()["bufferViews"][0]["byteLength"] = 400; });
+    EXPECT_THAT(loadError(path), HasSubstr(path + ":"));
+}
+
+TEST_F(BrokenGltf, CompressionExtensionsAreNamed) {
+    for (const std::string ext : {"KHR_draco_mesh_compression", "EXT_meshopt_compression"}) {
+        GltfBuilder g;
+        g.useExtension(ext, true);
+        g.setScene({g.addNode({{"mesh", triangleMesh(g)}})});
+        const std::string path = dir.file(ext + ".gltf");
+        g.writeGltf(path);
+        EXPECT_THAT(loadError(path), HasSubstr(path + ": uses " + ext + " mesh compression, which woven does not decode"));
+    }
+}
+
+TEST_F(BrokenGltf, UnknownRequiredExtension) {
+    const std::string path = write("ext.gltf", [](GltfBuilder& g) { g.useExtension("EXT_fancy_things", true); });
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": requires the extension EXT_fancy_things"));
+}
+
+TEST_F(BrokenGltf, NodeCycle) {
+    const std::string path = write("cycle.gltf", [](GltfBuilder& g) { g.json()["nodes"][0]["children"] = {0}; });
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": the node hierarchy has a cycle"));
+}
+
+TEST_F(BrokenGltf, BadWovenValueNamesMaterialAndField) {
+    const std::string path = write("badwoven.gltf", [](GltfBuilder& g) {
+        g.addMaterial({{"name", "Cloth"}, {"extensions", {{"WOVEN_fabric", {{"cy", 2.5}}}}}});
+        g.json()["meshes"][0]["primitives"][0]["material"] = 0;
+    });
+    const std::string message = loadError(path);
+    EXPECT_THAT(message, HasSubstr(path + ": material 'Cloth', WOVEN_fabric:"));
+    EXPECT_THAT(message, HasSubstr("cy"));
+    const std::string unknown = write("unknownwoven.gltf", [](GltfBuilder& g) {
+        g.json()["materials"][0] = {{"name", "Cloth"}, {"extras", {{"woven", {{"colour", 1}}}}}};
+    });
+    EXPECT_THAT(loadError(unknown), HasSubstr("material 'Cloth', extras.woven: unknown woven material field 'colour'"));
+}
+
+TEST_F(BrokenGltf, MissingPositions) {
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"NORMAL", b.addVec3({{0, 0, 1}})}}}})}})});
+    const std::string path = write("nopos.gltf");
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": mesh 'node0/mesh0/0' has no POSITION attribute"));
+}
+
+TEST(SceneLoader, UnknownFileType) {
+    EXPECT_THAT(loadError("model.obj"), HasSubstr("model.obj: unknown scene file type '.obj'"));
+}
+
+}  // namespace
+}  // namespace woven
