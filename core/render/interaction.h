@@ -16,9 +16,12 @@ struct SurfaceHit {
     glm::vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal of the front face (winding order)
     glm::vec3 ns{0.0f, 0.0f, 1.0f};  // unit interpolated shading normal, on ng's side
     glm::vec2 uv{0.0f};
-    glm::vec3 dpdu{0.0f}, dpdv{0.0f};  // from the triangle's UVs (zero when degenerate)
+    // Along the mesh's interpolated tangents where it has them, else from the triangle's UVs (zero
+    // when degenerate; an arbitrary tangent frame around ng when the mesh has no UVs).
+    glm::vec3 dpdu{0.0f}, dpdv{0.0f};
     int mesh = -1, triangle = -1;
     int material = -1;
+    float pError = 0.0f;  // bound on p's rounding error along ng: how far spawnRay lifts the origin
 };
 
 // A reflection-only BSDF may only connect directions on the same side of the geometric

@@ -69,6 +69,11 @@ public:
 
 private:
     struct Data;
+    // Environment: a direction towards it with its solid-angle density, and that density.
+    glm::vec3 sampleEnvironment(const glm::vec2& u, float* pdf) const;
+    float environmentPdf(const glm::vec3& dir) const;
+
+
     Type type_ = Type::Point;
     std::shared_ptr<const Data> data_;  // shared: lights are copied freely, never mutated after setup
 };

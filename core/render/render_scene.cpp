@@ -1,0 +1,455 @@
+#include "render_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "piecewise_constant.h"
+#include "scene_loader.h"
+#include "woven_material.h"
+
+namespace woven {
+
+namespace {
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+float maxAbs(const glm::vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// pbrt's gamma(n) = n u / (1 - n u), the relative error bound of n float operations. The
+// barycentric interpolation of p takes 7; the factor 4 covers Embree's own rounding when it
+// intersects from an origin this close to the triangle (the acne test measures the margin).
+constexpr float kUnitRoundoff = 0.5f * 1.1920929e-7f;
+constexpr float kPositionError = 4.0f * (7.0f * kUnitRoundoff) / (1.0f - 7.0f * kUnitRoundoff);
+// A shadow ray stops this fraction short of its target (pbrt-v3's ShadowEpsilon), or more when
+// the target's own rounding error is larger.
+constexpr float kShadowEpsilon = 1e-4f;
+
+// The standard fallback material as an Ashikhmin-Shirley lobe:
+//   alpha = roughness^2 (the glTF/Disney remapping), and the isotropic exponent with the same
+//   highlight width as a Beckmann/Blinn lobe of that alpha: e = 2 / alpha^2 - 2, clamped to
+//   [0, 1e4] (roughness 1 gives e = 0, a broad lobe; roughness 0 the sharpest allowed);
+//   rs = mix(0.04, luminance(base colour), metallic): dielectric F0 of 4 %, metals reflect their
+//   colour's brightness (the lobe's Fresnel term is grey);
+//   rd = base colour x (1 - metallic) x texture (bilinear, repeat wrap, sRGB already linear).
+struct StandardMaterial {
+    float exponent, rs;
+    glm::vec3 diffuse;
+    const Image* texture;
+
+    StandardMaterial(const Material& m, const std::vector<Image>& textures) {
+        const float alpha = std::max(m.roughness * m.roughness, 1e-4f);
+        exponent = std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e4f);
+        rs = 0.04f + (std::clamp(luminance(m.baseColor), 0.0f, 1.0f) - 0.04f) * m.metallic;
+        diffuse = m.baseColor * (1.0f - m.metallic);
+        texture = m.baseColorTexture >= 0 ? &textures[m.baseColorTexture] : nullptr;
+    }
+};
+
+int wrap(int i, int n) {
+    const int r = i % n;
+    return r < 0 ? r + n : r;
+}
+
+glm::vec3 bilinearRepeat(const Image& image, const glm::vec2& uv) {
+    // glTF puts uv (0, 0) at the image's top-left corner, as Image's row 0 is the top.
+    const float x = uv.x * image.width - 0.5f, y = uv.y * image.height - 0.5f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return image.at(0, 0);
+    const float fx = std::floor(x), fy = std::floor(y);
+    const float tx = x - fx, ty = y - fy;
+    // The modulo in double: floor(uv * size) can exceed int's range for huge uv.
+    const int x0 = int(std::fmod(double(fx), double(image.width))), y0 = int(std::fmod(double(fy), double(image.height)));
+    const int xa = wrap(x0, image.width), xb = wrap(x0 + 1, image.width);
+    const int ya = wrap(y0, image.height), yb = wrap(y0 + 1, image.height);
+    return (1.0f - ty) * ((1.0f - tx) * image.at(xa, ya) + tx * image.at(xb, ya)) +
+           ty * ((1.0f - tx) * image.at(xa, yb) + tx * image.at(xb, yb));
+}
+
+// What an Embree filter callback needs to find the uv of a candidate hit.
+struct GapFilter {
+    const Mesh* mesh;
+    const WovenMaterial* material;
+};
+
+glm::vec2 interpolateUv(const Mesh& mesh, unsigned prim, float b1, float b2) {
+    const glm::uvec3 t = mesh.triangles[prim];
+    const glm::vec2 uv = (1.0f - b1 - b2) * mesh.uvs[t.x] + b1 * mesh.uvs[t.y] + b2 * mesh.uvs[t.z];
+    return std::isfinite(uv.x) && std::isfinite(uv.y) ? uv : glm::vec2(0.0f);
+}
+
+// Rejects candidate hits in see-through gaps, for intersection and occlusion rays alike.
+void rejectGaps(const RTCFilterFunctionNArguments* args) {
+    const auto* filter = static_cast<const GapFilter*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const glm::vec2 uv = interpolateUv(*filter->mesh, RTCHitN_primID(args->hit, args->N, i),
+                                           RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        if (filter->material->isSeeThrough(glm::dvec2(uv))) args->valid[i] = 0;
+    }
+}
+
+void embreeError(void* userPtr, RTCError code, const char* message) {
+    auto* out = static_cast<std::string*>(userPtr);
+    if (out->empty()) *out = message ? message : "unknown error";
+}
+
+}  // namespace
+
+struct RenderScene::Impl {
+    std::shared_ptr<const SceneDescription> scene;
+    RTCDevice device = nullptr;
+    RTCScene rtcScene = nullptr;
+    std::string embreeMessage;
+
+    Material defaultMaterial;
+    std::vector<std::optional<WovenMaterial>> woven;  // per material; the default is never woven
+    std::vector<StandardMaterial> standard;           // per material, then the default at the end
+    std::vector<GapFilter> gapFilters;                // per mesh, referenced by Embree
+
+    std::vector<Light> lights;
+    std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
+    int environment = -1;
+    std::optional<PiecewiseConstant1D> lightChoice;
+    Bounds bounds;
+
+    ~Impl() {
+        if (rtcScene) rtcReleaseScene(rtcScene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
+
+    const Material& material(int index) const { return index >= 0 ? scene->materials[index] : defaultMaterial; }
+    int standardIndex(int index) const { return index >= 0 ? index : int(standard.size()) - 1; }
+
+    void validate() const;
+    void buildMaterials();
+    void buildGeometry();
+    void buildLights();
+    SurfaceHit makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t, const glm::vec3& dir) const;
+};
+
+void RenderScene::Impl::validate() const {
+    const SceneDescription& s = *scene;
+    size_t triangles = 0;
+    for (const Mesh& mesh : s.meshes) {
+        const std::string name = "mesh '" + mesh.name + "': ";
+        const size_t n = mesh.positions.size();
+        for (size_t v = 0; v < n; ++v) {
+            if (!finite(mesh.positions[v])) {
+                std::ostringstream msg;
+                msg << name << "vertex " << v << " is not finite (" << mesh.positions[v].x << ", "
+                    << mesh.positions[v].y << ", " << mesh.positions[v].z << ")";
+                fail(msg.str());
+            }
+        }
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const glm::uvec3 tri = mesh.triangles[t];
+            if (tri.x >= n || tri.y >= n || tri.z >= n)
+                fail(name + "triangle " + std::to_string(t) + " refers to a vertex past the " + std::to_string(n) + " it has");
+        }
+        if (!mesh.normals.empty() && mesh.normals.size() != n) fail(name + "normal count differs from vertex count");
+        if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail(name + "uv count differs from vertex count");
+        if (!mesh.tangents.empty() && mesh.tangents.size() != n) fail(name + "tangent count differs from vertex count");
+        if (mesh.material < -1 || mesh.material >= int(s.materials.size()))
+            fail(name + "material " + std::to_string(mesh.material) + " does not exist");
+        triangles += mesh.triangles.size();
+    }
+    if (triangles == 0) fail("no triangles to render");
+    for (const Material& m : s.materials)
+        if (m.baseColorTexture < -1 || m.baseColorTexture >= int(s.textures.size()))
+            fail("material '" + m.name + "': texture " + std::to_string(m.baseColorTexture) + " does not exist");
+}
+
+void RenderScene::Impl::buildMaterials() {
+    for (const Material& m : scene->materials) {
+        if (m.woven) {
+            try {
+                woven.emplace_back(std::in_place, *m.woven);
+            } catch (const std::invalid_argument& e) {
+                fail("material '" + m.name + "': " + e.what());
+            }
+        } else {
+            woven.emplace_back();
+        }
+        standard.emplace_back(m, scene->textures);
+    }
+    standard.emplace_back(defaultMaterial, scene->textures);
+}
+
+void RenderScene::Impl::buildGeometry() {
+    device = rtcNewDevice(nullptr);
+    if (!device) fail("cannot create the Embree device");
+    rtcSetDeviceErrorFunction(device, embreeError, &embreeMessage);
+    rtcScene = rtcNewScene(device);
+    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
+
+    gapFilters.resize(scene->meshes.size());
+    for (size_t m = 0; m < scene->meshes.size(); ++m) {
+        const Mesh& mesh = scene->meshes[m];
+        if (mesh.triangles.empty()) continue;
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), mesh.positions.size()));
+        auto* indices = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(glm::uvec3), mesh.triangles.size()));
+        if (!vertices || !indices) fail("mesh '" + mesh.name + "': Embree cannot allocate it: " + embreeMessage);
+        std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
+        std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
+        // Gaps need UVs to be found; a woven mesh without them is shaded as solid cloth.
+        if (mesh.material >= 0 && woven[mesh.material] && !mesh.uvs.empty()) {
+            gapFilters[m] = GapFilter{&mesh, &*woven[mesh.material]};
+            rtcSetGeometryUserData(geom, &gapFilters[m]);
+            rtcSetGeometryIntersectFilterFunction(geom, rejectGaps);
+            rtcSetGeometryOccludedFilterFunction(geom, rejectGaps);
+        }
+        rtcCommitGeometry(geom);
+        rtcAttachGeometryByID(rtcScene, geom, unsigned(m));
+        rtcReleaseGeometry(geom);
+        for (const glm::vec3& p : mesh.positions) {
+            bounds.lo = glm::min(bounds.lo, p);
+            bounds.hi = glm::max(bounds.hi, p);
+        }
+    }
+    rtcCommitScene(rtcScene);
+    if (rtcGetDeviceError(device) != RTC_ERROR_NONE) fail("Embree cannot build the scene: " + embreeMessage);
+}
+
+void RenderScene::Impl::buildLights() {
+    triangleLights.resize(scene->meshes.size());
+    for (size_t m = 0; m < scene->meshes.size(); ++m) {
+        const Mesh& mesh = scene->meshes[m];
+        const Material& mat = material(mesh.material);
+        if (!(glm::max(mat.emission.r, glm::max(mat.emission.g, mat.emission.b)) > 0.0f)) continue;
+        triangleLights[m].assign(mesh.triangles.size(), -1);
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const glm::uvec3 tri = mesh.triangles[t];
+            Light light = Light::triangle(mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z],
+                                          mat.emission, mat.doubleSided);
+            if (!(light.power() != glm::vec3(0.0f))) continue;  // degenerate: never hit, never sampled
+            triangleLights[m][t] = int(lights.size());
+            lights.push_back(std::move(light));
+        }
+    }
+    for (const PunctualLight& p : scene->lights) lights.push_back(Light::punctual(p));
+    const Environment& env = scene->environment;
+    bool envShines = glm::max(env.color.r, glm::max(env.color.g, env.color.b)) > 0.0f;
+    if (envShines && env.image)
+        envShines = std::any_of(env.image->pixels.begin(), env.image->pixels.end(),
+                                [](const glm::vec3& p) { return glm::max(p.r, glm::max(p.g, p.b)) > 0.0f; });
+    if (envShines) {
+        environment = int(lights.size());
+        lights.push_back(Light::environment(env));
+    }
+    if (lights.empty()) return;
+    std::vector<float> power;
+    for (Light& light : lights) {
+        light.setSceneBounds(bounds);
+        power.push_back(std::max(luminance(light.power()), 0.0f));
+    }
+    lightChoice.emplace(power);
+}
+
+SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t,
+                                      const glm::vec3& dir) const {
+    const Mesh& mesh = scene->meshes[meshIndex];
+    const glm::uvec3 tri = mesh.triangles[prim];
+    const float b0 = 1.0f - b1 - b2;
+    const glm::vec3 &p0 = mesh.positions[tri.x], &p1 = mesh.positions[tri.y], &p2 = mesh.positions[tri.z];
+
+    SurfaceHit hit;
+    hit.t = t;
+    hit.mesh = int(meshIndex);
+    hit.triangle = int(prim);
+    hit.material = mesh.material;
+    hit.p = b0 * p0 + b1 * p1 + b2 * p2;
+    const glm::vec3 cr = glm::cross(p1 - p0, p2 - p0);
+    const float crLen = glm::length(cr);
+    hit.ng = crLen > 0.0f && std::isfinite(crLen) ? cr / crLen : -glm::normalize(dir);
+    const glm::vec3 absSum = glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2);
+    hit.pError = kPositionError * glm::dot(glm::abs(hit.ng), absSum);
+
+    glm::vec3 nFile = hit.ng;  // the file's normal, unflipped: glTF's bitangent is built from it
+    if (!mesh.normals.empty()) {
+        const glm::vec3 n = b0 * mesh.normals[tri.x] + b1 * mesh.normals[tri.y] + b2 * mesh.normals[tri.z];
+        const float len = glm::length(n);
+        if (len > 0.0f && std::isfinite(len)) nFile = n / len;
+    }
+    hit.ns = glm::dot(nFile, hit.ng) < 0.0f ? -nFile : nFile;
+
+    if (mesh.uvs.empty()) {
+        // No UVs: every point at uv (0, 0), tangents from an arbitrary frame around ng.
+        const Frame f = Frame::fromNormal(hit.ng);
+        hit.dpdu = f.x;
+        hit.dpdv = f.y;
+    } else {
+        hit.uv = interpolateUv(mesh, prim, b1, b2);
+        const glm::vec2 duv02 = mesh.uvs[tri.x] - mesh.uvs[tri.z], duv12 = mesh.uvs[tri.y] - mesh.uvs[tri.z];
+        const glm::vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+        const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+        // Relative to the UV edges, so a tiny but sound parameterisation still counts.
+        if (std::abs(det) > 1e-6f * (glm::dot(duv02, duv02) + glm::dot(duv12, duv12)) && std::isfinite(det)) {
+            const float inv = 1.0f / det;
+            const glm::vec3 dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+            const glm::vec3 dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+            if (finite(dpdu) && finite(dpdv)) {
+                hit.dpdu = dpdu;
+                hit.dpdv = dpdv;
+            }
+        }
+    }
+    if (!mesh.tangents.empty()) {
+        // Smoothly interpolated tangents keep an anisotropic highlight continuous across
+        // triangles; the per-triangle dp/du would facet it.
+        const glm::vec4 &t0 = mesh.tangents[tri.x], &t1 = mesh.tangents[tri.y], &t2 = mesh.tangents[tri.z];
+        glm::vec3 tangent = b0 * glm::vec3(t0) + b1 * glm::vec3(t1) + b2 * glm::vec3(t2);
+        tangent -= glm::dot(tangent, nFile) * nFile;
+        const float len = glm::length(tangent);
+        if (len > 1e-12f && std::isfinite(len)) {
+            tangent /= len;
+            const float handedness = t0.w < 0.0f ? -1.0f : 1.0f;
+            const glm::vec3 bitangent = handedness * glm::cross(nFile, tangent);
+            const float du = glm::length(hit.dpdu), dv = glm::length(hit.dpdv);
+            hit.dpdu = tangent * (du > 0.0f ? du : 1.0f);
+            hit.dpdv = bitangent * (dv > 0.0f ? dv : 1.0f);
+        }
+    }
+    return hit;
+}
+
+RenderScene::RenderScene(std::shared_ptr<const SceneDescription> scene) : impl_(std::make_unique<Impl>()) {
+    impl_->scene = std::move(scene);
+    impl_->validate();
+    impl_->buildMaterials();
+    impl_->buildGeometry();
+    impl_->buildLights();
+}
+
+RenderScene::~RenderScene() = default;
+
+namespace {
+RTCRay toRtcRay(const glm::vec3& o, const glm::vec3& d, float tMax) {
+    RTCRay r;
+    r.org_x = o.x;
+    r.org_y = o.y;
+    r.org_z = o.z;
+    r.tnear = 0.0f;
+    r.dir_x = d.x;
+    r.dir_y = d.y;
+    r.dir_z = d.z;
+    r.time = 0.0f;
+    r.tfar = tMax;
+    r.mask = 0xFFFFFFFFu;
+    r.id = 0;
+    r.flags = 0;
+    return r;
+}
+
+// The fraction of a segment to drop at its far end so that it cannot reach the target's surface.
+float segmentEnd(const glm::vec3& from, const glm::vec3& target) {
+    const float length = glm::length(target - from);
+    return 1.0f - std::max(kShadowEpsilon, kPositionError * maxAbs(target) / length);
+}
+}  // namespace
+
+std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray = toRtcRay(ray.o, ray.d, ray.tMax);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->rtcScene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return impl_->makeHit(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.d);
+}
+
+namespace {
+bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float tMax) {
+    if (!(tMax > 0.0f)) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r = toRtcRay(o, d, tMax);
+    rtcOccluded1(scene, &context, &r);
+    return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+}  // namespace
+
+Ray RenderScene::spawnRay(const SurfaceHit& from, const glm::vec3& d) const {
+    // A hit built by hand has no error bound: use the one of a point of its magnitude.
+    const float offset = std::max(from.pError, kPositionError * maxAbs(from.p));
+    Ray ray;
+    ray.o = from.p + (glm::dot(d, from.ng) < 0.0f ? -offset : offset) * from.ng;
+    ray.d = d;
+    return ray;
+}
+
+bool RenderScene::occluded(const SurfaceHit& from, const glm::vec3& target) const {
+    const Ray ray = spawnRay(from, target - from.p);
+    return occludedRay(impl_->rtcScene, ray.o, target - ray.o, segmentEnd(ray.o, target));
+}
+
+bool RenderScene::occludedFrom(const glm::vec3& p, const glm::vec3& target) const {
+    return occludedRay(impl_->rtcScene, p, target - p, segmentEnd(p, target));
+}
+
+bool RenderScene::occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const {
+    const Ray ray = spawnRay(from, dir);
+    return occludedRay(impl_->rtcScene, ray.o, ray.d, std::numeric_limits<float>::infinity());
+}
+
+std::optional<SurfaceBsdf> RenderScene::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
+    const bool backSide = glm::dot(wo, hit.ng) < 0.0f;
+    if (hit.material >= 0 && impl_->woven[hit.material]) {
+        ShadingInput in;
+        in.uv = glm::dvec2(hit.uv);
+        in.ns = hit.ns;
+        in.dpdu = hit.dpdu;
+        in.dpdv = hit.dpdv;
+        in.backSide = backSide;
+        auto shading = impl_->woven[hit.material]->shade(in);
+        if (!shading) return std::nullopt;
+        return shading->bsdf;
+    }
+    const StandardMaterial& m = impl_->standard[impl_->standardIndex(hit.material)];
+    glm::vec3 rd = m.diffuse;
+    if (m.texture) rd *= bilinearRepeat(*m.texture, hit.uv);
+    return SurfaceBsdf(Frame::fromNormal(backSide ? -hit.ns : hit.ns), AshikhminShirley(m.exponent, m.exponent, m.rs, rd));
+}
+
+int RenderScene::lightIndex(const SurfaceHit& hit) const {
+    if (hit.mesh < 0 || hit.mesh >= int(impl_->triangleLights.size())) return -1;
+    const std::vector<int>& perTriangle = impl_->triangleLights[hit.mesh];
+    return perTriangle.empty() ? -1 : perTriangle[hit.triangle];
+}
+
+glm::vec3 RenderScene::emitted(const SurfaceHit& hit, const glm::vec3& w) const {
+    const int light = lightIndex(hit);
+    return light >= 0 ? impl_->lights[light].L(hit.ng, w) : glm::vec3(0.0f);
+}
+
+const std::vector<Light>& RenderScene::lights() const { return impl_->lights; }
+int RenderScene::environmentLight() const { return impl_->environment; }
+
+int RenderScene::sampleLight(float u, float* pmf) const {
+    if (!impl_->lightChoice) {
+        *pmf = 0.0f;
+        return -1;
+    }
+    return impl_->lightChoice->sampleDiscrete(u, pmf);
+}
+
+float RenderScene::lightPmf(int index) const {
+    return impl_->lightChoice && index >= 0 && index < int(impl_->lights.size()) ? impl_->lightChoice->discretePmf(index) : 0.0f;
+}
+
+const Bounds& RenderScene::bounds() const { return impl_->bounds; }
+const SceneDescription& RenderScene::description() const { return *impl_->scene; }
+
+}  // namespace woven
