@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "gltf_loader.h"
+#include "scene_file.h"
 
 namespace woven {
 
@@ -11,6 +12,7 @@ SceneDescription loadScene(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     if (extension == ".gltf" || extension == ".glb") return loadGltf(path);
+    if (extension == ".json") return loadSceneFile(path);
     throw SceneError(path + ": unknown scene file type '" + extension + "' (expected .gltf, .glb or .json)");
 }
 

@@ -1,0 +1,18 @@
+#pragma once
+// Turning loaded materials into woven ones without editing the glTF file: used by scene files
+// ("materials") and by the command line (`woven render --woven NAME=...`).
+#include <string>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+// Indices of the materials called `materialName`, or of all materials for "*". Throws SceneError
+// (naming scene.source and listing the material names) when no material has that name.
+std::vector<int> selectMaterials(const SceneDescription& scene, const std::string& materialName);
+
+// Makes the selected materials woven with `params`; their emission and double-sidedness stay.
+void makeWoven(SceneDescription& scene, const std::string& materialName, const WovenParams& params);
+
+}  // namespace woven

@@ -1,0 +1,237 @@
+#include "scene_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "gltf_loader.h"
+#include "image_io.h"
+#include "make_woven.h"
+#include "scene_loader.h"
+#include "woven_params_json.h"
+
+namespace woven {
+
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+class SceneFileReader {
+public:
+    explicit SceneFileReader(std::string path) : path_(std::move(path)) {}
+
+    SceneDescription read() {
+        const json root = parse();
+        requireKeys(root, "", {"gltf", "materials", "environment", "lights", "camera", "render"});
+        if (!root.contains("gltf")) fail("gltf", "is missing (the glTF file to load)");
+        SceneDescription scene;
+        try {
+            scene = loadGltf(resolve(string(root["gltf"], "gltf")));
+        } catch (const SceneError& e) {
+            fail("gltf", e.what());
+        }
+        scene.source = path_;
+        if (root.contains("materials")) readMaterials(root["materials"], scene);
+        if (root.contains("environment")) readEnvironment(root["environment"], scene.environment);
+        if (root.contains("lights")) readLights(root["lights"], scene.lights);
+        if (root.contains("camera")) readCamera(root["camera"], scene);
+        if (root.contains("render")) readRender(root["render"], scene.render);
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+        throw SceneError(path_ + ": " + (key.empty() ? "" : key + ": ") + problem);
+    }
+
+    json parse() const {
+        std::ifstream in(path_);
+        if (!in) fail("", "cannot open the file (missing or unreadable)");
+        try {
+            return json::parse(in);
+        } catch (const json::exception& e) {
+            fail("", std::string("not valid JSON: ") + e.what());
+        }
+    }
+
+    // A path in the scene file is relative to the scene file's directory.
+    std::string resolve(const std::string& relative) const {
+        const fs::path p(relative);
+        return p.is_absolute() ? relative : (fs::path(path_).parent_path() / p).string();
+    }
+
+    void requireKeys(const json& object, const std::string& where, std::initializer_list<const char*> allowed) const {
+        if (!object.is_object()) fail(where, "must be a JSON object");
+        for (const auto& item : object.items()) {
+            bool known = false;
+            for (const char* name : allowed) known |= item.key() == name;
+            if (!known) {
+                std::string list;
+                for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+                fail(key(where, item.key()), "unknown key (expected one of: " + list + ")");
+            }
+        }
+    }
+
+    static std::string key(const std::string& where, const std::string& name) {
+        return where.empty() ? name : where + "." + name;
+    }
+
+    std::string string(const json& v, const std::string& where) const {
+        if (!v.is_string()) fail(where, "must be a string");
+        return v.get<std::string>();
+    }
+
+    float number(const json& v, const std::string& where) const {
+        if (!v.is_number() || !std::isfinite(v.get<double>())) fail(where, "must be a finite number");
+        return v.get<float>();
+    }
+
+    int positiveInt(const json& v, const std::string& where, int max) const {
+        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > max)
+            fail(where, "must be an integer from 1 to " + std::to_string(max));
+        return v.get<int>();
+    }
+
+    glm::vec3 vec3(const json& v, const std::string& where) const {
+        if (!v.is_array() || v.size() != 3) fail(where, "must be an array of 3 numbers");
+        return {number(v[0], where), number(v[1], where), number(v[2], where)};
+    }
+
+    // A colour: [r, g, b] or one number for grey, each >= 0.
+    glm::vec3 color(const json& v, const std::string& where) const {
+        const glm::vec3 c = v.is_number() ? glm::vec3(number(v, where)) : vec3(v, where);
+        if (c.x < 0 || c.y < 0 || c.z < 0) fail(where, "must not be negative");
+        return c;
+    }
+
+    void readMaterials(const json& materials, SceneDescription& scene) const {
+        if (!materials.is_object()) fail("materials", "must be an object from material name (or \"*\") to woven parameters");
+        // "*" first, so a named entry refines what "*" set.
+        std::vector<std::string> order;
+        if (materials.contains("*")) order.push_back("*");
+        for (const auto& item : materials.items())
+            if (item.key() != "*") order.push_back(item.key());
+        for (const std::string& name : order) {
+            const std::string where = "materials." + name;
+            std::vector<int> selected;
+            try {
+                selected = selectMaterials(scene, name);
+            } catch (const SceneError& e) {
+                // selectMaterials names scene.source (= path_) first; say the key instead.
+                fail(where, std::string(e.what()).substr(path_.size() + 2));
+            }
+            for (int m : selected) {
+                Material& material = scene.materials[m];
+                try {
+                    material.woven = paramsFromJson(materials[name], material.woven.value_or(WovenParams{}));
+                } catch (const std::invalid_argument& e) {
+                    fail(where, e.what());
+                }
+            }
+        }
+    }
+
+    void readEnvironment(const json& env, Environment& environment) const {
+        requireKeys(env, "environment", {"color", "image", "rotation"});
+        if (env.contains("image")) {
+            const std::string image = resolve(string(env["image"], "environment.image"));
+            try {
+                environment.image = std::make_shared<Image>(readImage(image, ChannelEncoding::Srgb));
+            } catch (const ImageError& e) {
+                fail("environment.image", e.what());
+            }
+            environment.color = glm::vec3(1.0f);  // the image as it is unless a colour scales it
+        }
+        if (env.contains("color")) environment.color = color(env["color"], "environment.color");
+        if (env.contains("rotation")) environment.rotation = glm::radians(number(env["rotation"], "environment.rotation"));
+    }
+
+    void readLights(const json& lights, std::vector<PunctualLight>& out) const {
+        if (!lights.is_array()) fail("lights", "must be an array of lights");
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const std::string where = "lights[" + std::to_string(i) + "]";
+            const json& l = lights[i];
+            requireKeys(l, where, {"type", "color", "intensity", "position", "direction", "inner_cone_degrees", "outer_cone_degrees"});
+            if (!l.contains("type")) fail(where, "needs \"type\": \"point\", \"spot\" or \"directional\"");
+            const std::string type = string(l["type"], where + ".type");
+            PunctualLight light;
+            if (type == "point") light.type = PunctualLight::Type::Point;
+            else if (type == "spot") light.type = PunctualLight::Type::Spot;
+            else if (type == "directional") light.type = PunctualLight::Type::Directional;
+            else fail(where + ".type", "must be \"point\", \"spot\" or \"directional\", not \"" + type + "\"");
+            const bool positioned = light.type != PunctualLight::Type::Directional;
+            const bool aimed = light.type != PunctualLight::Type::Point;
+            if (positioned && !l.contains("position")) fail(where, "a " + type + " light needs \"position\"");
+            if (aimed && !l.contains("direction")) fail(where, "a " + type + " light needs \"direction\"");
+            if (!positioned && l.contains("position")) fail(where + ".position", "a directional light has no position");
+            if (!aimed && l.contains("direction")) fail(where + ".direction", "a point light has no direction");
+            if (positioned) light.position = vec3(l["position"], where + ".position");
+            if (aimed) {
+                const glm::vec3 d = vec3(l["direction"], where + ".direction");
+                if (!(glm::length(d) > 0.0f)) fail(where + ".direction", "must not be zero");
+                light.direction = glm::normalize(d);
+            }
+            const glm::vec3 c = l.contains("color") ? color(l["color"], where + ".color") : glm::vec3(1.0f);
+            const float intensity = l.contains("intensity") ? number(l["intensity"], where + ".intensity") : 1.0f;
+            if (intensity < 0.0f) fail(where + ".intensity", "must not be negative");
+            light.intensity = c * intensity;
+            const bool coned = l.contains("inner_cone_degrees") || l.contains("outer_cone_degrees");
+            if (coned && light.type != PunctualLight::Type::Spot) fail(where, "cone angles are for spot lights");
+            if (l.contains("inner_cone_degrees"))
+                light.innerConeAngle = glm::radians(number(l["inner_cone_degrees"], where + ".inner_cone_degrees"));
+            if (l.contains("outer_cone_degrees"))
+                light.outerConeAngle = glm::radians(number(l["outer_cone_degrees"], where + ".outer_cone_degrees"));
+            if (!(light.innerConeAngle >= 0.0f && light.innerConeAngle < light.outerConeAngle &&
+                  light.outerConeAngle <= glm::radians(90.0f)))
+                fail(where, "cone angles must satisfy 0 <= inner < outer <= 90 degrees");
+            out.push_back(light);
+        }
+    }
+
+    void readCamera(const json& cam, SceneDescription& scene) const {
+        requireKeys(cam, "camera", {"position", "target", "up", "yfov_degrees"});
+        if (!cam.contains("position") || !cam.contains("target")) fail("camera", "needs \"position\" and \"target\"");
+        const glm::vec3 position = vec3(cam["position"], "camera.position");
+        const glm::vec3 target = vec3(cam["target"], "camera.target");
+        const glm::vec3 up = cam.contains("up") ? vec3(cam["up"], "camera.up") : glm::vec3(0, 1, 0);
+        // The camera looks down its -z axis, so +z points from the target back to the eye.
+        const glm::vec3 back = position - target;
+        if (!(glm::length(back) > 0.0f)) fail("camera.target", "must differ from camera.position");
+        const glm::vec3 z = glm::normalize(back);
+        const glm::vec3 side = glm::cross(up, z);
+        if (!(glm::length(side) > 1e-6f * glm::length(up))) fail("camera.up", "must not be parallel to the view direction");
+        const glm::vec3 x = glm::normalize(side);
+        const glm::vec3 y = glm::cross(z, x);
+        scene.camera.cameraToWorld = glm::mat4(glm::vec4(x, 0), glm::vec4(y, 0), glm::vec4(z, 0), glm::vec4(position, 1));
+        if (cam.contains("yfov_degrees")) {
+            const float yfov = number(cam["yfov_degrees"], "camera.yfov_degrees");
+            if (!(yfov > 0.0f && yfov < 180.0f)) fail("camera.yfov_degrees", "must be between 0 and 180");
+            scene.camera.yfov = glm::radians(yfov);
+        }
+        scene.camera.aspect = 0.0f;  // the image decides
+        scene.hasCamera = true;
+    }
+
+    void readRender(const json& render, RenderHints& hints) const {
+        requireKeys(render, "render", {"width", "height", "spp", "integrator"});
+        if (render.contains("width")) hints.width = positiveInt(render["width"], "render.width", 16384);
+        if (render.contains("height")) hints.height = positiveInt(render["height"], "render.height", 16384);
+        if (render.contains("spp")) hints.spp = positiveInt(render["spp"], "render.spp", 1 << 20);
+        if (render.contains("integrator")) {
+            hints.integrator = string(render["integrator"], "render.integrator");
+            if (hints.integrator != "bdpt" && hints.integrator != "path" && hints.integrator != "auto")
+                fail("render.integrator", "must be \"bdpt\", \"path\" or \"auto\", not \"" + hints.integrator + "\"");
+        }
+    }
+
+    std::string path_;
+};
+
+}  // namespace
+
+SceneDescription loadSceneFile(const std::string& path) { return SceneFileReader(path).read(); }
+
+}  // namespace woven
