@@ -51,6 +51,8 @@ std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     return d;
 }
 
+bool readThroughWeaveTile(const ParamInfo& info) { return std::string(info.name) == "pattern"; }
+
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p) {
     for (const ParamInfo& info : wovenParamTable()) {
         const GLint location = program.uniform((std::string("material.") + info.name).c_str());

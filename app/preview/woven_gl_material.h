@@ -20,6 +20,10 @@ std::string wovenParamsGlslStruct();
 // far-field weave filter when `filterWeave`.
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave);
 
+// Table entries the shader gets through the weave tile texture instead of reading the uniform
+// (the weave (i, j, k), turned into a tile on the CPU by WeavePattern::fromParams).
+bool readThroughWeaveTile(const ParamInfo& info);
+
 // Sets uniform `material.<name>` for every table entry the program uses.
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p);
 

@@ -1,0 +1,116 @@
+#include "flat_cloth.h"
+
+#include <cmath>
+
+#include "woven_material.h"
+
+namespace woven::test {
+
+SceneDescription flatClothScene(const WovenParams& material) {
+    Mesh m;
+    m.name = "flat cloth";
+    m.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
+    m.normals.assign(4, glm::vec3(0, 1, 0));
+    m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.material = 0;
+
+    SceneDescription scene;
+    scene.source = "flat cloth";
+    scene.meshes.push_back(m);
+    Material cloth;
+    cloth.woven = material;
+    scene.materials.push_back(cloth);
+
+    PunctualLight point;
+    point.type = PunctualLight::Type::Point;
+    point.position = {-0.8f, 1.5f, 0.8f};
+    point.intensity = glm::vec3(3.0f, 2.8f, 2.5f);
+    PunctualLight sun;
+    sun.type = PunctualLight::Type::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.2f));
+    sun.intensity = glm::vec3(0.7f);
+    scene.lights = {point, sun};
+
+    scene.hasCamera = true;
+    const glm::vec3 eye(0.0f, 1.3f, 1.7f);
+    const glm::vec3 forward = glm::normalize(-eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, forward);
+    scene.camera.cameraToWorld = glm::mat4(glm::vec4(right, 0), glm::vec4(up, 0), glm::vec4(-forward, 0), glm::vec4(eye, 1));
+    scene.camera.yfov = 0.8f;
+    return scene;
+}
+
+namespace {
+
+glm::vec3 directLight(const SceneDescription& scene, const SurfaceBsdf& bsdf, const glm::vec3& p, const glm::vec3& ng,
+                      const glm::vec3& wo) {
+    glm::vec3 sum(0.0f);
+    for (const PunctualLight& light : scene.lights) {
+        glm::vec3 wi, L;
+        if (light.type == PunctualLight::Type::Directional) {
+            wi = -glm::normalize(light.direction);
+            L = light.intensity;
+        } else {
+            const glm::vec3 d = light.position - p;
+            wi = glm::normalize(d);
+            L = light.intensity / glm::dot(d, d);
+        }
+        if (glm::dot(wi, ng) <= 0.0f) continue;  // below the cloth
+        sum += bsdf.eval(wo, wi) * L * std::fmax(0.0f, glm::dot(wi, bsdf.shadingNormal()));
+    }
+    return sum;
+}
+
+}  // namespace
+
+Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask) {
+    const WovenMaterial material(*scene.materials[0].woven);
+    const Camera& cam = scene.camera;
+    const glm::vec3 eye(cam.cameraToWorld[3]);
+    const float tanHalf = std::tan(0.5f * cam.yfov), aspect = float(width) / float(height);
+    const glm::vec3 dpdu(2, 0, 0), dpdv(0, 0, -2), up(0, 1, 0);
+
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.pixels.assign(size_t(width) * height, glm::vec3(0.0f));
+    if (hitMask) hitMask->assign(image.pixels.size(), 0);
+    for (int py = 0; py < height; ++py)
+        for (int px = 0; px < width; ++px) {
+            glm::vec3 sum(0.0f);
+            int yarnHits = 0;
+            for (int sy = 0; sy < n; ++sy)
+                for (int sx = 0; sx < n; ++sx) {
+                    const float x = 2.0f * (px + (sx + 0.5f) / n) / width - 1.0f;
+                    const float y = 1.0f - 2.0f * (py + (sy + 0.5f) / n) / height;
+                    const glm::vec3 d = glm::normalize(glm::mat3(cam.cameraToWorld) *
+                                                       glm::vec3(x * tanHalf * aspect, y * tanHalf, -1.0f));
+                    const float t = -eye.y / d.y;
+                    const glm::vec3 p = eye + t * d;
+                    glm::vec3 L = scene.environment.color;
+                    bool onYarn = false;
+                    if (t > 0.0f && std::fabs(p.x) <= 1.0f && std::fabs(p.z) <= 1.0f) {
+                        ShadingInput in;
+                        in.uv = glm::dvec2((p.x + 1.0) / 2.0, (1.0 - p.z) / 2.0);
+                        in.ns = up;
+                        in.dpdu = dpdu;
+                        in.dpdv = dpdv;
+                        const glm::vec3 wo = -d;
+                        in.backSide = glm::dot(wo, up) < 0.0f;
+                        if (auto s = material.shade(in)) {
+                            L = directLight(scene, s->bsdf, p, in.backSide ? -up : up, wo);
+                            onYarn = true;
+                        }
+                    }
+                    sum += L;
+                    yarnHits += onYarn;
+                }
+            image.at(px, py) = sum / float(n * n);
+            if (hitMask) (*hitMask)[size_t(py) * width + px] = yarnHits == n * n;
+        }
+    return image;
+}
+
+}  // namespace woven::test

@@ -1,0 +1,22 @@
+#pragma once
+// The test scene of the GLSL-versus-core comparisons: a flat square of cloth on y = 0,
+// x and z in [-1, 1], uv = ((x + 1) / 2, (1 - z) / 2), seen from above at an angle, lit by a
+// point and a directional light and nothing else, so every pixel's hit point and direct
+// lighting can be computed analytically on the CPU.
+#include <cstdint>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven::test {
+
+SceneDescription flatClothScene(const WovenParams& material);
+
+// Core's direct-lighting image of flatClothScene: per pixel the mean over n x n stratified
+// sub-pixel positions of WovenMaterial::shade + SurfaceBsdf::eval times each light's incident
+// radiance and cosine; rays that miss (or pass through a see-through gap) see the environment.
+// `hitMask` (optional) receives 1 where every sub-pixel position hits yarn, else 0.
+Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n,
+                         std::vector<uint8_t>* hitMask = nullptr);
+
+}  // namespace woven::test

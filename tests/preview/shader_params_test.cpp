@@ -1,0 +1,109 @@
+// The C++ parameter table and the GLSL struct stay one list: every wovenParamTable() entry is
+// an active uniform of the surface program and every active `material.*` uniform is a table
+// entry, uploads land in the right fields, and the shaders read every parameter (a new one
+// the GLSL ignores fails here).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "gl_test_context.h"
+#include "woven_gl_material.h"
+
+namespace woven::test {
+namespace {
+
+Material everyFeature() {
+    Material m;
+    WovenParams p;
+    p.noise = 0.3f;
+    p.crimp = 0.4f;
+    p.yarn_width = 0.8f;
+    p.warp_width = 0.7f;
+    m.woven = p;
+    return m;
+}
+
+std::set<std::string> activeMaterialUniforms(GLuint program) {
+    GLint count = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    std::set<std::string> names;
+    for (GLint i = 0; i < count; ++i) {
+        char name[256];
+        GLint size;
+        GLenum type;
+        glGetActiveUniform(program, GLuint(i), sizeof name, nullptr, &size, &type, name);
+        const std::string n(name);
+        if (n.rfind("material.", 0) == 0) names.insert(n.substr(9));
+    }
+    return names;
+}
+
+TEST(ShaderParams, EveryTableEntryIsAnActiveUniformAndNothingElse) {
+    ensureHeadlessGl();
+    const Material m = everyFeature();
+    const auto program = buildSurfaceProgram(surfaceProgramPreamble(m, true));
+    const std::set<std::string> active = activeMaterialUniforms(program->id());
+    std::set<std::string> table;
+    for (const ParamInfo& info : wovenParamTable()) {
+        table.insert(info.name);
+        EXPECT_TRUE(active.count(info.name)) << "'" << info.name << "' is in wovenParamTable() but the shader never reads it";
+    }
+    for (const std::string& name : active) EXPECT_TRUE(table.count(name)) << "'material." << name << "' is not in wovenParamTable()";
+}
+
+TEST(ShaderParams, UploadedValuesReadBackPerField) {
+    ensureHeadlessGl();
+    Material m = everyFeature();
+    WovenParams& p = *m.woven;
+    // Distinct values per field, so a value landing in the wrong field is caught.
+    p.pattern = {3, 2, 1};
+    p.repeat = {7.0f, 9.0f};
+    p.ex = 11.0f; p.ey = 13.0f; p.warp_ex = 17.0f; p.warp_ey = 19.0f;
+    p.rs = 0.23f;
+    p.weft_color = {0.1f, 0.2f, 0.3f};
+    p.warp_color = {0.4f, 0.5f, 0.6f};
+    p.cy = 0.29f; p.noise_scale = 0.31f; p.backing = 1;
+    p.backing_color = {0.7f, 0.8f, 0.9f};
+    const auto program = buildSurfaceProgram(surfaceProgramPreamble(m, true));
+    glUseProgram(program->id());
+    uploadWovenParams(*program, p);
+    for (const ParamInfo& info : wovenParamTable()) {
+        const GLint location = program->uniform((std::string("material.") + info.name).c_str());
+        ASSERT_GE(location, 0) << info.name;
+        const char* base = reinterpret_cast<const char*>(&p) + info.offset;
+        const int n = info.type == ParamType::Vec2 ? 2 : (info.type == ParamType::Vec3 || info.type == ParamType::IVec3) ? 3 : 1;
+        if (info.type == ParamType::Int || info.type == ParamType::IVec3) {
+            GLint got[3] = {};
+            glGetUniformiv(program->id(), location, got);
+            for (int c = 0; c < n; ++c) EXPECT_EQ(got[c], reinterpret_cast<const int*>(base)[c]) << info.name << "[" << c << "]";
+        } else {
+            GLfloat got[3] = {};
+            glGetUniformfv(program->id(), location, got);
+            for (int c = 0; c < n; ++c) EXPECT_EQ(got[c], reinterpret_cast<const float*>(base)[c]) << info.name << "[" << c << "]";
+        }
+    }
+}
+
+// Mesa keeps every member of a uniform struct active even when the shader never reads it, so
+// activity alone cannot tell whether the shader uses a parameter: the sources must read it.
+TEST(ShaderParams, ShaderSourcesReadEveryTableEntry) {
+    std::string sources;
+    for (const char* file : {"yarn_geometry.glsl", "woven.frag"}) {
+        std::ifstream in(shaderDirectory() + "/" + file);
+        ASSERT_TRUE(in) << file;
+        std::ostringstream s;
+        s << in.rdbuf();
+        sources += s.str();
+    }
+    for (const ParamInfo& info : wovenParamTable()) {
+        if (readThroughWeaveTile(info)) continue;
+        const std::regex read("material\\." + std::string(info.name) + "\\b");
+        EXPECT_TRUE(std::regex_search(sources, read)) << "no shader reads material." << info.name;
+    }
+}
+
+}  // namespace
+}  // namespace woven::test
