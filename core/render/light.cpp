@@ -46,7 +46,8 @@ glm::vec3 equirectDirection(const glm::vec2& uv) {
 glm::vec2 equirectUv(const glm::vec3& d) {
     float phi = std::atan2(d.x, -d.z);
     if (phi < 0.0f) phi += 2.0f * kPi;
-    const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+    // atan2 rather than acos(d.y): accurate near the poles too, where sampling and pdfLi must agree.
+    const float theta = std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y);
     return {phi / (2.0f * kPi), theta / kPi};
 }
 
