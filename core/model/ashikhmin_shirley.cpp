@@ -14,6 +14,7 @@ float pow5(float x) { return (x * x) * (x * x) * x; }
 
 // (n.h)^N from sin^2(theta_h): log1p keeps exponents up to 1e5 accurate where n.h rounds to 1.
 float cosPowN(float sin2, float N) {
+    if (N <= 0.0f) return 1.0f;  // not 0 * log(0) = NaN where h reaches the horizon
     return std::exp(N * 0.5f * std::log1p(-std::min(sin2, 1.0f)));
 }
 }  // namespace
@@ -46,7 +47,9 @@ glm::vec3 AshikhminShirley::eval(const glm::vec3& wo, const glm::vec3& wi) const
     const float len = glm::length(H);
     if (!(len > 1e-12f)) return diffuse;
     const glm::vec3 h = H / len;
-    const float hk = std::max(glm::dot(h, wi), 1e-12f);
+    // h.k = |k1 + k2| / 2 for unit k1, k2: symmetric in the two directions, so reciprocal, and free
+    // of the cancellation that makes dot(h, k) lose its digits as h.k -> 0 (grazing opposite k1, k2).
+    const float hk = 0.5f * len;
     const float fresnel = rs_ + (1.0f - rs_) * pow5(1.0f - hk);
     const float spec = specNorm_ / (8.0f * kPi) * cosPowN(h.x * h.x + h.y * h.y, exponent(h)) /
                        (hk * std::max(wo.z, wi.z)) * fresnel;
@@ -59,9 +62,8 @@ float AshikhminShirley::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     const glm::vec3 H = wo + wi;
     const float len = glm::length(H);
     if (specularProb_ > 0.0f && len > 1e-12f) {
-        const glm::vec3 h = H / len;
-        const float ok = glm::dot(wo, h);
-        if (ok > 0.0f) p += specularProb_ * halfVectorPdf(h) / (4.0f * ok);
+        const float ok = 0.5f * len;  // wo.h, as in eval()
+        p += specularProb_ * halfVectorPdf(H / len) / (4.0f * ok);
     }
     return p;
 }

@@ -9,9 +9,11 @@ namespace woven {
 
 namespace {
 glm::vec3 projectOut(const glm::vec3& v, const glm::vec3& n) { return v - glm::dot(v, n) * n; }
-bool usable(const glm::vec3& v) {
-    const float l2 = glm::dot(v, v);
-    return l2 > 1e-24f && std::isfinite(l2);
+// A projection is usable when it keeps a fair part of the vector it came from: what is left of a
+// vector (nearly) parallel to n is rounding noise that points anywhere, even along n.
+bool usable(const glm::vec3& projected, const glm::vec3& original) {
+    const float l2 = glm::dot(projected, projected);
+    return l2 > 1e-10f * glm::dot(original, original) && l2 > 1e-30f && std::isfinite(l2);
 }
 }  // namespace
 
@@ -20,12 +22,12 @@ Frame tangentFrame(const glm::vec3& n, const glm::vec3& dpdu, const glm::vec3& d
     glm::vec3 b = projectOut(dpdv, n);
     Frame f;
     f.z = n;
-    if (usable(t)) {
+    if (usable(t, dpdu)) {
         f.x = glm::normalize(t);
         // Keep dp/dv's orientation (it tells which way +v runs, on either face).
         b = projectOut(b, f.x);
-        f.y = usable(b) ? glm::normalize(b) : glm::cross(n, f.x);
-    } else if (usable(b)) {
+        f.y = usable(b, dpdv) ? glm::normalize(b) : glm::cross(n, f.x);
+    } else if (usable(b, dpdv)) {
         f.y = glm::normalize(b);
         f.x = glm::cross(f.y, n);
     } else {
