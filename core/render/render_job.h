@@ -3,6 +3,7 @@
 // previewer's Render button and the benchmarks alike. The frame is a pure function of (scene,
 // settings.seed, sample range): random numbers are keyed by pixel and sample index only.
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -28,6 +29,8 @@ struct RenderProgress {
     int samplesDone = 0, samplesTotal = 0;  // per pixel
     double elapsed = 0.0, remaining = 0.0;  // seconds (remaining: estimate)
     double samplesPerSecond = 0.0;          // camera samples (pixels x spp) per second
+    uint64_t rays = 0;                      // rays traced by the passes so far (shadow rays included)
+    double raysPerSecond = 0.0;
 };
 
 // Mean radiance and sample count per pixel: what an EXR keeps so renders can be merged.
@@ -45,7 +48,9 @@ public:
     // that snapshot() is a valid image after every pass. Calls onProgress after each pass.
     void run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress = {});
     FilmImage snapshot() const;  // thread-safe
-    const std::string& integratorName() const;  // the one chosen ("auto" resolved)
+    // The one chosen: "auto" is resolved by a short pilot at the start of run(), so until then
+    // it reads "auto".
+    const std::string& integratorName() const;
 
 private:
     struct Impl;

@@ -1,0 +1,47 @@
+#pragma once
+// Bidirectional path tracing after pbrt-v3 (Veach 1997, ch. 10): a camera subpath and a light
+// subpath per sample, every (s, t) connection strategy, weighted by multiple importance sampling
+// with the power heuristic through pbrt-v3's ratios of remapped reverse and forward densities.
+// Strategies with t = 1 (light subpath vertices seen by the camera) land on other pixels and go
+// to the film's splat buffer.
+#include "integrator.h"
+
+namespace woven {
+
+class BdptIntegrator : public Integrator {
+public:
+    BdptIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth)
+        : scene_(scene), camera_(camera), maxDepth_(maxDepth) {}
+
+    glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
+    const char* name() const override { return "bdpt"; }
+
+    struct Vertex;  // a subpath vertex (bdpt_integrator.cpp)
+
+private:
+    int cameraSubpath(const glm::vec2& pRaster, Rng& rng, SampleSink& sink, Vertex* path) const;
+    int lightSubpath(Rng& rng, SampleSink& sink, Vertex* path) const;
+    int randomWalk(Ray ray, glm::vec3 beta, float pdf, int maxVertices, bool importance, Rng& rng,
+                   SampleSink& sink, Vertex* path) const;
+    // The contribution of strategy (s, t), MIS-weighted; for t = 1, *pRaster gets its pixel.
+    glm::vec3 connect(Vertex* light, Vertex* camera, int s, int t, Rng& rng, SampleSink& sink,
+                      glm::vec2* pRaster) const;
+    float misWeight(const Vertex* light, const Vertex* camera, const Vertex& sampled, int s, int t) const;
+
+    // Densities of pbrt-v3's Vertex, as functions of the scene.
+    float convertDensity(const Vertex& from, float pdfSolidAngle, const Vertex& next) const;
+    float pdf(const Vertex& v, const Vertex* prev, const Vertex& next) const;
+    float pdfLight(const Vertex& v, const Vertex& next) const;
+    float pdfLightOrigin(const Vertex& v, const Vertex& next) const;
+    float infiniteLightDensity(const glm::vec3& dirFromLight) const;
+    glm::vec3 Le(const Vertex& v, const Vertex& towards) const;
+    bool isInfiniteLight(const Vertex& v) const;
+    bool isDeltaLight(const Vertex& v) const;
+    bool isConnectible(const Vertex& v) const;
+
+    const RenderScene& scene_;
+    const CameraModel& camera_;
+    int maxDepth_;
+};
+
+}  // namespace woven

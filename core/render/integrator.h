@@ -1,0 +1,46 @@
+#pragma once
+// What both integrators share: one camera sample in, a radiance estimate for its pixel out, plus
+// contributions that land on other pixels (BDPT's t = 1 strategies) and a count of rays traced.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render_scene.h"
+#include "sampling.h"
+
+namespace woven {
+
+// A contribution to the pixel containing pRaster, added to the film's splat buffer.
+struct Splat {
+    glm::vec2 pRaster;
+    glm::vec3 L;
+};
+
+// Per-sample output besides the returned radiance. Owned by one tile, so no locking.
+struct SampleSink {
+    std::vector<Splat> splats;
+    uint64_t rays = 0;  // intersection and shadow rays traced
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // The radiance estimate of the camera ray through pRaster; all random numbers from rng.
+    virtual glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const = 0;
+    virtual const char* name() const = 0;
+};
+
+// maxDepth counts scattering vertices (bounces) as in pbrt-v3: 1 = direct lighting only.
+// Throws std::invalid_argument for an unknown name ("bdpt" and "path" are known).
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene,
+                                           const CameraModel& camera, int maxDepth);
+
+// The power heuristic (beta = 2) for one-sample densities f and g.
+inline float powerHeuristic(float f, float g) {
+    if (!(f > 0.0f)) return 0.0f;
+    const float r = g / f;  // as a ratio, so large densities cannot overflow when squared
+    return 1.0f / (1.0f + r * r);
+}
+
+}  // namespace woven

@@ -1,0 +1,97 @@
+#include "path_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace woven {
+
+namespace {
+
+// Russian roulette starts after this many bounces: early bounces carry most of the image.
+constexpr int kRouletteDepth = 3;
+
+float maxComponent(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+bool isBlack(const glm::vec3& v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0.0f; }
+
+}  // namespace
+
+glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const SurfaceBsdf& bsdf, const glm::vec3& wo,
+                                         Rng& rng, SampleSink& sink) const {
+    float pmf = 0.0f;
+    const int index = scene_.sampleLight(rng.uniform(), &pmf);
+    const glm::vec2 u = rng.uniform2();
+    if (index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
+    const Light& light = scene_.lights()[size_t(index)];
+    const auto ls = light.sampleLi(hit.p, u);
+    if (!ls || !(ls->pdf > 0.0f) || isBlack(ls->L)) return glm::vec3(0.0f);
+    if (!sameGeometricSide(hit, wo, ls->wi)) return glm::vec3(0.0f);
+    const glm::vec3 f = bsdf.eval(wo, ls->wi) * std::abs(glm::dot(ls->wi, bsdf.shadingNormal()));
+    if (isBlack(f)) return glm::vec3(0.0f);
+    ++sink.rays;
+    const bool blocked = light.isInfinite() ? scene_.occludedToInfinity(hit, ls->wi) : scene_.occluded(hit, ls->pLight);
+    if (blocked) return glm::vec3(0.0f);
+    const float lightPdf = pmf * ls->pdf;
+    const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdf.pdf(wo, ls->wi));
+    return f * ls->L * (weight / lightPdf);
+}
+
+glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const {
+    glm::vec3 L(0.0f), beta(1.0f);
+    Ray ray = camera_.generateRay(pRaster);
+    // The previous scattering vertex and the BSDF density of the direction sampled there, for
+    // weighting emission found by BSDF sampling against next-event estimation.
+    glm::vec3 prevP(0.0f);
+    float prevBsdfPdf = 0.0f;
+    for (int bounces = 0;; ++bounces) {
+        ++sink.rays;
+        const auto hit = scene_.intersect(ray);
+        if (!hit) {
+            const int env = scene_.environmentLight();
+            if (env >= 0) {
+                const Light& light = scene_.lights()[size_t(env)];
+                float weight = 1.0f;
+                if (bounces > 0) {
+                    const float lightPdf = scene_.lightPmf(env) * light.pdfLi(prevP, ray.d, glm::vec3(0.0f), glm::vec3(0.0f));
+                    weight = powerHeuristic(prevBsdfPdf, lightPdf);
+                }
+                L += beta * light.Le(ray.d) * weight;
+            }
+            break;
+        }
+        const glm::vec3 wo = -ray.d;
+        const glm::vec3 Le = scene_.emitted(*hit, wo);
+        if (!isBlack(Le)) {
+            float weight = 1.0f;
+            const int index = scene_.lightIndex(*hit);
+            if (bounces > 0 && index >= 0) {
+                const float lightPdf = scene_.lightPmf(index) *
+                                       scene_.lights()[size_t(index)].pdfLi(prevP, ray.d, hit->p, hit->ng);
+                weight = powerHeuristic(prevBsdfPdf, lightPdf);
+            }
+            L += beta * Le * weight;
+        }
+        if (bounces >= maxDepth_) break;
+        const auto bsdf = scene_.bsdf(*hit, wo);
+        if (!bsdf) break;
+
+        L += beta * sampleOneLight(*hit, *bsdf, wo, rng, sink);
+
+        const glm::vec2 u = rng.uniform2();
+        const auto bs = bsdf->sample(wo, u, rng.uniform());
+        if (!bs || !sameGeometricSide(*hit, wo, bs->wi)) break;
+        beta *= bs->weight;
+        if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
+        prevP = hit->p;
+        prevBsdfPdf = bs->pdf;
+        ray = scene_.spawnRay(*hit, bs->wi);
+
+        if (bounces + 1 >= kRouletteDepth) {
+            const float survive = std::min(1.0f, maxComponent(beta));
+            if (rng.uniform() >= survive) break;
+            beta /= survive;
+        }
+    }
+    return L;
+}
+
+}  // namespace woven

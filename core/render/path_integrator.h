@@ -1,0 +1,27 @@
+#pragma once
+// Unidirectional path tracing: at every vertex, next-event estimation (one light chosen by
+// power) and BSDF sampling, combined by multiple importance sampling with the power heuristic;
+// Russian roulette after a few bounces.
+#include "integrator.h"
+
+namespace woven {
+
+class PathIntegrator : public Integrator {
+public:
+    PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth)
+        : scene_(scene), camera_(camera), maxDepth_(maxDepth) {}
+
+    glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
+    const char* name() const override { return "path"; }
+
+private:
+    // Light sampled at hit, MIS-weighted against the BSDF's density; beta excluded.
+    glm::vec3 sampleOneLight(const SurfaceHit& hit, const SurfaceBsdf& bsdf, const glm::vec3& wo, Rng& rng,
+                             SampleSink& sink) const;
+
+    const RenderScene& scene_;
+    const CameraModel& camera_;
+    int maxDepth_;
+};
+
+}  // namespace woven

@@ -1,0 +1,219 @@
+#include "render_job.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+
+#include "film.h"
+#include "integrator.h"
+#include "render_scene.h"
+#include "scene_loader.h"
+
+namespace woven {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// A scene without a camera is seen from +z, its bounding sphere filling the vertical field of view.
+Camera framingCamera(const Bounds& bounds) {
+    Camera camera;
+    const float distance = std::max(bounds.radius(), 1e-3f) / std::sin(0.5f * camera.yfov);
+    camera.cameraToWorld[3] = glm::vec4(bounds.centre() + glm::vec3(0.0f, 0.0f, distance), 1.0f);
+    return camera;
+}
+
+// Renders one pass (one sample per pixel, sample index `sampleIndex`) over tiles on the arena's
+// threads. Every pixel's random numbers come from (seed, pixel, sample index) alone. Returns
+// false, leaving `pass` incomplete, when `cancel` became true.
+bool renderPass(const Integrator& integrator, int width, int height, uint64_t seed, uint64_t sampleIndex,
+                tbb::task_arena& arena, const std::atomic<bool>& cancel, uint64_t* rays, PassImage* pass) {
+    const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+    pass->width = width;
+    pass->height = height;
+    pass->radiance.assign(size_t(width) * height, glm::vec3(0.0f));
+    pass->tileSplats.assign(size_t(tilesX) * tilesY, {});
+    std::atomic<uint64_t> rayCount{0};
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& range) {
+            for (int tile = range.begin(); tile != range.end(); ++tile) {
+                if (cancel.load(std::memory_order_relaxed)) return;
+                SampleSink sink;
+                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+                for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+                    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+                        const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
+                        Rng rng(seed, pixel, sampleIndex);
+                        const glm::vec2 pRaster = glm::vec2(float(x), float(y)) + rng.uniform2();
+                        const glm::vec3 L = integrator.Li(pRaster, rng, sink);
+                        // A rare non-finite sample would poison the pixel for good: drop it.
+                        pass->radiance[pixel] = std::isfinite(L.x + L.y + L.z) ? L : glm::vec3(0.0f);
+                    }
+                pass->tileSplats[size_t(tile)] = std::move(sink.splats);
+                rayCount.fetch_add(sink.rays, std::memory_order_relaxed);
+            }
+        });
+    });
+    *rays += rayCount.load();
+    return !cancel.load();
+}
+
+}  // namespace
+
+struct RenderJob::Impl {
+    std::shared_ptr<const SceneDescription> description;
+    RenderSettings settings;
+    std::unique_ptr<RenderScene> scene;
+    Camera camera;
+    std::unique_ptr<CameraModel> cameraModel;
+    std::unique_ptr<Integrator> integrator;
+    std::string integratorName;
+    tbb::task_arena arena;
+
+    mutable std::mutex filmMutex;
+    Film film;
+
+    Impl(std::shared_ptr<const SceneDescription> scene_, RenderSettings settings_)
+        : description(std::move(scene_)), settings(std::move(settings_)),
+          arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic),
+          film(settings.width, settings.height) {}
+
+    // The efficiency (1 / (relative variance x time) per pass) of each integrator on a
+    // low-resolution version of the frame decides "auto".
+    std::string pickIntegrator(const std::atomic<bool>& cancel);
+};
+
+std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
+    // About 20,000 pixels: enough to see the noise of every region of the frame, a few
+    // seconds on two cores for both integrators together.
+    const double scale = std::min(1.0, std::sqrt(20000.0 / (double(settings.width) * settings.height)));
+    const int width = std::max(8, int(settings.width * scale)), height = std::max(8, int(settings.height * scale));
+    Camera pilotCamera = camera;
+    if (pilotCamera.aspect <= 0.0f) pilotCamera.aspect = float(settings.width) / float(settings.height);
+    const CameraModel pilotModel(pilotCamera, width, height);
+    // Pass counts: at least kMinPasses for a variance, at most kMaxPasses, or fewer once an
+    // integrator has spent kPilotSeconds.
+    constexpr int kMinPasses = 4, kMaxPasses = 16;
+    constexpr double kPilotSeconds = 1.5;
+    std::string best;
+    double bestEfficiency = -1.0;
+    for (const char* name : {"path", "bdpt"}) {
+        const auto candidate = makeIntegrator(name, *scene, pilotModel, settings.maxDepth);
+        std::vector<double> sum(size_t(width) * height, 0.0), sumSq(sum.size(), 0.0);
+        const Clock::time_point start = Clock::now();
+        int passes = 0;
+        uint64_t rays = 0;
+        while (passes < kMaxPasses && (passes < kMinPasses || secondsSince(start) < kPilotSeconds)) {
+            PassImage pass;
+            // Sample indices far from any final render's, so the pilot never repeats its samples.
+            const uint64_t sampleIndex = (uint64_t(1) << 62) + uint64_t(passes);
+            if (!renderPass(*candidate, width, height, settings.seed, sampleIndex, arena, cancel, &rays, &pass))
+                return "path";
+            const std::vector<glm::vec3> image = pass.combined();
+            for (size_t i = 0; i < image.size(); ++i) {
+                const double y = luminance(image[i]);
+                sum[i] += y;
+                sumSq[i] += y * y;
+            }
+            ++passes;
+        }
+        const double secondsPerPass = secondsSince(start) / passes;
+        double mean = 0.0, variance = 0.0;
+        for (size_t i = 0; i < sum.size(); ++i) {
+            const double m = sum[i] / passes;
+            mean += m;
+            variance += std::max(0.0, (sumSq[i] - passes * m * m) / (passes - 1));
+        }
+        mean /= double(sum.size());
+        variance /= double(sum.size());
+        // Relative to the image's mean brightness, so that the choice does not hang on units.
+        const double relativeVariance = mean > 0.0 ? variance / (mean * mean) : variance;
+        const double efficiency = 1.0 / (std::max(relativeVariance, 1e-30) * secondsPerPass);
+        if (efficiency > bestEfficiency) {
+            bestEfficiency = efficiency;
+            best = name;
+        }
+    }
+    return best;
+}
+
+RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
+    if (settings.width <= 0 || settings.height <= 0)
+        throw std::invalid_argument("image size must be positive, got " + std::to_string(settings.width) + "x" +
+                                    std::to_string(settings.height));
+    if (settings.spp < 0) throw std::invalid_argument("samples per pixel must not be negative");
+    if (settings.firstSample < 0) throw std::invalid_argument("the first sample index must not be negative");
+    if (settings.maxDepth < 1) throw std::invalid_argument("the maximum depth must be at least 1");
+    impl_ = std::make_unique<Impl>(std::move(scene), std::move(settings));
+    Impl& im = *impl_;
+    im.scene = std::make_unique<RenderScene>(im.description);
+    if (im.scene->lights().empty())
+        throw SceneError(im.description->source +
+                         ": scene has no lights: add an emissive material, a KHR_lights_punctual light or an environment");
+    im.camera = im.settings.camera ? *im.settings.camera
+                : im.description->hasCamera ? im.description->camera
+                                            : framingCamera(im.scene->bounds());
+    im.cameraModel = std::make_unique<CameraModel>(im.camera, im.settings.width, im.settings.height);
+    im.integratorName = im.settings.integrator;
+    if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth);
+}
+
+RenderJob::~RenderJob() = default;
+
+void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress) {
+    Impl& im = *impl_;
+    const Clock::time_point start = Clock::now();
+    if (!im.integrator) {
+        const std::string chosen = im.pickIntegrator(cancel);
+        if (cancel.load()) return;
+        im.integrator = makeIntegrator(chosen, *im.scene, *im.cameraModel, im.settings.maxDepth);
+        im.integratorName = chosen;
+    }
+    const Clock::time_point renderStart = Clock::now();
+    const double pixels = double(im.settings.width) * im.settings.height;
+    RenderProgress progress;
+    progress.samplesTotal = im.settings.spp;
+    for (int done = 0; done < im.settings.spp; ++done) {
+        PassImage pass;
+        const uint64_t sampleIndex = uint64_t(im.settings.firstSample) + uint64_t(im.film.passes());
+        if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.seed, sampleIndex, im.arena,
+                        cancel, &progress.rays, &pass))
+            return;  // the unfinished pass is dropped: the film holds whole passes only
+        {
+            std::lock_guard<std::mutex> lock(im.filmMutex);
+            im.film.addPass(pass);
+        }
+        const double renderSeconds = std::max(secondsSince(renderStart), 1e-9);
+        progress.samplesDone = done + 1;
+        progress.elapsed = secondsSince(start);
+        progress.samplesPerSecond = pixels * progress.samplesDone / renderSeconds;
+        progress.raysPerSecond = double(progress.rays) / renderSeconds;
+        const double perPass = renderSeconds / progress.samplesDone;
+        progress.remaining = perPass * (im.settings.spp - progress.samplesDone);
+        const bool outOfTime = im.settings.timeLimit > 0.0 && progress.elapsed >= im.settings.timeLimit;
+        if (im.settings.timeLimit > 0.0) progress.remaining = std::min(progress.remaining, std::max(0.0, im.settings.timeLimit - progress.elapsed));
+        if (outOfTime) progress.remaining = 0.0;
+        if (onProgress) onProgress(progress);
+        if (outOfTime || cancel.load()) return;
+    }
+}
+
+FilmImage RenderJob::snapshot() const {
+    std::lock_guard<std::mutex> lock(impl_->filmMutex);
+    return impl_->film.image();
+}
+
+const std::string& RenderJob::integratorName() const { return impl_->integratorName; }
+
+}  // namespace woven
