@@ -31,7 +31,10 @@ float pow5(float x) { return (x * x) * (x * x) * x; }
 float log1mx(float x) { return x < 1e-3 ? -x * (1.0 + x * (0.5 + x * (1.0 / 3.0))) : log(1.0 - x); }
 
 // (n.h)^N from sin^2(theta_h).
-float cosPowN(float sin2, float N) { return exp(N * 0.5 * log1mx(min(sin2, 1.0))); }
+float cosPowN(float sin2, float N) {
+    if (N <= 0.0) return 1.0;  // not 0 * log(0) where h reaches the horizon
+    return exp(N * 0.5 * log1mx(min(sin2, 1.0)));
+}
 
 vec3 ashikhminShirley(Lobe l, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
@@ -41,7 +44,7 @@ vec3 ashikhminShirley(Lobe l, vec3 wo, vec3 wi) {
     float len = length(H);
     if (!(len > 1e-12)) return diffuse;
     vec3 h = H / len;
-    float hk = max(dot(h, wi), 1e-12);
+    float hk = 0.5 * len;  // h.k = |k1 + k2| / 2: reciprocal, and exact as h.k -> 0
     float fresnel = l.rs + (1.0 - l.rs) * pow5(1.0 - hk);
     float sx = h.x * h.x, sy = h.y * h.y, s = sx + sy;
     float N = s > 0.0 ? (l.ex * sx + l.ey * sy) / s : l.ex;

@@ -17,16 +17,22 @@ uniform float standardExponent;
 uniform float standardRs;
 #endif
 
+// A projection keeps a fair part of its vector, else it is rounding noise (as core).
+bool usableProjection(vec3 projected, vec3 original) {
+    float l2 = dot(projected, projected);
+    return l2 > 1e-10 * dot(original, original) && l2 > 1e-30 && !isinf(l2);
+}
+
 // As core's tangentFrame(): x along +u, y along +v, both projected into the plane of n.
 Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
     vec3 t = dpdu - dot(dpdu, n) * n;
     vec3 b = dpdv - dot(dpdv, n) * n;
-    if (dot(t, t) > 1e-24) {
+    if (usableProjection(t, dpdu)) {
         vec3 x = normalize(t);
         b -= dot(b, x) * x;
-        return Frame(x, dot(b, b) > 1e-24 ? normalize(b) : cross(n, x), n);
+        return Frame(x, usableProjection(b, dpdv) ? normalize(b) : cross(n, x), n);
     }
-    if (dot(b, b) > 1e-24) {
+    if (usableProjection(b, dpdv)) {
         vec3 y = normalize(b);
         return Frame(cross(y, n), y, n);
     }
