@@ -7,5 +7,6 @@ namespace woven {
 void addPatternCommand(CLI::App& app);
 void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
 void addPreviewCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 }  // namespace woven

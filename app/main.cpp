@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     woven::addPatternCommand(app);
     woven::addBsdfCommands(app);
     woven::addPreviewCommand(app);
+    woven::addRenderCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

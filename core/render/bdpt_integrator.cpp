@@ -240,7 +240,15 @@ int BdptIntegrator::lightSubpath(Rng& rng, SampleSink& sink, Vertex* path) const
     v.pdfFwd = le->pdfPos * pmf;
     const float cosLight = light.isDeltaPosition() ? 1.0f : std::abs(glm::dot(le->nLight, le->ray.d));
     const glm::vec3 beta = le->L * (cosLight / (pmf * le->pdfPos * le->pdfDir));
-    const int count = randomWalk(le->ray, beta, le->pdfDir, maxDepth_, true, rng, sink, path + 1);
+    Ray ray = le->ray;
+    if (light.type() == Light::Type::Triangle) {
+        // Leave an area light like any surface, lifted off it, or the ray may hit its own triangle.
+        SurfaceHit origin;
+        origin.p = ray.o;
+        origin.ng = v.n;
+        ray = scene_.spawnRay(origin, ray.d);
+    }
+    const int count = randomWalk(ray, beta, le->pdfDir, maxDepth_, true, rng, sink, path + 1);
 
     if (light.isInfinite()) {
         // The walk converted pdfDir as if from a point; from a disk of parallel rays the first

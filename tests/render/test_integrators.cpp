@@ -199,5 +199,201 @@ TEST_P(Furnace, PointLightOverClothPlaneGivesClosedFormDirectLight) {
 
 INSTANTIATE_TEST_SUITE_P(BothIntegrators, Furnace, ::testing::Values("path", "bdpt"));
 
+// A closed box lit by a small area light under its ceiling and a point light, a woven cloth with
+// gaps on its floor, grey walls: most of the light arrives after one or more bounces.
+std::shared_ptr<SceneDescription> clothInBoxScene() {
+    Material walls;
+    walls.name = "walls";
+    walls.baseColor = glm::vec3(0.6f, 0.6f, 0.55f);
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.baseColor = glm::vec3(0.0f);
+    lamp.emission = glm::vec3(12.0f, 10.0f, 8.0f);
+    lamp.doubleSided = false;
+    Material cloth;
+    cloth.name = "cloth";
+    WovenParams p;  // the paper's look: e_x = 100, e_y = 2, twill, round yarns with gaps
+    p.pattern = {1, 2, 1};
+    p.cy = 0.75f;
+    p.yarn_width = p.warp_width = 0.8f;
+    p.noise = 0.3f;
+    cloth.woven = p;
+    std::vector<Mesh> meshes = test::boxInside({-1, 0, -1}, {1, 2, 1}, 0);
+    // The lamp faces down: counter-clockwise seen from below.
+    meshes.push_back(quad("lamp", {-0.25f, 1.98f, -0.25f}, {0.25f, 1.98f, -0.25f}, {0.25f, 1.98f, 0.25f},
+                          {-0.25f, 1.98f, 0.25f}, 1));
+    meshes.push_back(quad("cloth", {-0.8f, 0.05f, 0.8f}, {0.8f, 0.05f, 0.8f}, {0.8f, 0.05f, -0.8f},
+                          {-0.8f, 0.05f, -0.8f}, 2, 12.0f));
+    auto scene = sceneWith(std::move(meshes), {walls, lamp, cloth});
+    PunctualLight bulb;
+    bulb.position = {0.6f, 1.5f, -0.6f};
+    bulb.intensity = glm::vec3(0.5f);
+    scene->lights.push_back(bulb);
+    scene->camera.cameraToWorld =
+        glm::inverse(glm::lookAt(glm::vec3(0.0f, 1.2f, 0.95f), glm::vec3(0.0f, 0.4f, -0.5f), glm::vec3(0, 1, 0)));
+    scene->camera.yfov = 1.2f;
+    scene->hasCamera = true;
+    return scene;
+}
+
+FilmImage renderRange(std::shared_ptr<const SceneDescription> scene, const char* integrator, int firstSample, int spp,
+                      int width, int height, int threads = 0) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.spp = spp;
+    settings.firstSample = firstSample;
+    settings.integrator = integrator;
+    settings.seed = 11;
+    settings.threads = threads;
+    return render(std::move(scene), settings);
+}
+
+// Region means of an integrator with their standard errors, from two renders of disjoint sample
+// ranges: per pixel, (a - b)^2 / 4 estimates the variance of the mean of the two.
+struct RegionEstimate {
+    std::vector<glm::dvec3> mean, standardError;
+};
+RegionEstimate regionMeans(const FilmImage& a, const FilmImage& b, int regionsX, int regionsY) {
+    const int width = a.radiance.width, height = a.radiance.height;
+    const int rw = width / regionsX, rh = height / regionsY;
+    RegionEstimate e;
+    for (int ry = 0; ry < regionsY; ++ry)
+        for (int rx = 0; rx < regionsX; ++rx) {
+            glm::dvec3 sum(0.0), variance(0.0);
+            for (int y = ry * rh; y < (ry + 1) * rh; ++y)
+                for (int x = rx * rw; x < (rx + 1) * rw; ++x) {
+                    const glm::dvec3 va(a.radiance.at(x, y)), vb(b.radiance.at(x, y));
+                    sum += 0.5 * (va + vb);
+                    variance += (va - vb) * (va - vb) / 4.0;
+                }
+            const double n = double(rw) * rh;
+            e.mean.push_back(sum / n);
+            e.standardError.push_back(glm::sqrt(variance) / n);
+        }
+    return e;
+}
+
+// Both integrators estimate the same image. Region means of BDPT and PT must agree within 4.5
+// combined standard errors (measured, 36 comparisons: a false alarm for correct integrators has
+// probability ~2e-4, the seeds are fixed) plus 1 % for the standard errors' own uncertainty with
+// heavy-tailed glossy paths. A wrong MIS weight, a missing strategy or a wrong splat scale shifts
+// regions by far more: the indirect light is about half of the image here.
+TEST(BdptAgainstPathTracer, AgreeOnIndirectlyLitWovenClothInABox) {
+    const auto scene = clothInBoxScene();
+    constexpr int kWidth = 48, kHeight = 36;
+    const RegionEstimate path = regionMeans(renderRange(scene, "path", 0, 48, kWidth, kHeight),
+                                            renderRange(scene, "path", 48, 48, kWidth, kHeight), 4, 3);
+    const RegionEstimate bdpt = regionMeans(renderRange(scene, "bdpt", 0, 24, kWidth, kHeight),
+                                            renderRange(scene, "bdpt", 24, 24, kWidth, kHeight), 4, 3);
+    for (size_t r = 0; r < path.mean.size(); ++r)
+        for (int c = 0; c < 3; ++c) {
+            const double se = std::hypot(path.standardError[r][c], bdpt.standardError[r][c]);
+            EXPECT_GT(path.mean[r][c], 0.01) << "region " << r << " is dark: the test would prove nothing";
+            EXPECT_LE(std::abs(path.mean[r][c] - bdpt.mean[r][c]), 4.5 * se + 0.01 * path.mean[r][c])
+                << "region " << r << " channel " << c << ": path " << path.mean[r][c] << " +- " << path.standardError[r][c]
+                << ", bdpt " << bdpt.mean[r][c] << " +- " << bdpt.standardError[r][c];
+        }
+}
+
+class Reproducible : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Reproducible, SameSeedGivesTheSameImageWhateverTheThreadCount) {
+    const auto scene = clothInBoxScene();
+    const FilmImage a = renderRange(scene, GetParam(), 0, 3, 24, 18, 1);
+    const FilmImage b = renderRange(scene, GetParam(), 0, 3, 24, 18, 2);
+    const FilmImage c = renderRange(scene, GetParam(), 0, 3, 24, 18, 0);
+    EXPECT_EQ(a.radiance.pixels, b.radiance.pixels);
+    EXPECT_EQ(a.radiance.pixels, c.radiance.pixels);
+    EXPECT_EQ(a.sampleCount, std::vector<float>(24 * 18, 3.0f));
+    const FilmImage other = renderRange(scene, GetParam(), 3, 3, 24, 18);
+    EXPECT_NE(a.radiance.pixels, other.radiance.pixels) << "another sample range must give other samples";
+}
+
+// Rendering samples [0, 3) and [3, 8) separately and merging by counts is the render of [0, 8):
+// only the order of the float additions differs.
+TEST_P(Reproducible, DisjointSampleRangesMergedByCountsEqualTheUnion) {
+    const auto scene = clothInBoxScene();
+    const FilmImage first = renderRange(scene, GetParam(), 0, 3, 24, 18);
+    const FilmImage second = renderRange(scene, GetParam(), 3, 5, 24, 18);
+    const FilmImage all = renderRange(scene, GetParam(), 0, 8, 24, 18);
+    double maxValue = 0.0;
+    for (const glm::vec3& v : all.radiance.pixels) maxValue = std::max<double>(maxValue, glm::max(v.x, glm::max(v.y, v.z)));
+    ASSERT_GT(maxValue, 0.0);
+    for (size_t i = 0; i < all.radiance.pixels.size(); ++i) {
+        const float n1 = first.sampleCount[i], n2 = second.sampleCount[i];
+        ASSERT_EQ(n1 + n2, all.sampleCount[i]);
+        const glm::vec3 merged = (first.radiance.pixels[i] * n1 + second.radiance.pixels[i] * n2) / (n1 + n2);
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(merged[c], all.radiance.pixels[i][c], 1e-5 * maxValue + 1e-5 * std::abs(merged[c])) << "pixel " << i;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothIntegrators, Reproducible, ::testing::Values("path", "bdpt"));
+
+TEST(RenderJob, CancelKeepsWholePassesOnly) {
+    RenderSettings settings;
+    settings.width = 24;
+    settings.height = 18;
+    settings.spp = 100;
+    settings.integrator = "bdpt";
+    RenderJob job(clothInBoxScene(), settings);
+    std::atomic<bool> cancel{false};
+    int calls = 0;
+    job.run(cancel, [&](const RenderProgress& p) {
+        ++calls;
+        EXPECT_EQ(p.samplesDone, calls);
+        EXPECT_EQ(p.samplesTotal, 100);
+        EXPECT_GT(p.rays, 0u);
+        if (p.samplesDone == 2) cancel = true;
+    });
+    EXPECT_EQ(calls, 2);
+    EXPECT_EQ(job.snapshot().sampleCount, std::vector<float>(24 * 18, 2.0f));
+}
+
+TEST(RenderJob, TimeLimitStopsAfterThePassThatCrossesIt) {
+    RenderSettings settings;
+    settings.width = 24;
+    settings.height = 18;
+    settings.spp = 1000;
+    settings.timeLimit = 1e-6;  // crossed by the first pass
+    settings.integrator = "path";
+    RenderJob job(clothInBoxScene(), settings);
+    std::atomic<bool> cancel{false};
+    job.run(cancel);
+    EXPECT_EQ(job.snapshot().sampleCount, std::vector<float>(24 * 18, 1.0f));
+}
+
+TEST(RenderJob, AutoResolvesToAnIntegratorAndRecordsIt) {
+    RenderSettings settings;
+    settings.width = 24;
+    settings.height = 18;
+    settings.spp = 1;
+    RenderJob job(clothInBoxScene(), settings);
+    EXPECT_EQ(job.integratorName(), "auto");
+    std::atomic<bool> cancel{false};
+    job.run(cancel);
+    EXPECT_TRUE(job.integratorName() == "path" || job.integratorName() == "bdpt") << job.integratorName();
+}
+
+TEST(RenderJob, SceneWithoutLightsIsAnErrorNamingTheFile) {
+    auto scene = clothPlaneScene();
+    try {
+        RenderJob job(scene, RenderSettings{});
+        FAIL() << "a scene without lights was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("test.gltf"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("scene has no lights"), std::string::npos) << e.what();
+    }
+}
+
+TEST(RenderJob, UnknownIntegratorIsRejected) {
+    auto scene = clothPlaneScene();
+    scene->environment.color = glm::vec3(1.0f);
+    RenderSettings settings;
+    settings.integrator = "photon";
+    EXPECT_THROW(RenderJob(scene, settings), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace woven

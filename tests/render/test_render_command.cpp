@@ -1,0 +1,180 @@
+// `woven render` as a user runs it: a real glTF file on disk, the real executable in a child
+// process, its exit code, its messages and the files it leaves.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "../scene/gltf_builder.h"
+#include "../scene/temp_dir.h"
+#include "image_io.h"
+
+namespace woven {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Starts `woven args...` with stdout and stderr to files in `dir`; returns its pid.
+pid_t spawnWoven(const std::vector<std::string>& args, const test::TempDir& dir) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
+        if (!freopen(out.c_str(), "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(127);
+        std::vector<char*> argv{const_cast<char*>(WOVEN_EXECUTABLE)};
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(WOVEN_EXECUTABLE, argv.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+Result waitFor(pid_t pid, const test::TempDir& dir) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    Result r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    r.out = readText(dir.file("stdout.txt"));
+    r.err = readText(dir.file("stderr.txt"));
+    return r;
+}
+
+Result runWoven(const std::vector<std::string>& args, const test::TempDir& dir) { return waitFor(spawnWoven(args, dir), dir); }
+
+// A floor quad of material "cloth" (woven through WOVEN_fabric-free glTF: made woven on the
+// command line), a ceiling lamp when `withLamp`, and a camera looking at the floor.
+void writeScene(const std::string& path, bool withLamp, bool nanVertex = false) {
+    test::GltfBuilder b;
+    auto addQuad = [&](std::vector<glm::vec3> p, int material) {
+        const std::vector<glm::vec2> uv{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}, {"TEXCOORD_0", b.addVec2(uv)}}},
+                                    {"indices", b.addIndices({0, 1, 2, 0, 2, 3})},
+                                    {"material", material}});
+        return b.addNode({{"mesh", mesh}});
+    };
+    const int cloth = b.addMaterial({{"name", "cloth"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1.0}}}}});
+    const float nan = std::nanf("");
+    std::vector<int> roots{addQuad({{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {nanVertex ? nan : -1.0f, 0, -1}}, cloth)};
+    if (withLamp) {
+        const int lamp = b.addMaterial({{"name", "lamp"}, {"emissiveFactor", {1.0, 1.0, 1.0}}});
+        roots.push_back(addQuad({{-0.5f, 2, -0.5f}, {0.5f, 2, -0.5f}, {0.5f, 2, 0.5f}, {-0.5f, 2, 0.5f}}, lamp));  // facing down
+    }
+    b.json()["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}};
+    // At (0, 1, 2.5) looking down the -z axis, tilted 25 degrees down towards the floor.
+    roots.push_back(b.addNode({{"camera", 0}, {"translation", {0.0, 1.0, 2.5}}, {"rotation", {-0.2164396, 0.0, 0.0, 0.976296}}}));
+    b.setScene(roots);
+    b.writeGltf(path, test::GltfBuilder::Storage::DataUri);
+}
+
+TEST(RenderCommand, RendersExrWithSampleCountsAndPngAndReportsSpeed) {
+    test::TempDir dir;
+    writeScene(dir.file("scene.gltf"), true);
+    const Result r = runWoven({"render", dir.file("scene.gltf"), "--spp", "3", "--width", "32", "--height", "24",
+                               "--integrator", "path", "--woven", "cloth={\"ex\":50,\"pattern\":[1,2,1]}",
+                               "--out", dir.file("out.exr")}, dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("integrator path"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rays/s"), std::string::npos) << r.out;
+    const ExrImage exr = readExr(dir.file("out.exr"));
+    ASSERT_EQ(exr.image.width, 32);
+    ASSERT_EQ(exr.image.height, 24);
+    EXPECT_EQ(exr.sampleCount, std::vector<float>(32 * 24, 3.0f));
+    double sum = 0.0;
+    for (const glm::vec3& p : exr.image.pixels) sum += p.r + p.g + p.b;
+    EXPECT_GT(sum, 0.0) << "the lit floor must show";
+
+    const Result png = runWoven({"render", dir.file("scene.gltf"), "--spp", "1", "--width", "16", "--height", "12",
+                                 "--integrator", "bdpt", "--out", dir.file("out.png")}, dir);
+    ASSERT_EQ(png.exitCode, 0) << png.err;
+    const Image image = readImage(dir.file("out.png"));
+    EXPECT_EQ(image.width, 16);
+    EXPECT_EQ(image.height, 12);
+}
+
+// Each bad input: a non-zero exit, a message naming the file and the problem, no output file.
+void expectFailure(const Result& r, const std::string& file, const std::string& problem, const test::TempDir& dir) {
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("out.exr")));
+    for (const auto& entry : fs::directory_iterator(dir.path()))
+        EXPECT_EQ(entry.path().extension(), entry.path().extension() == ".exr" ? ".none" : entry.path().extension())
+            << "left behind: " << entry.path();
+}
+
+TEST(RenderCommand, MissingSceneFileIsAnErrorNamingIt) {
+    test::TempDir dir;
+    const Result r = runWoven({"render", dir.file("nothere.gltf"), "--out", dir.file("out.exr")}, dir);
+    expectFailure(r, "nothere.gltf", "", dir);
+}
+
+TEST(RenderCommand, SceneWithoutLightsIsAnErrorNamingIt) {
+    test::TempDir dir;
+    writeScene(dir.file("dark.gltf"), false);
+    const Result r = runWoven({"render", dir.file("dark.gltf"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
+    expectFailure(r, "dark.gltf", "scene has no lights", dir);
+}
+
+TEST(RenderCommand, NanVertexIsAnErrorNamingTheFile) {
+    test::TempDir dir;
+    writeScene(dir.file("nan.gltf"), true, true);
+    const Result r = runWoven({"render", dir.file("nan.gltf"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
+    expectFailure(r, "nan.gltf", "NaN", dir);
+}
+
+TEST(RenderCommand, BadWovenOptionIsAnErrorNamingFileMaterialAndField) {
+    test::TempDir dir;
+    writeScene(dir.file("scene.gltf"), true);
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"curtain={\"ex\":10}", "curtain"},          // no such material
+        {"cloth={\"ex\":-5}", "ex"},                 // out of range
+        {"cloth={\"ex\":", "not valid JSON"},       // malformed
+        {"cloth", "NAME=JSON"}};                     // no parameters
+    for (const auto& [option, problem] : cases) {
+        const Result r = runWoven({"render", dir.file("scene.gltf"), "--spp", "1", "--woven", option, "--out", dir.file("out.exr")}, dir);
+        expectFailure(r, "scene.gltf", problem, dir);
+    }
+}
+
+TEST(RenderCommand, InterruptWritesWhatItHasUnderAPartialName) {
+    test::TempDir dir;
+    writeScene(dir.file("scene.gltf"), true);
+    const pid_t pid = spawnWoven({"render", dir.file("scene.gltf"), "--spp", "100000", "--width", "32", "--height", "24",
+                                  "--integrator", "path", "--out", dir.file("out.exr")}, dir);
+    // Wait for the first progress line (a pass is done), then press Ctrl-C.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (readText(dir.file("stderr.txt")).find("spp") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    kill(pid, SIGINT);
+    const Result r = waitFor(pid, dir);
+    EXPECT_EQ(r.exitCode, 130) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("out.exr")));
+    ASSERT_TRUE(fs::exists(dir.file("out.partial.exr"))) << r.err;
+    const ExrImage exr = readExr(dir.file("out.partial.exr"));
+    ASSERT_EQ(exr.sampleCount.size(), size_t(32 * 24));
+    EXPECT_GE(exr.sampleCount[0], 1.0f);
+    EXPECT_LT(exr.sampleCount[0], 100000.0f);
+    for (float n : exr.sampleCount) EXPECT_EQ(n, exr.sampleCount[0]) << "whole passes only";
+}
+
+}  // namespace
+}  // namespace woven
