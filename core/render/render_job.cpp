@@ -89,8 +89,8 @@ struct RenderJob::Impl {
           arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic),
           film(settings.width, settings.height) {}
 
-    // The efficiency (1 / (relative variance x time) per pass) of each integrator on a
-    // low-resolution version of the frame decides "auto".
+    // "auto": the more efficient integrator (1 / (variance x time) per pass) in a pilot of
+    // each on a low-resolution version of the frame.
     std::string pickIntegrator(const std::atomic<bool>& cancel);
 };
 
@@ -106,10 +106,13 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
     // integrator has spent kPilotSeconds.
     constexpr int kMinPasses = 4, kMaxPasses = 16;
     constexpr double kPilotSeconds = 1.5;
-    std::string best;
-    double bestEfficiency = -1.0;
-    for (const char* name : {"path", "bdpt"}) {
-        const auto candidate = makeIntegrator(name, *scene, pilotModel, settings.maxDepth);
+    struct Pilot {
+        const char* name;
+        double mean = 0.0, variance = 0.0, secondsPerPass = 0.0;  // per pass, over the image
+    };
+    Pilot pilots[2] = {{"path"}, {"bdpt"}};
+    for (Pilot& pilot : pilots) {
+        const auto candidate = makeIntegrator(pilot.name, *scene, pilotModel, settings.maxDepth);
         std::vector<double> sum(size_t(width) * height, 0.0), sumSq(sum.size(), 0.0);
         const Clock::time_point start = Clock::now();
         int passes = 0;
@@ -128,24 +131,23 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
             }
             ++passes;
         }
-        const double secondsPerPass = secondsSince(start) / passes;
-        double mean = 0.0, variance = 0.0;
+        pilot.secondsPerPass = secondsSince(start) / passes;
         for (size_t i = 0; i < sum.size(); ++i) {
             const double m = sum[i] / passes;
-            mean += m;
-            variance += std::max(0.0, (sumSq[i] - passes * m * m) / (passes - 1));
+            pilot.mean += m;
+            pilot.variance += std::max(0.0, (sumSq[i] - passes * m * m) / (passes - 1));
         }
-        mean /= double(sum.size());
-        variance /= double(sum.size());
-        // Relative to the image's mean brightness, so that the choice does not hang on units.
-        const double relativeVariance = mean > 0.0 ? variance / (mean * mean) : variance;
-        const double efficiency = 1.0 / (std::max(relativeVariance, 1e-30) * secondsPerPass);
-        if (efficiency > bestEfficiency) {
-            bestEfficiency = efficiency;
-            best = name;
-        }
+        pilot.mean /= double(sum.size());
+        pilot.variance /= double(sum.size());
     }
-    return best;
+    // Both estimate the same image. One that found far less light than the other has missed
+    // paths it samples rarely, and its variance estimate is meaningless (zero when it found
+    // none): the other wins. Otherwise the efficiency 1 / (variance x time) decides.
+    const Pilot& path = pilots[0];
+    const Pilot& bdpt = pilots[1];
+    if (path.mean < 0.5 * bdpt.mean) return bdpt.name;
+    if (bdpt.mean < 0.5 * path.mean) return path.name;
+    return path.variance * path.secondsPerPass <= bdpt.variance * bdpt.secondsPerPass ? path.name : bdpt.name;
 }
 
 RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {

@@ -21,7 +21,7 @@ struct RenderSettings {
     std::string integrator = "auto";  // "bdpt", "path" or "auto"
     uint64_t seed = 0;
     int threads = 0;           // 0 = all cores
-    int maxDepth = 8;          // path vertices after the camera
+    int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
     std::optional<Camera> camera;  // overrides the scene's
 };
 
