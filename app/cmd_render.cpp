@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "image_io.h"
+#include "make_woven.h"
 #include "progress_bar.h"
 #include "render_job.h"
 #include "scene_loader.h"
@@ -64,33 +65,28 @@ std::string partialName(const std::string& path) {
     return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
 }
 
-// --woven NAME=JSON: material NAME becomes woven with these parameters (on top of its woven
-// parameters when it already has them).
+// --woven NAME=JSON: material NAME ("*": every material) becomes woven with these parameters,
+// on top of the woven parameters it already has.
 void applyWovenOption(SceneDescription& scene, const std::string& option) {
     const size_t eq = option.find('=');
-    const std::string where = scene.source + ": --woven " + option.substr(0, eq);
     if (eq == std::string::npos || eq == 0)
         throw SceneError(scene.source + ": --woven '" + option + "': expected NAME=JSON, e.g. cloth='{\"ex\":100}'");
     const std::string name = option.substr(0, eq);
-    Material* material = nullptr;
-    for (Material& m : scene.materials)
-        if (m.name == name) material = &m;
-    if (!material) {
-        std::string names;
-        for (const Material& m : scene.materials) names += (names.empty() ? "" : ", ") + ("'" + m.name + "'");
-        throw SceneError(where + ": no material of that name (materials: " + (names.empty() ? "none" : names) + ")");
-    }
+    const std::string where = scene.source + ": --woven " + name;
+    const Material& first = scene.materials[size_t(selectMaterials(scene, name).front())];
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(option.substr(eq + 1));
     } catch (const std::exception& e) {
         throw SceneError(where + ": not valid JSON: " + e.what());
     }
+    WovenParams params;
     try {
-        material->woven = paramsFromJson(j, material->woven.value_or(WovenParams{}));
+        params = paramsFromJson(j, first.woven.value_or(WovenParams{}));
     } catch (const std::exception& e) {
         throw SceneError(where + ": " + e.what());
     }
+    makeWoven(scene, name, params);
 }
 
 void writeFilm(const std::string& path, const FilmImage& film) {
@@ -101,6 +97,14 @@ void writeFilm(const std::string& path, const FilmImage& film) {
         options.toneMap = ToneMap::Aces;
         writePng(path, film.radiance, options);
     }
+}
+
+std::string formatSeconds(double seconds) {
+    std::ostringstream s;
+    s.precision(3);
+    s << seconds << " s";
+    if (seconds >= 60.0) s << " (" << formatDuration(seconds) << ")";
+    return s.str();
 }
 
 std::string progressStatus(const RenderProgress& p, bool timeLimited) {
@@ -157,7 +161,7 @@ int runRender(RenderOptions o) {
     writeFilm(path, job.snapshot());
     std::cerr << (wasInterrupted ? "interrupted: wrote " : "wrote ") << path << "\n";
     std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp, " << settings.width << "x"
-              << settings.height << ", " << formatDuration(last.elapsed) << " (" << last.elapsed << " s), "
+              << settings.height << ", " << formatSeconds(last.elapsed) << ", "
               << formatCount(last.samplesPerSecond) << " samples/s, " << formatCount(last.raysPerSecond) << " rays/s\n";
     return wasInterrupted ? 130 : 0;
 }
