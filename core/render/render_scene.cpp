@@ -23,7 +23,8 @@ float maxAbs(const glm::vec3& v) { return std::max({std::abs(v.x), std::abs(v.y)
 
 // pbrt's gamma(n) = n u / (1 - n u), the relative error bound of n float operations. The
 // barycentric interpolation of p takes 7; the factor 4 covers Embree's own rounding when it
-// intersects from an origin this close to the triangle (the acne test measures the margin).
+// intersects from an origin this close to the triangle (measured with RenderSceneOffsets: a
+// factor of 1 leaks light into a closed box, 2 passes, 4 keeps a margin of two).
 constexpr float kUnitRoundoff = 0.5f * 1.1920929e-7f;
 constexpr float kPositionError = 4.0f * (7.0f * kUnitRoundoff) / (1.0f - 7.0f * kUnitRoundoff);
 // A shadow ray stops this fraction short of its target (pbrt-v3's ShadowEpsilon), or more when
@@ -273,7 +274,9 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
     const float crLen = glm::length(cr);
     hit.ng = crLen > 0.0f && std::isfinite(crLen) ? cr / crLen : -glm::normalize(dir);
     const glm::vec3 absSum = glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2);
-    hit.pError = kPositionError * glm::dot(glm::abs(hit.ng), absSum);
+    // The largest component, not just the one along ng: Embree's own rounding when it meets the
+    // triangle again mixes all three.
+    hit.pError = kPositionError * std::max({absSum.x, absSum.y, absSum.z});
 
     glm::vec3 nFile = hit.ng;  // the file's normal, unflipped: glTF's bitangent is built from it
     if (!mesh.normals.empty()) {
@@ -387,6 +390,16 @@ Ray RenderScene::spawnRay(const SurfaceHit& from, const glm::vec3& d) const {
     Ray ray;
     ray.o = from.p + (glm::dot(d, from.ng) < 0.0f ? -offset : offset) * from.ng;
     ray.d = d;
+    // Also pull the origin by the same bound towards the triangle's centroid: a hit that rounds
+    // onto the far side of an edge where two walls meet (a box's corner seen from inside) would
+    // otherwise start outside the closed surface and escape through the seam.
+    if (from.mesh >= 0 && from.triangle >= 0 && from.mesh < int(impl_->scene->meshes.size())) {
+        const Mesh& mesh = impl_->scene->meshes[size_t(from.mesh)];
+        const glm::uvec3 t = mesh.triangles[size_t(from.triangle)];
+        const glm::vec3 toCentroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f - from.p;
+        const float length = glm::length(toCentroid);
+        if (length > offset) ray.o += toCentroid * (offset / length);
+    }
     return ray;
 }
 

@@ -3,6 +3,7 @@
 // expected values come from geometry, not from the code under test.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "scene_description.h"
 
@@ -21,13 +22,20 @@ inline Mesh quad(const std::string& name, const glm::vec3& a, const glm::vec3& b
     return m;
 }
 
-// An axis-aligned box [lo, hi] of six quads whose fronts face inwards.
+// An axis-aligned box [lo, hi] of six quads (twelve triangles) whose fronts face inwards.
 inline std::vector<Mesh> boxInside(const glm::vec3& lo, const glm::vec3& hi, int material = -1) {
     const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
                             {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    return {quad("floor", p[0], p[1], p[5], p[4], material),  quad("ceiling", p[3], p[7], p[6], p[2], material),
-            quad("back", p[0], p[3], p[2], p[1], material),   quad("front", p[4], p[5], p[6], p[7], material),
-            quad("left", p[0], p[4], p[7], p[3], material),   quad("right", p[1], p[2], p[6], p[5], material)};
+    const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5}};
+    const char* names[6] = {"z-", "z+", "y-", "y+", "x-", "x+"};
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    std::vector<Mesh> walls;
+    for (int f = 0; f < 6; ++f) {
+        const glm::vec3 a = p[faces[f][0]], b = p[faces[f][1]], c = p[faces[f][2]], d = p[faces[f][3]];
+        const bool inwards = glm::dot(glm::cross(b - a, c - a), centre - a) > 0.0f;
+        walls.push_back(inwards ? quad(names[f], a, b, c, d, material) : quad(names[f], a, d, c, b, material));
+    }
+    return walls;
 }
 
 inline std::shared_ptr<SceneDescription> sceneWith(std::vector<Mesh> meshes, std::vector<Material> materials = {}) {
