@@ -287,7 +287,10 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
     hit.ns = glm::dot(nFile, hit.ng) < 0.0f ? -nFile : nFile;
 
     if (mesh.uvs.empty()) {
-        // No UVs: every point at uv (0, 0), tangents from an arbitrary frame around ng.
+        // No UVs: one uv for the whole mesh and tangents from an arbitrary frame around ng. The
+        // uv is (0, 0), or for woven cloth the middle of the first weave element, which is on a
+        // yarn: the gap filter needs UVs, so such cloth must be solid everywhere.
+        if (mesh.material >= 0 && woven[mesh.material]) hit.uv = 0.5f / woven[mesh.material]->params().repeat;
         const Frame f = Frame::fromNormal(hit.ng);
         hit.dpdu = f.x;
         hit.dpdv = f.y;
