@@ -499,7 +499,7 @@ TEST(RenderSceneOffsets, SpawnedRaysNeverRehitTheirOwnTriangle) {
     for (const glm::vec3 offset : {glm::vec3(0.0f), glm::vec3(1000.0f, -700.0f, 500.0f)}) {
         RenderScene scene(sceneWith({bumpySurface(150, offset)}));
         Rng rng(32);
-        int tested = 0;
+        int othersHit = 0;
         for (int i = 0; i < 20000; ++i) {
             const glm::vec2 xy = rng.uniform2();
             const auto hit = scene.intersect(rayDown(offset.x + xy.x, offset.y + xy.y, offset.z + 1.0f));
@@ -511,10 +511,12 @@ TEST(RenderSceneOffsets, SpawnedRaysNeverRehitTheirOwnTriangle) {
             const glm::vec3 d = f.toWorld({std::cos(elevation) * std::cos(phi), std::cos(elevation) * std::sin(phi),
                                            side * std::sin(elevation)});
             const auto again = scene.intersect(scene.spawnRay(*hit, d));
-            if (again) ASSERT_FALSE(again->triangle == hit->triangle) << "offset " << offset.x << " elevation " << elevation;
-            ++tested;
+            ASSERT_FALSE(again && again->triangle == hit->triangle) << "offset " << offset.x << " elevation " << elevation;
+            othersHit += again.has_value();
         }
-        EXPECT_EQ(tested, 20000);
+        // The bumps are steep enough that many grazing rays run into a neighbouring bump: the
+        // test exercises rays that stay close to the surface, not only ones that escape at once.
+        EXPECT_GT(othersHit, 5000);  // measured: about 14,000 of 20,000
     }
 }
 
