@@ -198,8 +198,9 @@ glm::vec3 Light::Le(const glm::vec3& dir) const {
     const Data& d = *data_;
     if (!d.image) return d.L;
     const glm::vec2 uv = equirectUv(rotateY(glm::normalize(dir), -d.rotation));
-    const int x = std::clamp(int(uv.x * d.image->width), 0, d.image->width - 1);
-    const int y = std::clamp(int(uv.y * d.image->height), 0, d.image->height - 1);
+    // fmin/fmax also map a NaN (from a zero direction) to a pixel rather than to undefined behaviour.
+    const int x = int(std::fmin(std::fmax(uv.x * d.image->width, 0.0f), float(d.image->width - 1)));
+    const int y = int(std::fmin(std::fmax(uv.y * d.image->height, 0.0f), float(d.image->height - 1)));
     return d.L * d.image->at(x, y);
 }
 

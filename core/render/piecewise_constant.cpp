@@ -60,7 +60,7 @@ int PiecewiseConstant1D::sampleDiscrete(float u, float* pmf, float* uRemapped) c
 float PiecewiseConstant1D::discretePmf(int index) const { return cdf_[index + 1] - cdf_[index]; }
 
 float PiecewiseConstant1D::pdf(float x) const {
-    const int i = std::clamp(int(x * size()), 0, size() - 1);
+    const int i = int(std::fmin(std::fmax(x * size(), 0.0f), float(size() - 1)));  // NaN -> 0
     return discretePmf(i) * size();
 }
 
@@ -81,7 +81,7 @@ glm::vec2 PiecewiseConstant2D::sample(const glm::vec2& u, float* pdf) const {
 }
 
 float PiecewiseConstant2D::pdf(const glm::vec2& p) const {
-    const int row = std::clamp(int(p.y * marginal_.size()), 0, marginal_.size() - 1);
+    const int row = int(std::fmin(std::fmax(p.y * marginal_.size(), 0.0f), float(marginal_.size() - 1)));
     return marginal_.pdf(p.y) * conditional_[row].pdf(p.x);
 }
 

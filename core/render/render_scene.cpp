@@ -360,6 +360,7 @@ RTCRay toRtcRay(const glm::vec3& o, const glm::vec3& d, float tMax) {
 // The fraction of a segment to drop at its far end so that it cannot reach the target's surface.
 float segmentEnd(const glm::vec3& from, const glm::vec3& target) {
     const float length = glm::length(target - from);
+    if (!(length > 0.0f)) return 0.0f;  // nothing in between
     return 1.0f - std::max(kShadowEpsilon, kPositionError * maxAbs(target) / length);
 }
 }  // namespace

@@ -330,6 +330,9 @@ TEST(EnvironmentLight, ImageConventionAndRotation) {
     const Light turned = Light::environment(env);
     const glm::vec3 seenAtMinusZ = light.Le(glm::normalize(glm::vec3(0.01f, 0.3f, -1.0f)));
     EXPECT_EQ(turned.Le(glm::normalize(glm::vec3(-1.0f, 0.3f, -0.01f))), seenAtMinusZ);
+    // A degenerate direction still reads a pixel, never outside the image.
+    EXPECT_TRUE(std::isfinite(light.Le(glm::vec3(0.0f)).r));
+    EXPECT_TRUE(std::isfinite(light.pdfLi(glm::vec3(0.0f), glm::vec3(0.0f), {}, {})));
 }
 
 TEST(EnvironmentLight, ConstantColourIsUniform) {
