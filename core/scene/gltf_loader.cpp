@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -91,8 +92,26 @@ private:
         std::cerr << "warning: " << path_ << ": " << message << "\n";
     }
 
+    // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
+    nlohmann::json jsonPart() const {
+        std::ifstream in(path_, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0) {
+            uint32_t length = 0;
+            std::memcpy(&length, bytes.data() + 12, 4);
+            bytes = bytes.substr(20, std::min<size_t>(length, bytes.size() - 20));
+        }
+        return nlohmann::json::parse(bytes, nullptr, false);
+    }
+
     void readModel() {
         if (!std::filesystem::is_regular_file(path_)) fail("no such file");
+        // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
+        const nlohmann::json document = jsonPart();
+        if (document.is_object() && document.contains("extensionsRequired") && document["extensionsRequired"].is_array())
+            for (const auto& name : document["extensionsRequired"])
+                if (name.is_string() && kCompressionExtensions.count(name.get<std::string>()))
+                    failCompressed(name.get<std::string>());
         tinygltf::TinyGLTF reader;
         reader.SetImageLoader(keepEncodedImage, &encodedImages_);
         reader.SetStoreOriginalJSONForExtrasAndExtensions(true);
@@ -114,12 +133,14 @@ private:
         return in.gcount() == 4 && std::string(magic, 4) == "glTF";
     }
 
+    [[noreturn]] void failCompressed(const std::string& extension) const {
+        fail("uses " + extension + " mesh compression, which woven does not decode; save the file without mesh compression");
+    }
+
     void checkExtensions() {
         for (const std::string& name : model_.extensionsRequired) {
             if (kSupportedExtensions.count(name)) continue;
-            if (kCompressionExtensions.count(name))
-                fail("uses " + name + " mesh compression, which woven does not decode; "
-                     "save the file without mesh compression");
+            if (kCompressionExtensions.count(name)) failCompressed(name);
             fail("requires the extension " + name + ", which woven does not support");
         }
         for (const std::string& name : model_.extensionsUsed)
