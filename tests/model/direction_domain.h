@@ -32,14 +32,15 @@ std::unique_ptr<DirectionDomain> sphericalDomain();
 // (about 0.01 rad wide) into one cell and test nothing.
 std::unique_ptr<DirectionDomain> halfVectorDomain(const glm::dvec3& wo, double scaleX, double scaleY);
 
-// Integral of g(wi) over each cell of a res x res grid of the domain (Gauss-Legendre of the
-// given order on `sub` x `sub` sub-cells), row-major with x fastest.
+// Integral of g(wi) over each cell of a res x res grid of the domain, row-major with x fastest:
+// Gauss-Legendre of the given order, each cell split into quarters (up to maxDepth times) until
+// the quarters agree with the whole to a relative 1e-4 (absolute 1e-9).
 std::vector<double> integrateCells(const DirectionDomain& domain, const std::function<double(const glm::dvec3&)>& g,
-                                   int res, int sub = 2, int order = 5);
+                                   int res, int maxDepth = 4, int order = 5);
 
 // The integral of g over the whole domain.
 double integrateDomain(const DirectionDomain& domain, const std::function<double(const glm::dvec3&)>& g,
-                       int res = 64, int sub = 2, int order = 5);
+                       int res = 64, int maxDepth = 4, int order = 5);
 
 struct ChiSquareOutcome {
     bool passed;
@@ -50,8 +51,10 @@ struct ChiSquareOutcome {
 };
 
 // Pearson's test of observed cell counts against expected ones. Cells whose expected count is
-// below 5 are pooled (smallest first) until the pool reaches 5, as in pbrt-v4's chi2test; a cell
-// with no expected count but observed samples fails at once (samples outside the support).
+// below 5 are pooled (smallest first) until the pool reaches 5, as in pbrt-v4's chi2test. A cell
+// with observed samples but an expected count of 0 goes into the pool too: numerical
+// integration can miss a sliver of support cut by the horizon; whether a sample lies in the
+// support is for the caller to check pointwise (pdf(wi) > 0).
 ChiSquareOutcome chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected,
                                double significance);
 
