@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "demo_scene.h"
+#include "final_render.h"
 #include "headless_gl.h"
 #include "image_io.h"
 #include "orbit_camera.h"
@@ -23,6 +24,7 @@ struct PreviewCommandOptions {
     int width = 960, height = 540;
     float exposure = 0.0f;
     bool noFilter = false;
+    int spp = 16;
 };
 
 SceneDescription openScene(const std::string& path) { return path.empty() ? wavyClothScene() : loadScene(path); }
@@ -31,6 +33,21 @@ void runHeadless(const PreviewCommandOptions& o) {
     if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png");
     const SceneDescription scene = openScene(o.scene);
     const Camera camera = OrbitCamera::forScene(scene).camera();
+    PngOptions png;
+    png.exposure = o.exposure;
+    if (o.final) {  // the Render button's path: core's RenderJob for the preview's camera
+        RenderSettings settings;
+        settings.width = o.width;
+        settings.height = o.height;
+        settings.spp = o.spp;
+        settings.camera = camera;
+        FinalRender render;
+        render.start(scene, settings);
+        render.wait();
+        if (!render.error().empty()) throw std::runtime_error(render.error());
+        writePng(o.screenshot, render.latest()->radiance, png);
+        return;
+    }
     auto gl = HeadlessGl::create();
     PreviewRenderer renderer;
     renderer.setMeshes(scene);
@@ -38,8 +55,6 @@ void runHeadless(const PreviewCommandOptions& o) {
     options.exposure = o.exposure;
     options.filterWeave = !o.noFilter;
     renderer.render(scene, PreviewLights::fromScene(scene), camera, {o.width, o.height}, options);
-    PngOptions png;
-    png.exposure = o.exposure;
     writePng(o.screenshot, renderer.radiance(), png);
 }
 
@@ -55,6 +70,7 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
     cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
     cmd->add_option("--exposure", o->exposure, "Exposure in stops");
+    cmd->add_option("--spp", o->spp, "With --final: samples per pixel")->check(CLI::Range(1, 1 << 20));
     cmd->add_flag("--no-filter", o->noFilter, "Point-sample the weave even where it is finer than a pixel");
     cmd->callback([o] {
         if (!o->headless) throw std::invalid_argument("the window is not built yet: use --headless");

@@ -1,0 +1,77 @@
+#include "final_render.h"
+
+namespace woven {
+
+FinalRender::~FinalRender() { cancel(); }
+
+void FinalRender::start(const SceneDescription& scene, const RenderSettings& settings) {
+    cancel();
+    cancel_ = false;
+    running_ = true;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        progress_ = RenderProgress{0, settings.spp, 0.0, 0.0, 0.0};
+        snapshot_.reset();
+        fresh_ = false;
+        error_.clear();
+    }
+    auto shared = std::make_shared<const SceneDescription>(scene);
+    worker_ = std::thread([this, shared, settings] {
+        try {
+            RenderJob job(shared, settings);
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                integrator_ = job.integratorName();
+            }
+            job.run(cancel_, [&](const RenderProgress& p) {
+                FilmImage image = job.snapshot();
+                std::lock_guard<std::mutex> lock(mutex_);
+                progress_ = p;
+                snapshot_ = std::move(image);
+                fresh_ = true;
+            });
+        } catch (const std::exception& e) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = e.what();
+        }
+        running_ = false;
+    });
+}
+
+void FinalRender::cancel() {
+    cancel_ = true;
+    wait();
+}
+
+void FinalRender::wait() {
+    if (worker_.joinable()) worker_.join();
+}
+
+RenderProgress FinalRender::progress() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return progress_;
+}
+
+std::optional<FilmImage> FinalRender::newSnapshot() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!fresh_) return std::nullopt;
+    fresh_ = false;
+    return snapshot_;
+}
+
+std::optional<FilmImage> FinalRender::latest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return snapshot_;
+}
+
+std::string FinalRender::integrator() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return integrator_;
+}
+
+std::string FinalRender::error() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+}
+
+}  // namespace woven

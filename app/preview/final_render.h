@@ -1,0 +1,48 @@
+#pragma once
+// The Render button's job: core's RenderJob (BDPT or path tracing) for a copy of the scene, a
+// camera and a size, on a background thread, so the window stays responsive. The window polls
+// progress and the latest snapshot (one after each pass) and may cancel.
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "render_job.h"
+
+namespace woven {
+
+class FinalRender {
+public:
+    FinalRender() = default;
+    ~FinalRender();  // cancels and waits
+    FinalRender(const FinalRender&) = delete;
+    FinalRender& operator=(const FinalRender&) = delete;
+
+    // Cancels a running render first. The scene is copied: the user may keep editing.
+    void start(const SceneDescription& scene, const RenderSettings& settings);
+    void cancel();
+    // Blocks until the job has finished (or was cancelled).
+    void wait();
+
+    bool running() const { return running_; }
+    RenderProgress progress() const;
+    // The snapshot after the latest pass, once per pass: nullopt when there is nothing new.
+    std::optional<FilmImage> newSnapshot();
+    // The latest snapshot, whether or not it was taken before.
+    std::optional<FilmImage> latest() const;
+    std::string error() const;  // why the last job failed, empty if it did not
+    std::string integrator() const;  // the one RenderJob chose
+
+private:
+    std::thread worker_;
+    std::atomic<bool> cancel_{false}, running_{false};
+    mutable std::mutex mutex_;
+    RenderProgress progress_;
+    std::optional<FilmImage> snapshot_;
+    bool fresh_ = false;
+    std::string error_, integrator_;
+};
+
+}  // namespace woven
