@@ -1,0 +1,53 @@
+// Preview frame time (render + glFinish) of the default scene at 640x480 and 1280x720 through
+// headless GL (llvmpipe here; the GPU through EGL where there is one), with the woven features
+// compiled in or out.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "demo_scene.h"
+#include "headless_gl.h"
+#include "orbit_camera.h"
+#include "preview_renderer.h"
+#include "scene_loader.h"
+
+namespace woven {
+namespace {
+
+SceneDescription benchScene(bool features) {
+    const std::string file = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
+    SceneDescription scene = std::filesystem::exists(file) ? loadScene(file) : wavyClothScene();
+    for (Material& m : scene.materials)
+        if (m.woven && !features) {
+            m.woven->noise = 0.0f;
+            m.woven->crimp = 0.0f;
+            m.woven->yarn_width = m.woven->warp_width = 1.0f;
+        }
+    return scene;
+}
+
+void previewFrame(benchmark::State& state) {
+    static auto gl = HeadlessGl::create();
+    static bool printed = (std::cout << gl->description() << "\n", true);
+    (void)printed;
+    const SceneDescription scene = benchScene(state.range(2) != 0);
+    PreviewRenderer renderer;
+    renderer.setMeshes(scene);
+    const PreviewLights lights = PreviewLights::fromScene(scene);
+    const Camera camera = OrbitCamera::forScene(scene).camera();
+    const glm::ivec2 size(int(state.range(0)), int(state.range(1)));
+    renderer.render(scene, lights, camera, size, {});  // compiles the programs
+    glFinish();
+    for (auto _ : state) {
+        renderer.render(scene, lights, camera, size, {});
+        glFinish();
+    }
+}
+BENCHMARK(previewFrame)->Args({640, 480, 1})->Args({1280, 720, 1})->Args({640, 480, 0})->Args({1280, 720, 0})
+    ->ArgNames({"w", "h", "features"})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace woven
+
+BENCHMARK_MAIN();
