@@ -53,7 +53,7 @@ glm::vec3 meanEnvironmentRadiance(const Environment& env) {
 
 PreviewLights PreviewLights::fromScene(const SceneDescription& scene) {
     PreviewLights out;
-    out.ambient = meanEnvironmentRadiance(scene.environment);
+    out.ambient = out.background = meanEnvironmentRadiance(scene.environment);
     for (const PunctualLight& p : scene.lights) {
         if (int(out.lights.size()) == kMaxLights) break;
         PreviewLight l;

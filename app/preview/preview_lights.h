@@ -21,7 +21,8 @@ struct PreviewLight {
 struct PreviewLights {
     static constexpr int kMaxLights = 32;  // MAX_LIGHTS in lighting.glsl
     std::vector<PreviewLight> lights;
-    glm::vec3 ambient{0.0f};  // constant environment radiance
+    glm::vec3 ambient{0.0f};     // constant environment radiance lighting the surfaces
+    glm::vec3 background{0.0f};  // what rays that miss everything see (the same mean)
 
     // The scene's punctual lights, its emissive triangles (split into up to 4 samples each
     // while the budget of kMaxLights allows, merged into clusters when there are too many) and

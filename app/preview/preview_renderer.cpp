@@ -101,7 +101,7 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, size.x, size.y);
     // Rays that miss everything see the environment; its mean stands in for it here.
-    const glm::vec3 background = meanEnvironmentRadiance(scene.environment);
+    const glm::vec3 background = lights.background;
     glClearColor(background.r, background.g, background.b, 1.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
