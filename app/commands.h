@@ -8,5 +8,6 @@ void addPatternCommand(CLI::App& app);
 void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
 void addPreviewCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addConvergeCommand(CLI::App& app);
 
 }  // namespace woven

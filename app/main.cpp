@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     woven::addBsdfCommands(app);
     woven::addPreviewCommand(app);
     woven::addRenderCommand(app);
+    woven::addConvergeCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

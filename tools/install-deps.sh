@@ -6,7 +6,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libtinyexr-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
-  libgtest-dev libbenchmark-dev xvfb xauth
+  libgtest-dev libbenchmark-dev xvfb xauth gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do
