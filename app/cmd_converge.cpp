@@ -104,7 +104,7 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
 void plot(const std::string& csv, const std::string& png, const std::string& title) {
     // gnuplot draws the log-log plot; without it the CSV is still there.
     std::ostringstream cmd;
-    cmd << "gnuplot -e \"set terminal pngcairo size 640,420; set output '" << png << "'; "
+    cmd << "gnuplot -e \"set terminal pngcairo size 640,420 noenhanced; set output '" << png << "'; "
         << "set datafile separator ','; set logscale xy; set grid; set key top right; "
         << "set xlabel 'time (s)'; set ylabel 'relative RMSE'; set title '" << title << "'; "
         << "plot for [name in 'path bdpt'] '" << csv << "' using (strcol(1) eq name ? \\$2 : 1/0):5 "
