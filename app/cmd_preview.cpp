@@ -10,6 +10,7 @@
 #include "image_io.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
+#include "preview_window.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -25,6 +26,8 @@ struct PreviewCommandOptions {
     float exposure = 0.0f;
     bool noFilter = false;
     int spp = 16;
+    int frames = 0;
+    std::string windowScreenshot;
 };
 
 SceneDescription openScene(const std::string& path) { return path.empty() ? wavyClothScene() : loadScene(path); }
@@ -72,9 +75,18 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--exposure", o->exposure, "Exposure in stops");
     cmd->add_option("--spp", o->spp, "With --final: samples per pixel")->check(CLI::Range(1, 1 << 20));
     cmd->add_flag("--no-filter", o->noFilter, "Point-sample the weave even where it is finer than a pixel");
+    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->callback([o] {
-        if (!o->headless) throw std::invalid_argument("the window is not built yet: use --headless");
-        runHeadless(*o);
+        if (o->headless) return runHeadless(*o);
+        PreviewWindowOptions window;
+        window.scene = o->scene;
+        window.frames = o->frames;
+        window.screenshot = o->windowScreenshot;
+        window.width = o->width;
+        window.height = o->height;
+        window.spp = o->spp;
+        runPreviewWindow(window);
     });
 }
 

@@ -1,0 +1,476 @@
+#include "preview_window.h"
+
+#include <epoxy/gl.h>
+// epoxy must come first: GLFW would otherwise include the system GL header.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "demo_scene.h"
+#include "final_render.h"
+#include "gl_error.h"
+#include "image_io.h"
+#include "material_file.h"
+#include "orbit_camera.h"
+#include "preview_renderer.h"
+#include "scene_loader.h"
+#include "weave_presets.h"
+
+namespace woven {
+
+namespace {
+
+// ImGui's text fields edit fixed buffers.
+template <size_t N>
+void copyToBuffer(char (&buffer)[N], const std::string& text) {
+    std::snprintf(buffer, N, "%s", text.c_str());
+}
+
+bool hasExtension(const std::string& path, const char* ext) {
+    const size_t n = std::char_traits<char>::length(ext);
+    return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
+}
+
+// A window with the newest core context the driver gives, 4.5 down to 3.3.
+GLFWwindow* createWindow(int width, int height) {
+    static const int versions[][2] = {{4, 5}, {4, 1}, {3, 3}};
+    for (const auto& v : versions) {
+        glfwDefaultWindowHints();
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v[0]);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v[1]);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        if (GLFWwindow* window = glfwCreateWindow(width, height, "woven preview", nullptr, nullptr)) return window;
+    }
+    const char* why = nullptr;
+    glfwGetError(&why);
+    throw GlError(std::string("could not create an OpenGL 3.3+ core window: ") + (why ? why : "unknown GLFW error"));
+}
+
+// RGBA8 of `image` through the same display transform as writePng (exposure, clamp, sRGB).
+std::vector<uint8_t> displayBytes(const Image& image, float exposure) {
+    const float scale = std::exp2(exposure);
+    std::vector<uint8_t> bytes(image.pixels.size() * 4);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const float v = linearToSrgb(std::clamp(image.pixels[i][c] * scale, 0.0f, 1.0f));
+            bytes[4 * i + c] = uint8_t(std::lround(v * 255.0f));
+        }
+        bytes[4 * i + 3] = 255;
+    }
+    return bytes;
+}
+
+class PreviewWindow {
+public:
+    explicit PreviewWindow(const PreviewWindowOptions& options);
+    ~PreviewWindow();
+    void run();
+
+private:
+    void openScene(const std::string& path);
+    void handleMouse();
+    void drawPanel();
+    void drawMaterialControls(WovenParams& p);
+    void drawRenderControls();
+    void updateFinalTexture(const FilmImage& film);
+    void drawFinalImage();
+    void writeWindowScreenshot(const std::string& path);
+    WovenParams* editedMaterial();
+
+    static void onScroll(GLFWwindow* window, double, double dy);
+    static void onDrop(GLFWwindow* window, int count, const char** paths);
+
+    PreviewWindowOptions options_;
+    GLFWwindow* window_ = nullptr;
+    std::unique_ptr<PreviewRenderer> renderer_;
+    SceneDescription scene_;
+    std::string scenePath_;
+    PreviewLights lights_;
+    OrbitCamera camera_;
+    int materialIndex_ = -1;  // the woven material the panel edits
+    int presetIndex_ = -1;
+    float exposure_ = 0.0f;
+    bool filterWeave_ = true;
+    double scroll_ = 0.0;
+    std::vector<std::string> droppedPaths_;
+    glm::dvec2 lastCursor_{0.0};
+    std::string status_;
+    char materialPath_[512] = "material.json";
+    char imagePath_[512] = "render.png";
+
+    FinalRender final_;
+    std::optional<FilmImage> finalImage_;
+    GLuint finalTexture_ = 0;
+    bool showFinal_ = false;
+    int renderWidth_ = 640, renderHeight_ = 400, renderSpp_ = 64;
+};
+
+PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(options) {
+    if (!glfwInit()) {
+        const char* why = nullptr;
+        glfwGetError(&why);
+        throw GlError(std::string("could not initialise GLFW (no display? use --headless): ") +
+                      (why ? why : "unknown error"));
+    }
+    try {
+        window_ = createWindow(options.width, options.height);
+    } catch (...) {
+        glfwTerminate();
+        throw;
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    glfwSetWindowUserPointer(window_, this);
+    // Installed before ImGui's, which chains to them.
+    glfwSetScrollCallback(window_, onScroll);
+    glfwSetDropCallback(window_, onDrop);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    renderer_ = std::make_unique<PreviewRenderer>();
+    glGenTextures(1, &finalTexture_);
+    renderSpp_ = options.spp;
+    openScene(options.scene);
+}
+
+PreviewWindow::~PreviewWindow() {
+    final_.cancel();
+    glDeleteTextures(1, &finalTexture_);
+    renderer_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+void PreviewWindow::openScene(const std::string& path) {
+    SceneDescription scene = path.empty() ? wavyClothScene() : loadScene(path);
+    final_.cancel();
+    scene_ = std::move(scene);
+    scenePath_ = path;
+    renderer_->setMeshes(scene_);
+    lights_ = PreviewLights::fromScene(scene_);
+    camera_ = OrbitCamera::forScene(scene_);
+    materialIndex_ = -1;
+    for (size_t i = 0; i < scene_.materials.size() && materialIndex_ < 0; ++i)
+        if (scene_.materials[i].woven) materialIndex_ = int(i);
+    presetIndex_ = -1;
+    showFinal_ = false;
+    if (scene_.render.width > 0 && scene_.render.height > 0) {
+        renderWidth_ = scene_.render.width;
+        renderHeight_ = scene_.render.height;
+    }
+    if (scene_.render.spp > 0) renderSpp_ = scene_.render.spp;
+    status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
+    glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
+}
+
+WovenParams* PreviewWindow::editedMaterial() {
+    if (materialIndex_ < 0 || materialIndex_ >= int(scene_.materials.size())) return nullptr;
+    auto& woven = scene_.materials[materialIndex_].woven;
+    return woven ? &*woven : nullptr;
+}
+
+void PreviewWindow::onScroll(GLFWwindow* window, double, double dy) {
+    static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window))->scroll_ += dy;
+}
+
+void PreviewWindow::onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* self = static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; i < count; ++i) self->droppedPaths_.emplace_back(paths[i]);
+}
+
+void PreviewWindow::handleMouse() {
+    glm::dvec2 cursor;
+    glfwGetCursorPos(window_, &cursor.x, &cursor.y);
+    const glm::vec2 delta(cursor - lastCursor_);
+    lastCursor_ = cursor;
+    const double scroll = scroll_;
+    scroll_ = 0.0;
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    const float h = float(std::max(height, 1));
+    if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+        camera_.orbit(-delta.x * 3.0f / h, delta.y * 3.0f / h);
+    else if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+             glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS)
+        camera_.pan(delta.x / h, delta.y / h);
+    if (scroll != 0.0) camera_.zoom(std::pow(0.9f, float(scroll)));
+}
+
+void PreviewWindow::drawMaterialControls(WovenParams& p) {
+    const auto& presets = weavePresets();
+    const char* presetName = presetIndex_ >= 0 ? presets[presetIndex_].name.c_str() : "(custom)";
+    if (ImGui::BeginCombo("weave preset", presetName)) {
+        for (size_t i = 0; i < presets.size(); ++i)
+            if (ImGui::Selectable(presets[i].name.c_str(), int(i) == presetIndex_)) {
+                presetIndex_ = int(i);
+                applyPreset(presets[i], p);
+            }
+        ImGui::EndCombo();
+    }
+    for (const ParamInfo& info : wovenParamTable()) {
+        char* field = reinterpret_cast<char*>(&p) + info.offset;
+        ImGui::PushID(info.name);
+        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+        switch (info.type) {
+        case ParamType::Float:
+            ImGui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
+            break;
+        case ParamType::Int:
+            ImGui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
+            break;
+        case ParamType::Vec2:
+            ImGui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
+            break;
+        case ParamType::Vec3:
+            ImGui::ColorEdit3(info.label, reinterpret_cast<float*>(field), ImGuiColorEditFlags_Float);
+            break;
+        case ParamType::IVec3: {
+            int* v = reinterpret_cast<int*>(field);
+            if (ImGui::InputInt3(info.label, v)) {
+                for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(info.min), int(info.max));
+                p.tile.clear();  // an edited (i, j, k) replaces a hand-drawn tile
+                presetIndex_ = -1;
+            }
+            break;
+        }
+        }
+        ImGui::PopID();
+    }
+    try {
+        validate(p);
+    } catch (const std::exception& e) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", e.what());
+    }
+
+    ImGui::InputText("material file", materialPath_, sizeof materialPath_);
+    const std::string& name = scene_.materials[materialIndex_].name;
+    if (ImGui::Button("Save material")) {
+        try {
+            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
+            saveMaterial(materialPath_, name, p, gltf ? scenePath_ : "");
+            status_ = std::string("saved ") + materialPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Load material")) {
+        try {
+            p = loadMaterial(materialPath_, name, p);
+            presetIndex_ = -1;
+            status_ = std::string("loaded ") + materialPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+void PreviewWindow::drawRenderControls() {
+    ImGui::InputInt2("render size", &renderWidth_);
+    renderWidth_ = std::clamp(renderWidth_, 1, 16384);
+    renderHeight_ = std::clamp(renderHeight_, 1, 16384);
+    ImGui::InputInt("spp", &renderSpp_);
+    renderSpp_ = std::clamp(renderSpp_, 1, 1 << 20);
+    if (ImGui::Button("Render")) {
+        RenderSettings settings;
+        settings.width = renderWidth_;
+        settings.height = renderHeight_;
+        settings.spp = renderSpp_;
+        settings.camera = camera_.camera();
+        final_.start(scene_, settings);
+        finalImage_.reset();
+        showFinal_ = true;
+    }
+    if (final_.running()) {
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) final_.cancel();
+    }
+    const RenderProgress progress = final_.progress();
+    if (final_.running() || finalImage_) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%d/%d spp, %.1f s left", progress.samplesDone, progress.samplesTotal,
+                      progress.remaining);
+        ImGui::ProgressBar(progress.samplesTotal > 0 ? float(progress.samplesDone) / progress.samplesTotal : 0.0f,
+                           ImVec2(-1.0f, 0.0f), text);
+    }
+    if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());
+    if (!finalImage_) return;
+    ImGui::Checkbox("show the rendered frame", &showFinal_);
+    ImGui::InputText("image file", imagePath_, sizeof imagePath_);
+    const bool png = ImGui::Button("Save PNG");
+    ImGui::SameLine();
+    const bool exr = ImGui::Button("Save EXR");
+    if (png || exr) {
+        std::string path = imagePath_;
+        const size_t dot = path.find_last_of('.');
+        path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
+        try {
+            if (png) {
+                PngOptions o;
+                o.exposure = exposure_;
+                writePng(path, finalImage_->radiance, o);
+            } else {
+                writeExr(path, ExrImage{finalImage_->radiance, finalImage_->sampleCount});
+            }
+            status_ = "saved " + path;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+void PreviewWindow::drawPanel() {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("woven");
+    ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
+    ImGui::Text("%.1f ms/frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
+    if (ImGui::SliderFloat("exposure", &exposure_, -8.0f, 8.0f, "%.2f stops") && finalImage_)
+        updateFinalTexture(*finalImage_);
+    ImGui::Checkbox("filter distant weave", &filterWeave_);
+    if (ImGui::Button("Frame scene")) camera_ = OrbitCamera::framing(sceneBounds(scene_), camera_.camera().yfov);
+
+    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::BeginCombo("material", materialIndex_ >= 0 ? scene_.materials[materialIndex_].name.c_str() : "(none woven)")) {
+            for (size_t i = 0; i < scene_.materials.size(); ++i)
+                if (scene_.materials[i].woven &&
+                    ImGui::Selectable(scene_.materials[i].name.c_str(), int(i) == materialIndex_))
+                    materialIndex_ = int(i), presetIndex_ = -1;
+            ImGui::EndCombo();
+        }
+        if (WovenParams* p = editedMaterial()) drawMaterialControls(*p);
+    }
+    if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderControls();
+    if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+    ImGui::End();
+}
+
+void PreviewWindow::updateFinalTexture(const FilmImage& film) {
+    const std::vector<uint8_t> bytes = displayBytes(film.radiance, exposure_);
+    glBindTexture(GL_TEXTURE_2D, finalTexture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, film.radiance.width, film.radiance.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 bytes.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+// The rendered frame, letterboxed over the preview (row 0 of the image is its top).
+void PreviewWindow::drawFinalImage() {
+    if (!showFinal_ || !finalImage_) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float imageAspect = float(finalImage_->radiance.width) / float(finalImage_->radiance.height);
+    ImVec2 size(display.x, display.x / imageAspect);
+    if (size.y > display.y) size = ImVec2(display.y * imageAspect, display.y);
+    const ImVec2 lo((display.x - size.x) * 0.5f, (display.y - size.y) * 0.5f);
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->AddRectFilled(ImVec2(0, 0), display, IM_COL32(0, 0, 0, 255));
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(finalTexture_)), lo,
+                   ImVec2(lo.x + size.x, lo.y + size.y));
+}
+
+void PreviewWindow::writeWindowScreenshot(const std::string& path) {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    std::vector<uint8_t> bytes(size_t(width) * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    // writePng takes linear radiance and sRGB-encodes it: decode the displayed bytes, bottom row first.
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.pixels.resize(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* b = &bytes[(size_t(height - 1 - y) * width + x) * 4];
+            image.at(x, y) = glm::vec3(srgbToLinear(b[0] / 255.0f), srgbToLinear(b[1] / 255.0f),
+                                       srgbToLinear(b[2] / 255.0f));
+        }
+    writePng(path, image);
+}
+
+void PreviewWindow::run() {
+    glfwGetCursorPos(window_, &lastCursor_.x, &lastCursor_.y);
+    for (int frame = 1; !glfwWindowShouldClose(window_); ++frame) {
+        glfwPollEvents();
+        std::vector<std::string> dropped;
+        dropped.swap(droppedPaths_);
+        for (const std::string& path : dropped) {
+            try {
+                openScene(path);
+            } catch (const std::exception& e) {
+                status_ = e.what();
+            }
+        }
+        if (std::optional<FilmImage> snapshot = final_.newSnapshot()) {
+            finalImage_ = std::move(snapshot);
+            updateFinalTexture(*finalImage_);
+        }
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        drawPanel();
+        drawFinalImage();
+        handleMouse();
+        ImGui::Render();
+
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window_, &width, &height);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (width > 0 && height > 0 && !(showFinal_ && finalImage_)) {
+            Camera camera = camera_.camera();
+            camera.aspect = float(width) / float(height);
+            PreviewOptions preview;
+            preview.exposure = exposure_;
+            preview.filterWeave = filterWeave_;
+            try {
+                renderer_->render(scene_, lights_, camera, {width, height}, preview);
+                renderer_->display(0, {0, 0}, exposure_);
+            } catch (const std::exception& e) {
+                status_ = e.what();  // e.g. a shader variant that fails to compile
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, width, height);
+        }
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        const bool last = options_.frames > 0 && frame >= options_.frames;
+        if (last && !options_.screenshot.empty()) writeWindowScreenshot(options_.screenshot);
+        glfwSwapBuffers(window_);
+        if (last) break;
+    }
+}
+
+}  // namespace
+
+void runPreviewWindow(const PreviewWindowOptions& options) {
+    PreviewWindow window(options);
+    window.run();
+}
+
+}  // namespace woven

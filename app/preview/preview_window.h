@@ -1,0 +1,22 @@
+#pragma once
+// The interactive previewer: a GLFW window with an OpenGL core context, the scene drawn by
+// PreviewRenderer, and a Dear ImGui panel to tune the woven material live (sliders generated
+// from wovenParamTable()), pick weave presets, save/load the material, and run the Render
+// button's FinalRender with its progressive result shown in the window.
+#include <string>
+
+namespace woven {
+
+struct PreviewWindowOptions {
+    std::string scene;           // empty: the procedural cloth
+    int width = 1280, height = 800;
+    int frames = 0;              // quit after this many frames; 0 = until the window is closed
+    std::string screenshot;      // PNG of the last frame (panel included), written before quitting
+    int spp = 64;                // the Render button's samples per pixel
+};
+
+// Runs until the window closes (or `frames` frames). Throws GlError when no window or context
+// can be had, std::runtime_error when the initial scene cannot be loaded.
+void runPreviewWindow(const PreviewWindowOptions& options);
+
+}  // namespace woven
