@@ -9,5 +9,6 @@ void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
 void addPreviewCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addConvergeCommand(CLI::App& app);
+void addMergeCommand(CLI::App& app);
 
 }  // namespace woven

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     woven::addPreviewCommand(app);
     woven::addRenderCommand(app);
     woven::addConvergeCommand(app);
+    woven::addMergeCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
