@@ -341,8 +341,9 @@ void PreviewWindow::drawRenderControls() {
 
 void PreviewWindow::drawPanel() {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(440, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
     ImGui::Begin("woven");
+    ImGui::PushItemWidth(-200.0f);  // room for the paper's long labels
     ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
     ImGui::Text("%.1f ms/frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
     if (ImGui::SliderFloat("exposure", &exposure_, -8.0f, 8.0f, "%.2f stops") && finalImage_)
@@ -362,6 +363,7 @@ void PreviewWindow::drawPanel() {
     }
     if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderControls();
     if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
