@@ -208,12 +208,20 @@ void PreviewWindow::handleMouse() {
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
     const float h = float(std::max(height, 1));
-    if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+    const bool moved = delta != glm::vec2(0.0f);
+    bool changed = scroll != 0.0;
+    if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && moved) {
         camera_.orbit(-delta.x * 3.0f / h, delta.y * 3.0f / h);
-    else if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-             glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS)
+        changed = true;
+    } else if ((glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS) &&
+               moved) {
         camera_.pan(delta.x / h, delta.y / h);
+        changed = true;
+    }
     if (scroll != 0.0) camera_.zoom(std::pow(0.9f, float(scroll)));
+    // The rendered frame is of the old view: moving the camera goes back to the live preview.
+    if (changed) showFinal_ = false;
 }
 
 void PreviewWindow::drawMaterialControls(WovenParams& p) {
