@@ -82,6 +82,7 @@ private:
     void handleMouse();
     void drawPanel();
     void drawMaterialControls(WovenParams& p);
+    void drawLightControls();
     void drawRenderControls();
     void updateFinalTexture(const FilmImage& film);
     void drawFinalImage();
@@ -146,6 +147,8 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(opt
     renderer_ = std::make_unique<PreviewRenderer>();
     glGenTextures(1, &finalTexture_);
     renderSpp_ = options.spp;
+    renderWidth_ = options.width;  // the window's framing, unless the scene asks for a size
+    renderHeight_ = options.height;
     openScene(options.scene);
 }
 
@@ -293,6 +296,29 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
     }
 }
 
+// Edits the scene's own lights, so the Render button sees the same lighting as the preview.
+void PreviewWindow::drawLightControls() {
+    static const char* typeNames[] = {"point", "spot", "directional"};
+    bool changed = false;
+    for (size_t i = 0; i < scene_.lights.size(); ++i) {
+        PunctualLight& light = scene_.lights[i];
+        ImGui::PushID(int(i));
+        ImGui::Text("light %zu (%s)", i, typeNames[int(light.type)]);
+        changed |= ImGui::ColorEdit3("intensity", &light.intensity.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        if (light.type == PunctualLight::Type::Point)
+            changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
+        if (light.type != PunctualLight::Type::Point && ImGui::SliderFloat3("direction", &light.direction.x, -1.0f, 1.0f)) {
+            if (glm::length(light.direction) < 1e-3f) light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+            light.direction = glm::normalize(light.direction);
+            changed = true;
+        }
+        ImGui::PopID();
+    }
+    changed |= ImGui::ColorEdit3("environment", &scene_.environment.color.x,
+                                 ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    if (changed) lights_ = PreviewLights::fromScene(scene_);
+}
+
 void PreviewWindow::drawRenderControls() {
     ImGui::InputInt2("render size", &renderWidth_);
     renderWidth_ = std::clamp(renderWidth_, 1, 16384);
@@ -369,6 +395,7 @@ void PreviewWindow::drawPanel() {
         }
         if (WovenParams* p = editedMaterial()) drawMaterialControls(*p);
     }
+    if (ImGui::CollapsingHeader("Lights")) drawLightControls();
     if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderControls();
     if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
     ImGui::PopItemWidth();
