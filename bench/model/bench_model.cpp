@@ -1,0 +1,124 @@
+// Cost of one BSDF query: the bare Ashikhmin-Shirley lobe against the full woven material
+// (pattern lookup, yarn geometry, bump frame, noise, then the lobe), with the woven features
+// off and on. The full/bare ratio is what the weave adds per shading point.
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "ashikhmin_shirley.h"
+#include "woven_material.h"
+
+using namespace woven;
+
+namespace {
+
+constexpr size_t kQueries = 4096;  // power of two: cycle with a mask
+
+// Pre-generated inputs, so the timed loop measures the BSDF and not the random generator.
+struct Queries {
+    std::vector<glm::vec3> wo, wi;
+    std::vector<glm::vec2> u;
+    std::vector<float> uc;
+    std::vector<glm::dvec2> uv;
+    Queries() {
+        std::mt19937 rng(1234);
+        std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+        auto hemisphere = [&] {
+            float z = uni(rng), phi = 6.2831853f * uni(rng), r = std::sqrt(1.0f - z * z);
+            return glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
+        };
+        for (size_t i = 0; i < kQueries; ++i) {
+            wo.push_back(hemisphere());
+            wi.push_back(hemisphere());
+            u.emplace_back(uni(rng), uni(rng));
+            uc.push_back(uni(rng));
+            uv.emplace_back(20.0 * uni(rng), 20.0 * uni(rng));
+        }
+    }
+};
+
+const Queries& queries() {
+    static const Queries q;
+    return q;
+}
+
+WovenParams featuresOff() {
+    WovenParams p;
+    p.pattern = {9, 1, 3};
+    p.cy = 0.0f;
+    p.yarn_width = p.warp_width = 1.0f;
+    p.noise = 0.0f;
+    p.crimp = 0.0f;
+    return p;
+}
+
+WovenParams featuresOn() {
+    WovenParams p = featuresOff();
+    p.cy = 0.75f;
+    p.noise = 0.3f;
+    p.crimp = 0.5f;
+    p.yarn_width = p.warp_width = 0.8f;
+    p.backing = 1;
+    p.backing_color = glm::vec3(0.1f);
+    return p;
+}
+
+const AshikhminShirley bareLobe(100.0f, 2.0f, 0.04f, glm::vec3(0.55f, 0.12f, 0.10f));
+
+void BM_BareEval(benchmark::State& state) {
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(bareLobe.eval(q.wo[i], q.wi[i]));
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
+void BM_BareSample(benchmark::State& state) {
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(bareLobe.sample(q.wo[i], q.u[i], q.uc[i]));
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
+ShadingInput hitAt(const glm::dvec2& uv) {
+    ShadingInput in;
+    in.uv = uv;
+    return in;
+}
+
+void BM_WovenShadeEval(benchmark::State& state, const WovenParams& params) {
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        auto s = material.shade(hitAt(q.uv[i]));
+        if (s) benchmark::DoNotOptimize(s->bsdf.eval(q.wo[i], q.wi[i]));
+        benchmark::DoNotOptimize(s);
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
+void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        auto s = material.shade(hitAt(q.uv[i]));
+        if (s) benchmark::DoNotOptimize(s->bsdf.sample(q.wo[i], q.u[i], q.uc[i]));
+        benchmark::DoNotOptimize(s);
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
+}  // namespace
+
+BENCHMARK(BM_BareEval);
+BENCHMARK(BM_BareSample);
+BENCHMARK_CAPTURE(BM_WovenShadeEval, features_off, featuresOff());
+BENCHMARK_CAPTURE(BM_WovenShadeSample, features_off, featuresOff());
+BENCHMARK_CAPTURE(BM_WovenShadeEval, features_on, featuresOn());
+BENCHMARK_CAPTURE(BM_WovenShadeSample, features_on, featuresOn());
