@@ -1,5 +1,7 @@
 #include "woven_params_json.h"
 
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 namespace woven {
@@ -13,6 +15,17 @@ float readNumber(const nlohmann::json& v, const char* name) {
     return v.get<float>();
 }
 
+// get<int>() wraps values beyond int silently (4294967297 -> 1), so check the range first.
+int readInteger(const nlohmann::json& v, const char* name, const char* what) {
+    if (!v.is_number_integer()) fail(std::string("'") + name + "' " + what);
+    const bool fits = v.is_number_unsigned()
+                          ? v.get<uint64_t>() <= uint64_t(std::numeric_limits<int>::max())
+                          : v.get<int64_t>() >= std::numeric_limits<int>::min() &&
+                                v.get<int64_t>() <= std::numeric_limits<int>::max();
+    if (!fits) fail(std::string("'") + name + "' = " + v.dump() + " does not fit an integer");
+    return v.get<int>();
+}
+
 void readField(const nlohmann::json& v, const ParamInfo& info, WovenParams& p) {
     char* base = reinterpret_cast<char*>(&p) + info.offset;
     auto readArray = [&](int n) {
@@ -23,8 +36,7 @@ void readField(const nlohmann::json& v, const ParamInfo& info, WovenParams& p) {
         case ParamType::Float: *reinterpret_cast<float*>(base) = readNumber(v, info.name); break;
         case ParamType::Int: {
             if (v.is_boolean()) { *reinterpret_cast<int*>(base) = v.get<bool>() ? 1 : 0; break; }
-            if (!v.is_number_integer()) fail(std::string("'") + info.name + "' must be an integer");
-            *reinterpret_cast<int*>(base) = v.get<int>();
+            *reinterpret_cast<int*>(base) = readInteger(v, info.name, "must be an integer");
             break;
         }
         case ParamType::Vec2:
@@ -40,10 +52,8 @@ void readField(const nlohmann::json& v, const ParamInfo& info, WovenParams& p) {
         }
         case ParamType::IVec3: {
             readArray(3);
-            for (int c = 0; c < 3; ++c) {
-                if (!v[c].is_number_integer()) fail(std::string("'") + info.name + "' must hold integers");
-                reinterpret_cast<int*>(base)[c] = v[c].get<int>();
-            }
+            for (int c = 0; c < 3; ++c)
+                reinterpret_cast<int*>(base)[c] = readInteger(v[c], info.name, "must hold integers");
             break;
         }
     }
