@@ -54,6 +54,16 @@ run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
   echo
   run "$build/bench/preview/bench_preview"
   echo
+  echo "## Preview: the GLSL approximation against core"
+  echo
+  echo "Direct lighting of the same flat cloth by the GLSL twin and by core's CPU evaluation, per pixel."
+  echo '```'
+  echo "$build/tests/preview/test_preview --gtest_filter='*GlslVsCore*:*Filter*'"
+  echo '```'
+  echo '```'
+  "$build/tests/preview/test_preview" --gtest_filter='*GlslVsCore*:*Filter*' 2>/dev/null | grep -E 'error|differs' || true
+  echo '```'
+  echo
   echo "## The source paper's figures"
   echo
   echo "Figure 2: (a) e_x = 100, e_y = 2; (b) c_y = 0.75; (c) twill (1,2,1); (d) satin (9,1,3)."
