@@ -24,9 +24,11 @@ Frame tangentFrame(const glm::vec3& n, const glm::vec3& dpdu, const glm::vec3& d
     f.z = n;
     if (usable(t, dpdu)) {
         f.x = glm::normalize(t);
-        // Keep dp/dv's orientation (it tells which way +v runs, on either face).
-        b = projectOut(b, f.x);
-        f.y = usable(b, dpdv) ? glm::normalize(b) : glm::cross(n, f.x);
+        // y is n x x up to the sign of dp/dv (it tells which way +v runs, on either face).
+        // Taking the sign only keeps the frame orthonormal when dp/du and dp/dv are nearly
+        // parallel, where Gram-Schmidt of dp/dv against x leaves mostly rounding noise.
+        f.y = glm::cross(n, f.x);
+        if (usable(b, dpdv) && glm::dot(b, f.y) < 0.0f) f.y = -f.y;
     } else if (usable(b, dpdv)) {
         f.y = glm::normalize(b);
         f.x = glm::cross(f.y, n);
