@@ -100,8 +100,10 @@ public:
     // (h.k -> 0), identical, exactly along the normal.
     std::pair<glm::vec3, glm::vec3> directions(const glm::vec3& n) {
         const glm::vec3 t = glm::normalize(glm::cross(n, unit()) + 1e-30f);
+        // A random direction in the plane of n, tipped by 1e-6 to the given side.
         auto grazing = [&](float side) {
-            return glm::normalize(unit() - n * glm::dot(unit(), n) * 0.0f + side * 1e-6f * n);
+            const glm::vec3 r = unit();
+            return glm::normalize(r - glm::dot(r, n) * n + side * 1e-6f * n);
         };
         glm::vec3 wo = unit(), wi = unit();
         switch (pick(8)) {
