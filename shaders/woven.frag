@@ -29,8 +29,11 @@ Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
     vec3 b = dpdv - dot(dpdv, n) * n;
     if (usableProjection(t, dpdu)) {
         vec3 x = normalize(t);
-        b -= dot(b, x) * x;
-        return Frame(x, usableProjection(b, dpdv) ? normalize(b) : cross(n, x), n);
+        // y is n x x up to the sign of dp/dv, which stays orthonormal when dp/du and dp/dv
+        // are nearly parallel (as core).
+        vec3 y = cross(n, x);
+        if (usableProjection(b, dpdv) && dot(b, y) < 0.0) y = -y;
+        return Frame(x, y, n);
     }
     if (usableProjection(b, dpdv)) {
         vec3 y = normalize(b);
