@@ -76,8 +76,10 @@ Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     return {job.snapshot(), elapsed, job.integratorName()};
 }
 
-// The reference: path tracing and BDPT merged with equal weight (both unbiased, so neither
-// integrator is favoured), cached next to the results and reused when its settings match.
+// The reference: path tracing and BDPT (both unbiased, so neither is favoured) merged by
+// inverse variance, each integrator's variance estimated from two independent halves of its
+// render; cached next to the results and reused when its settings match. An equal-weight merge
+// would let the noisier integrator's error dominate the reference on scenes where it is poor.
 Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o, const std::string& stem) {
     namespace fs = std::filesystem;
     std::ostringstream key;
@@ -88,14 +90,35 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
         return readExr(path.string()).image;
     }
     std::cerr << "converge: rendering reference (" << o.referenceTime << " s) ...\n";
-    const Timed a = renderFor(scene, o, "path", o.referenceTime / 2, 0x5eed0001);
-    const Timed b = renderFor(scene, o, "bdpt", o.referenceTime / 2, 0x5eed0002);
+    struct Part { std::vector<glm::vec3> mean; std::vector<float> count; double weight; };
+    std::vector<Part> parts;
+    uint64_t seed = 0x5eed0001;
+    for (const char* integrator : {"path", "bdpt"}) {
+        const Timed a = renderFor(scene, o, integrator, o.referenceTime / 4, seed++);
+        const Timed b = renderFor(scene, o, integrator, o.referenceTime / 4, seed++);
+        Part part;
+        const size_t n = a.film.radiance.pixels.size();
+        // The mean of two independent halves has a quarter of their squared difference as variance.
+        double variance = 0.0;
+        for (size_t i = 0; i < n; ++i) {
+            const glm::vec3 d = a.film.radiance.pixels[i] - b.film.radiance.pixels[i];
+            variance += glm::dot(d, d) / 3.0;
+            part.mean.push_back(0.5f * (a.film.radiance.pixels[i] + b.film.radiance.pixels[i]));
+            part.count.push_back(a.film.sampleCount[i] + b.film.sampleCount[i]);
+        }
+        variance = variance / (4.0 * double(n));
+        part.weight = 1.0 / std::max(variance, 1e-30);
+        std::cerr << "converge: reference part " << integrator << ", mean pixel variance " << variance << "\n";
+        parts.push_back(std::move(part));
+    }
+    const double total = parts[0].weight + parts[1].weight;
     ExrImage exr;
-    exr.image = a.film.radiance;
-    exr.sampleCount.resize(a.film.sampleCount.size());
-    for (size_t i = 0; i < exr.image.pixels.size(); ++i) {
-        exr.image.pixels[i] = 0.5f * (a.film.radiance.pixels[i] + b.film.radiance.pixels[i]);
-        exr.sampleCount[i] = a.film.sampleCount[i] + b.film.sampleCount[i];
+    exr.image.width = o.width;
+    exr.image.height = o.height;
+    for (size_t i = 0; i < parts[0].mean.size(); ++i) {
+        exr.image.pixels.push_back(float(parts[0].weight / total) * parts[0].mean[i] +
+                                   float(parts[1].weight / total) * parts[1].mean[i]);
+        exr.sampleCount.push_back(parts[0].count[i] + parts[1].count[i]);
     }
     writeExr(path.string(), exr, ExrPrecision::Float);
     return exr.image;
