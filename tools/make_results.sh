@@ -25,7 +25,7 @@ run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
   echo
   echo "## Speed against error"
   echo
-  echo "Relative RMSE against a reference (path tracing and BDPT merged, 120 s), 320x240."
+  echo "Relative RMSE against a reference (path tracing and BDPT merged by inverse variance, 120 s), 320x240."
   for scene in converge_indirect converge_open; do
     echo
     echo "### $scene"
