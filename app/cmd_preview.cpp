@@ -1,11 +1,12 @@
 // `woven preview [SCENE]`: the interactive previewer, or with --headless one preview frame
-// (or with --final the path-traced frame) written to a PNG.
+// (or with --final the Render button's frame) written to a PNG or EXR.
 #include <memory>
 #include <stdexcept>
 
 #include "commands.h"
 #include "demo_scene.h"
 #include "final_render.h"
+#include "frame_options.h"
 #include "headless_gl.h"
 #include "image_io.h"
 #include "orbit_camera.h"
@@ -22,43 +23,41 @@ struct PreviewCommandOptions {
     bool headless = false;
     bool final = false;
     std::string screenshot;
-    int width = 960, height = 540;
-    float exposure = 0.0f;
+    FrameOptions frame;  // --width/--height: also the window's and the screenshot's size
     bool noFilter = false;
-    int spp = 16;
     int frames = 0;
     std::string windowScreenshot;
 };
 
-SceneDescription openScene(const std::string& path) { return path.empty() ? wavyClothScene() : loadScene(path); }
+SceneDescription openScene(const PreviewCommandOptions& o) {
+    SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene);
+    applyWovenOptions(scene, o.frame);
+    return scene;
+}
 
 void runHeadless(const PreviewCommandOptions& o) {
-    if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png");
-    const SceneDescription scene = openScene(o.scene);
+    if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png (or .exr)");
+    const SceneDescription scene = openScene(o);
     const Camera camera = OrbitCamera::forScene(scene).camera();
-    PngOptions png;
-    png.exposure = o.exposure;
     if (o.final) {  // the Render button's path: core's RenderJob for the preview's camera
-        RenderSettings settings;
-        settings.width = o.width;
-        settings.height = o.height;
-        settings.spp = o.spp;
+        RenderSettings settings = frameSettings(scene, o.frame);
         settings.camera = camera;
         FinalRender render;
         render.start(scene, settings);
         render.wait();
         if (!render.error().empty()) throw std::runtime_error(render.error());
-        writePng(o.screenshot, render.latest()->radiance, png);
+        const FilmImage film = *render.latest();
+        writeFrame(o.screenshot, {film.radiance, film.sampleCount}, o.frame.display);
         return;
     }
     auto gl = HeadlessGl::create();
     PreviewRenderer renderer;
     renderer.setMeshes(scene);
     PreviewOptions options;
-    options.exposure = o.exposure;
     options.filterWeave = !o.noFilter;
-    renderer.render(scene, PreviewLights::fromScene(scene), camera, {o.width, o.height}, options);
-    writePng(o.screenshot, renderer.radiance(), png);
+    const glm::ivec2 size(o.frame.width > 0 ? o.frame.width : 960, o.frame.height > 0 ? o.frame.height : 540);
+    renderer.render(scene, PreviewLights::fromScene(scene), camera, size, options);
+    writeFrame(o.screenshot, {renderer.radiance(), {}}, o.frame.display);
 }
 
 }  // namespace
@@ -69,11 +68,8 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("scene", o->scene, "glTF or woven scene file (default: a procedural cloth)");
     cmd->add_flag("--headless", o->headless, "Render one frame without a window (EGL, else OSMesa)");
     cmd->add_flag("--final", o->final, "With --headless: the path-traced frame of the Render button");
-    cmd->add_option("--screenshot", o->screenshot, "PNG to write");
-    cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
-    cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
-    cmd->add_option("--exposure", o->exposure, "Exposure in stops");
-    cmd->add_option("--spp", o->spp, "With --final: samples per pixel")->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
+    addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-filter", o->noFilter, "Point-sample the weave even where it is finer than a pixel");
     cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
@@ -81,11 +77,9 @@ void addPreviewCommand(CLI::App& app) {
         if (o->headless) return runHeadless(*o);
         PreviewWindowOptions window;
         window.scene = o->scene;
+        window.frame = o->frame;
         window.frames = o->frames;
         window.screenshot = o->windowScreenshot;
-        window.width = o->width;
-        window.height = o->height;
-        window.spp = o->spp;
         runPreviewWindow(window);
     });
 }

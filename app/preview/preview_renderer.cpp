@@ -157,7 +157,7 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     mesh.draw();
 }
 
-void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, float exposure) {
+void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, const DisplayTransform& transform) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(origin.x, origin.y, size_.x, size_.y);
     glDisable(GL_DEPTH_TEST);
@@ -166,7 +166,8 @@ void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, float expos
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, colour_);
     glUniform1i(displayProgram_->uniform("radianceImage"), 0);
-    glUniform1f(displayProgram_->uniform("exposureScale"), std::exp2(exposure));
+    glUniform1f(displayProgram_->uniform("exposureScale"), std::exp2(transform.exposure));
+    glUniform1i(displayProgram_->uniform("toneMap"), int(transform.toneMap));
     glUniform2i(displayProgram_->uniform("origin"), origin.x, origin.y);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);

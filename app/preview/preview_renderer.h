@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gpu_mesh.h"
+#include "image_io.h"
 #include "preview_lights.h"
 #include "shader_program.h"
 #include "woven_gl_material.h"
@@ -15,7 +16,6 @@
 namespace woven {
 
 struct PreviewOptions {
-    float exposure = 0.0f;     // stops
     bool filterWeave = true;   // fade to the element-averaged reflectance where the weave is finer than a pixel
 };
 
@@ -32,8 +32,9 @@ public:
     // Renders the radiance image of `camera` at `size` into the internal target.
     void render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera, glm::ivec2 size,
                 const PreviewOptions& options);
-    // Draws the last radiance image into `framebuffer` at `origin`, display-transformed.
-    void display(GLuint framebuffer, glm::ivec2 origin, float exposure);
+    // Draws the last radiance image into `framebuffer` at `origin` through `transform` (as
+    // core's displayColor()).
+    void display(GLuint framebuffer, glm::ivec2 origin, const DisplayTransform& transform);
     // The last radiance image, row 0 at the top.
     Image radiance() const;
 

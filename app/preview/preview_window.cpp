@@ -57,19 +57,20 @@ GLFWwindow* createWindow(int width, int height) {
     throw GlError(std::string("could not create an OpenGL 3.3+ core window: ") + (why ? why : "unknown GLFW error"));
 }
 
-// RGBA8 of `image` through the same display transform as writePng (exposure, clamp, sRGB).
-std::vector<uint8_t> displayBytes(const Image& image, float exposure) {
-    const float scale = std::exp2(exposure);
+// RGBA8 of `image` through the display transform of PNG output.
+std::vector<uint8_t> displayBytes(const Image& image, const DisplayTransform& transform) {
     std::vector<uint8_t> bytes(image.pixels.size() * 4);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            const float v = linearToSrgb(std::clamp(image.pixels[i][c] * scale, 0.0f, 1.0f));
-            bytes[4 * i + c] = uint8_t(std::lround(v * 255.0f));
-        }
+        const glm::u8vec3 c = displayColor(image.pixels[i], transform);
+        bytes[4 * i] = c.r;
+        bytes[4 * i + 1] = c.g;
+        bytes[4 * i + 2] = c.b;
         bytes[4 * i + 3] = 255;
     }
     return bytes;
 }
+
+const char* const kIntegrators[] = {"auto", "bdpt", "path"};
 
 class PreviewWindow {
 public:
@@ -101,7 +102,7 @@ private:
     OrbitCamera camera_;
     int materialIndex_ = -1;  // the woven material the panel edits
     int presetIndex_ = -1;
-    float exposure_ = 0.0f;
+    DisplayTransform display_;
     bool filterWeave_ = true;
     double scroll_ = 0.0;
     std::vector<std::string> droppedPaths_;
@@ -114,7 +115,7 @@ private:
     std::optional<FilmImage> finalImage_;
     GLuint finalTexture_ = 0;
     bool showFinal_ = false;
-    int renderWidth_ = 640, renderHeight_ = 400, renderSpp_ = 64;
+    RenderSettings render_;  // the Render button's, but for the camera
 };
 
 PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(options) {
@@ -125,7 +126,8 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(opt
                       (why ? why : "unknown error"));
     }
     try {
-        window_ = createWindow(options.width, options.height);
+        window_ = createWindow(options.frame.width > 0 ? options.frame.width : 1280,
+                               options.frame.height > 0 ? options.frame.height : 800);
     } catch (...) {
         glfwTerminate();
         throw;
@@ -146,9 +148,7 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(opt
 
     renderer_ = std::make_unique<PreviewRenderer>();
     glGenTextures(1, &finalTexture_);
-    renderSpp_ = options.spp;
-    renderWidth_ = options.width;  // the window's framing, unless the scene asks for a size
-    renderHeight_ = options.height;
+    display_ = options.frame.display;
     openScene(options.scene);
 }
 
@@ -165,6 +165,8 @@ PreviewWindow::~PreviewWindow() {
 
 void PreviewWindow::openScene(const std::string& path) {
     SceneDescription scene = path.empty() ? wavyClothScene() : loadScene(path);
+    // The command line's --woven edits name the command line's scene's materials.
+    if (path == options_.scene) applyWovenOptions(scene, options_.frame);
     final_.cancel();
     scene_ = std::move(scene);
     scenePath_ = path;
@@ -176,11 +178,10 @@ void PreviewWindow::openScene(const std::string& path) {
         if (scene_.materials[i].woven) materialIndex_ = int(i);
     presetIndex_ = -1;
     showFinal_ = false;
-    if (scene_.render.width > 0 && scene_.render.height > 0) {
-        renderWidth_ = scene_.render.width;
-        renderHeight_ = scene_.render.height;
-    }
-    if (scene_.render.spp > 0) renderSpp_ = scene_.render.spp;
+    render_ = frameSettings(scene_, options_.frame);
+    const bool sizeGiven = (options_.frame.width > 0 && options_.frame.height > 0) ||
+                           (scene_.render.width > 0 && scene_.render.height > 0);
+    if (!sizeGiven) glfwGetFramebufferSize(window_, &render_.width, &render_.height);  // what the window frames
     status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
 }
@@ -320,16 +321,18 @@ void PreviewWindow::drawLightControls() {
 }
 
 void PreviewWindow::drawRenderControls() {
-    ImGui::InputInt2("render size", &renderWidth_);
-    renderWidth_ = std::clamp(renderWidth_, 1, 16384);
-    renderHeight_ = std::clamp(renderHeight_, 1, 16384);
-    ImGui::InputInt("spp", &renderSpp_);
-    renderSpp_ = std::clamp(renderSpp_, 1, 1 << 20);
+    ImGui::InputInt2("render size", &render_.width);
+    render_.width = std::clamp(render_.width, 1, 16384);
+    render_.height = std::clamp(render_.height, 1, 16384);
+    ImGui::InputInt("spp", &render_.spp);
+    render_.spp = std::clamp(render_.spp, 1, 1 << 20);
+    if (ImGui::BeginCombo("integrator", render_.integrator.c_str())) {
+        for (const char* name : kIntegrators)
+            if (ImGui::Selectable(name, render_.integrator == name)) render_.integrator = name;
+        ImGui::EndCombo();
+    }
     if (ImGui::Button("Render")) {
-        RenderSettings settings;
-        settings.width = renderWidth_;
-        settings.height = renderHeight_;
-        settings.spp = renderSpp_;
+        RenderSettings settings = render_;
         settings.camera = camera_.camera();
         final_.start(scene_, settings);
         finalImage_.reset();
@@ -359,13 +362,7 @@ void PreviewWindow::drawRenderControls() {
         const size_t dot = path.find_last_of('.');
         path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
         try {
-            if (png) {
-                PngOptions o;
-                o.exposure = exposure_;
-                writePng(path, finalImage_->radiance, o);
-            } else {
-                writeExr(path, ExrImage{finalImage_->radiance, finalImage_->sampleCount});
-            }
+            writeFrame(path, {finalImage_->radiance, finalImage_->sampleCount}, display_);
             status_ = "saved " + path;
         } catch (const std::exception& e) {
             status_ = e.what();
@@ -380,10 +377,17 @@ void PreviewWindow::drawPanel() {
     ImGui::PushItemWidth(-200.0f);  // room for the paper's long labels
     ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
     ImGui::Text("%.1f ms/frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
-    if (ImGui::SliderFloat("exposure", &exposure_, -8.0f, 8.0f, "%.2f stops") && finalImage_)
-        updateFinalTexture(*finalImage_);
+    static const char* const toneMaps[] = {"clamp", "reinhard", "aces"};  // core's ToneMap order
+    int toneMap = int(display_.toneMap);
+    const bool exposureChanged = ImGui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
+    const bool toneMapChanged = ImGui::Combo("tone map", &toneMap, toneMaps, IM_ARRAYSIZE(toneMaps));
+    display_.toneMap = ToneMap(toneMap);
+    if ((exposureChanged || toneMapChanged) && finalImage_) updateFinalTexture(*finalImage_);
     ImGui::Checkbox("filter distant weave", &filterWeave_);
-    if (ImGui::Button("Frame scene")) camera_ = OrbitCamera::framing(sceneBounds(scene_), camera_.camera().yfov);
+    if (ImGui::Button("Frame scene")) {
+        const SceneBox box = sceneBounds(scene_);
+        camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
+    }
 
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (ImGui::BeginCombo("material", materialIndex_ >= 0 ? scene_.materials[materialIndex_].name.c_str() : "(none woven)")) {
@@ -403,7 +407,7 @@ void PreviewWindow::drawPanel() {
 }
 
 void PreviewWindow::updateFinalTexture(const FilmImage& film) {
-    const std::vector<uint8_t> bytes = displayBytes(film.radiance, exposure_);
+    const std::vector<uint8_t> bytes = displayBytes(film.radiance, display_);
     glBindTexture(GL_TEXTURE_2D, finalTexture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, film.radiance.width, film.radiance.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -433,7 +437,8 @@ void PreviewWindow::writeWindowScreenshot(const std::string& path) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadBuffer(GL_BACK);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    // writePng takes linear radiance and sRGB-encodes it: decode the displayed bytes, bottom row first.
+    // writePng takes linear radiance and sRGB-encodes it: decode the displayed bytes, bottom row
+    // first, and write them back with no curve.
     Image image;
     image.width = width;
     image.height = height;
@@ -444,7 +449,7 @@ void PreviewWindow::writeWindowScreenshot(const std::string& path) {
             image.at(x, y) = glm::vec3(srgbToLinear(b[0] / 255.0f), srgbToLinear(b[1] / 255.0f),
                                        srgbToLinear(b[2] / 255.0f));
         }
-    writePng(path, image);
+    writePng(path, image, {0.0f, ToneMap::Clamp});
 }
 
 void PreviewWindow::run() {
@@ -483,11 +488,10 @@ void PreviewWindow::run() {
             Camera camera = camera_.camera();
             camera.aspect = float(width) / float(height);
             PreviewOptions preview;
-            preview.exposure = exposure_;
             preview.filterWeave = filterWeave_;
             try {
                 renderer_->render(scene_, lights_, camera, {width, height}, preview);
-                renderer_->display(0, {0, 0}, exposure_);
+                renderer_->display(0, {0, 0}, display_);
             } catch (const std::exception& e) {
                 status_ = e.what();  // e.g. a shader variant that fails to compile
             }

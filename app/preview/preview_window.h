@@ -5,14 +5,17 @@
 // button's FinalRender with its progressive result shown in the window.
 #include <string>
 
+#include "frame_options.h"
+
 namespace woven {
 
 struct PreviewWindowOptions {
     std::string scene;           // empty: the procedural cloth
-    int width = 1280, height = 800;
+    // --woven edits, the display transform, and the Render button's settings (as `woven render`
+    // takes them; the size defaults to the window's) ; width/height: the window's (else 1280x800).
+    FrameOptions frame;
     int frames = 0;              // quit after this many frames; 0 = until the window is closed
     std::string screenshot;      // PNG of the last frame (panel included), written before quitting
-    int spp = 64;                // the Render button's samples per pixel
 };
 
 // Runs until the window closes (or `frames` frames). Throws GlError when no window or context

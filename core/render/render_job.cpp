@@ -13,6 +13,7 @@
 #include "film.h"
 #include "integrator.h"
 #include "render_scene.h"
+#include "scene_camera.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -25,14 +26,6 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-// A scene without a camera is seen from +z, its bounding sphere filling the vertical field of view.
-Camera framingCamera(const Bounds& bounds) {
-    Camera camera;
-    const float distance = std::max(bounds.radius(), 1e-3f) / std::sin(0.5f * camera.yfov);
-    camera.cameraToWorld[3] = glm::vec4(bounds.centre() + glm::vec3(0.0f, 0.0f, distance), 1.0f);
-    return camera;
-}
 
 // Renders one pass (one sample per pixel, sample index `sampleIndex`) over tiles on the arena's
 // threads. Every pixel's random numbers come from (seed, pixel, sample index) alone. Returns
@@ -150,6 +143,15 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
     return path.variance * path.secondsPerPass <= bdpt.variance * bdpt.secondsPerPass ? path.name : bdpt.name;
 }
 
+RenderSettings defaultRenderSettings(const SceneDescription& scene) {
+    RenderSettings settings;
+    if (scene.render.width > 0) settings.width = scene.render.width;
+    if (scene.render.height > 0) settings.height = scene.render.height;
+    if (scene.render.spp > 0) settings.spp = scene.render.spp;
+    if (!scene.render.integrator.empty()) settings.integrator = scene.render.integrator;
+    return settings;
+}
+
 RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
     if (settings.width <= 0 || settings.height <= 0)
         throw std::invalid_argument("image size must be positive, got " + std::to_string(settings.width) + "x" +
@@ -163,9 +165,7 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     if (im.scene->lights().empty())
         throw SceneError(im.description->source +
                          ": scene has no lights: add an emissive material, a KHR_lights_punctual light or an environment");
-    im.camera = im.settings.camera ? *im.settings.camera
-                : im.description->hasCamera ? im.description->camera
-                                            : framingCamera(im.scene->bounds());
+    im.camera = im.settings.camera ? *im.settings.camera : sceneCamera(*im.description);
     im.cameraModel = std::make_unique<CameraModel>(im.camera, im.settings.width, im.settings.height);
     im.integratorName = im.settings.integrator;
     if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth);

@@ -25,6 +25,10 @@ struct RenderSettings {
     std::optional<Camera> camera;  // overrides the scene's
 };
 
+// The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto): what
+// `woven render` and the previewer's Render button start from.
+RenderSettings defaultRenderSettings(const SceneDescription& scene);
+
 struct RenderProgress {
     int samplesDone = 0, samplesTotal = 0;  // per pixel
     double elapsed = 0.0, remaining = 0.0;  // seconds (remaining: estimate)

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "atomic_file.h"
@@ -160,20 +161,26 @@ Image readImage(const std::string& path, ChannelEncoding encoding) {
     return decodeImage(bytes.data(), bytes.size(), encoding, path);
 }
 
-void writePng(const std::string& path, const Image& image, const PngOptions& options) {
+glm::u8vec3 displayColor(const glm::vec3& linear, const DisplayTransform& transform) {
+    const float scale = std::exp2(transform.exposure);
+    glm::u8vec3 out;
+    for (int c = 0; c < 3; ++c) {
+        // Negative values are black before the curve: ACES's rational fit turns large negative
+        // values positive. NaN (a bug upstream) shows as black rather than undefined behaviour.
+        float v = toneMap(std::max(linear[c] * scale, 0.0f), transform.toneMap);
+        v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);
+        out[c] = static_cast<unsigned char>(std::lround(linearToSrgb(v) * 255.0f));
+    }
+    return out;
+}
+
+void writePng(const std::string& path, const Image& image, const DisplayTransform& transform) {
     if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * image.height)
         fail(path, "cannot write an empty or inconsistent image");
-    const float scale = std::exp2(options.exposure);
-    std::vector<unsigned char> bytes(image.pixels.size() * 3);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            float v = toneMap(image.pixels[i][c] * scale, options.toneMap);
-            // NaN (a bug upstream) shows as black rather than undefined behaviour in the cast.
-            v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);
-            bytes[3 * i + c] = static_cast<unsigned char>(std::lround(linearToSrgb(v) * 255.0f));
-        }
+    std::vector<glm::u8vec3> bytes(image.pixels.size());
+    for (size_t i = 0; i < image.pixels.size(); ++i) bytes[i] = displayColor(image.pixels[i], transform);
     writeFileAtomically(path, [&](const std::string& tmp) {
-        if (!stbi_write_png(tmp.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
+        if (!stbi_write_png(tmp.c_str(), image.width, image.height, 3, &bytes[0].x, image.width * 3))
             throw ImageError("cannot write the PNG data");
     });
 }
@@ -231,6 +238,14 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         const int code = SaveEXRImageToFile(&exrImage, &header, tmp.c_str(), &err);
         if (code != TINYEXR_SUCCESS) throw ImageError("cannot write the OpenEXR data: " + takeExrError(err, code));
     });
+}
+
+void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".exr") writeExr(path, frame, ExrPrecision::Float);
+    else if (extension == ".png") writePng(path, frame.image, png);
+    else fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
 }
 
 }  // namespace woven

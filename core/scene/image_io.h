@@ -28,17 +28,19 @@ Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncod
 Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
                   const std::string& name);
 
-// Display transform of writePng: scale by 2^exposure, tone-map, then sRGB-encode to 8 bits.
+// Linear radiance to 8-bit display colour: scale by 2^exposure, tone-map, then sRGB-encode.
+// PNG output, the previewer's window (and shaders/display.frag) all go through this.
 enum class ToneMap {
-    Clamp,     // values above 1 clip to white
+    Clamp,     // values above 1 clip to white: colours are the reflectances as given
     Reinhard,  // c / (1 + c) per channel
     Aces       // Narkowicz's fit of the ACES filmic curve
 };
-struct PngOptions {
+struct DisplayTransform {
     float exposure = 0.0f;  // in stops
-    ToneMap toneMap = ToneMap::Clamp;
+    ToneMap toneMap = ToneMap::Aces;  // what woven shows and writes unless told otherwise
 };
-void writePng(const std::string& path, const Image& image, const PngOptions& options = {});
+glm::u8vec3 displayColor(const glm::vec3& linear, const DisplayTransform& transform);
+void writePng(const std::string& path, const Image& image, const DisplayTransform& transform = {});
 
 // A linear image with, optionally, how many samples each pixel's value is the mean of.
 struct ExrImage {
@@ -52,6 +54,10 @@ enum class ExrPrecision { Half, Float };
 void writeExr(const std::string& path, const ExrImage& exr,
               ExrPrecision precision = ExrPrecision::Half);
 ExrImage readExr(const std::string& path);
+
+// A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
+// 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
+void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
 
 // The sRGB transfer functions (IEC 61966-2-1), on one channel.
 float srgbToLinear(float encoded);

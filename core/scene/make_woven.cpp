@@ -1,6 +1,9 @@
 #include "make_woven.h"
 
+#include <nlohmann/json.hpp>
+
 #include "scene_loader.h"
+#include "woven_params_json.h"
 
 namespace woven {
 
@@ -22,6 +25,28 @@ void makeWoven(SceneDescription& scene, const std::string& materialName, const W
         throw SceneError(scene.source + ": woven material for '" + materialName + "': " + e.what());
     }
     for (int m : selectMaterials(scene, materialName)) scene.materials[m].woven = params;
+}
+
+void applyWovenOption(SceneDescription& scene, const std::string& option) {
+    const size_t eq = option.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw SceneError(scene.source + ": --woven '" + option + "': expected NAME=JSON, e.g. cloth='{\"ex\":100}'");
+    const std::string name = option.substr(0, eq);
+    const std::string where = scene.source + ": --woven " + name;
+    const Material& first = scene.materials[size_t(selectMaterials(scene, name).front())];
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(option.substr(eq + 1));
+    } catch (const std::exception& e) {
+        throw SceneError(where + ": not valid JSON: " + e.what());
+    }
+    WovenParams params;
+    try {
+        params = paramsFromJson(j, first.woven.value_or(WovenParams{}));
+    } catch (const std::exception& e) {
+        throw SceneError(where + ": " + e.what());
+    }
+    makeWoven(scene, name, params);
 }
 
 }  // namespace woven

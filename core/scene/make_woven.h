@@ -1,6 +1,6 @@
 #pragma once
 // Turning loaded materials into woven ones without editing the glTF file: used by scene files
-// ("materials") and by the command line (`woven render --woven NAME=...`).
+// ("materials") and by the command line (`woven render --woven NAME=...`, `woven preview --woven ...`).
 #include <string>
 #include <vector>
 
@@ -14,5 +14,10 @@ std::vector<int> selectMaterials(const SceneDescription& scene, const std::strin
 
 // Makes the selected materials woven with `params`; their emission and double-sidedness stay.
 void makeWoven(SceneDescription& scene, const std::string& materialName, const WovenParams& params);
+
+// The command line's form, "NAME=JSON" (NAME may be "*"): the JSON parameters apply on top of
+// the woven parameters the first selected material already has. Throws SceneError naming
+// scene.source and the option.
+void applyWovenOption(SceneDescription& scene, const std::string& option);
 
 }  // namespace woven

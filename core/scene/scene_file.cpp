@@ -8,6 +8,7 @@
 #include "gltf_loader.h"
 #include "image_io.h"
 #include "make_woven.h"
+#include "scene_camera.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
 
@@ -197,20 +198,17 @@ private:
         const glm::vec3 position = vec3(cam["position"], "camera.position");
         const glm::vec3 target = vec3(cam["target"], "camera.target");
         const glm::vec3 up = cam.contains("up") ? vec3(cam["up"], "camera.up") : glm::vec3(0, 1, 0);
-        // The camera looks down its -z axis, so +z points from the target back to the eye.
         const glm::vec3 back = position - target;
         if (!(glm::length(back) > 0.0f)) fail("camera.target", "must differ from camera.position");
-        const glm::vec3 z = glm::normalize(back);
-        const glm::vec3 side = glm::cross(up, z);
-        if (!(glm::length(side) > 1e-6f * glm::length(up))) fail("camera.up", "must not be parallel to the view direction");
-        const glm::vec3 x = glm::normalize(side);
-        const glm::vec3 y = glm::cross(z, x);
-        scene.camera.cameraToWorld = glm::mat4(glm::vec4(x, 0), glm::vec4(y, 0), glm::vec4(z, 0), glm::vec4(position, 1));
+        if (!(glm::length(glm::cross(up, glm::normalize(back))) > 1e-6f * glm::length(up)))
+            fail("camera.up", "must not be parallel to the view direction");
+        float yfov = scene.camera.yfov;
         if (cam.contains("yfov_degrees")) {
-            const float yfov = number(cam["yfov_degrees"], "camera.yfov_degrees");
-            if (!(yfov > 0.0f && yfov < 180.0f)) fail("camera.yfov_degrees", "must be between 0 and 180");
-            scene.camera.yfov = glm::radians(yfov);
+            const float degrees = number(cam["yfov_degrees"], "camera.yfov_degrees");
+            if (!(degrees > 0.0f && degrees < 180.0f)) fail("camera.yfov_degrees", "must be between 0 and 180");
+            yfov = glm::radians(degrees);
         }
+        scene.camera = lookAt(position, target, up, yfov);
         scene.camera.aspect = 0.0f;  // the image decides
         scene.hasCamera = true;
     }

@@ -2,6 +2,7 @@
 // functions against their published constants, and that failed writes leave no file.
 #include "image_io.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
@@ -49,7 +50,7 @@ TEST(Srgb, MatchesTheStandardsBreakpointsAndWhite) {
 TEST(Png, RoundTripIsWithinHalfAnEightBitStep) {
     TempDir dir;
     const Image original = gradient(37, 21);
-    writePng(dir.file("g.png"), original);
+    writePng(dir.file("g.png"), original, {0.0f, ToneMap::Clamp});
     const Image back = readImage(dir.file("g.png"), ChannelEncoding::Srgb);
     ASSERT_EQ(back.width, 37);
     ASSERT_EQ(back.height, 21);
@@ -66,7 +67,7 @@ TEST(Png, RowZeroIsTheTop) {
     image.width = 2;
     image.height = 2;
     image.pixels = {{1, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}};
-    writePng(dir.file("rows.png"), image);
+    writePng(dir.file("rows.png"), image, {0.0f, ToneMap::Clamp});
     const Image back = readImage(dir.file("rows.png"));
     EXPECT_EQ(back.at(0, 0), glm::vec3(1, 0, 0));
     EXPECT_EQ(back.at(1, 1), glm::vec3(0, 0, 1));
@@ -88,6 +89,34 @@ TEST(Png, ExposureAndToneMapping) {
     back = readImage(dir.file("r.png"));
     EXPECT_NEAR(back.at(1, 0).r, 0.5f, 0.005f);    // 1 / (1 + 1)
     EXPECT_NEAR(back.at(2, 0).b, 0.875f, 0.006f);  // 7 / 8
+
+    // ACES (Narkowicz): 1 -> 2.54 / 3.16 = 0.8038; 7 -> 0.9993. It is the default.
+    writePng(dir.file("a.png"), image);
+    back = readImage(dir.file("a.png"));
+    EXPECT_NEAR(back.at(1, 0).r, 0.8038f, 0.006f);
+    EXPECT_NEAR(back.at(2, 0).b, 0.9993f, 0.006f);
+}
+
+TEST(Frame, ExtensionPicksTheFormatAndExrKeepsFloatsAndCounts) {
+    TempDir dir;
+    ExrImage frame{gradient(5, 3), std::vector<float>(15, 7.0f)};
+    frame.image.pixels[4] = glm::vec3(1.0f / 3.0f, 1e-7f, 12345.678f);  // not representable in half
+    writeFrame(dir.file("f.EXR"), frame, {});
+    const ExrImage back = readExr(dir.file("f.EXR"));
+    EXPECT_EQ(back.image.pixels, frame.image.pixels);
+    EXPECT_EQ(back.sampleCount, frame.sampleCount);
+
+    writeFrame(dir.file("f.png"), frame, {0.0f, ToneMap::Clamp});
+    EXPECT_EQ(readImage(dir.file("f.png")).width, 5);
+
+    try {
+        writeFrame(dir.file("f.tiff"), frame, {});
+        FAIL() << "a .tiff name was accepted";
+    } catch (const ImageError& e) {
+        EXPECT_THAT(e.what(), testing::HasSubstr("f.tiff"));
+        EXPECT_THAT(e.what(), testing::HasSubstr("expected .exr or .png"));
+    }
+    EXPECT_FALSE(fs::exists(dir.file("f.tiff")));
 }
 
 TEST(Png, LinearEncodingKeepsTheStoredValues) {

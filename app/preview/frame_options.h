@@ -1,0 +1,35 @@
+#pragma once
+// The options `woven render` and `woven preview` share, so the Render button (and
+// `woven preview --headless --final`) takes a frame exactly as `woven render` does: material
+// edits (--woven), the final frame's settings on top of the scene's, and the display transform
+// of every PNG written or shown.
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image_io.h"
+#include "render_job.h"
+
+namespace woven {
+
+struct FrameOptions {
+    int width = 0, height = 0, spp = 0;  // 0: the scene's, else defaultRenderSettings()'
+    std::string integrator;              // empty: the scene's, else auto
+    uint64_t seed = 0;
+    int maxDepth = 8;
+    std::vector<std::string> woven;      // NAME=JSON, applied in order
+    DisplayTransform display;
+};
+
+// Registers --width --height --spp --integrator --seed --max-depth --woven --exposure --tone-map.
+void addFrameOptions(CLI::App& command, FrameOptions& options);
+
+// The scene with the --woven edits applied.
+void applyWovenOptions(SceneDescription& scene, const FrameOptions& options);
+
+// defaultRenderSettings(scene) with the options that were given.
+RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& options);
+
+}  // namespace woven

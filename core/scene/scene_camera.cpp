@@ -1,0 +1,42 @@
+#include "scene_camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace woven {
+
+SceneBox sceneBounds(const SceneDescription& scene) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const Mesh& m : scene.meshes)
+        for (const glm::vec3& p : m.positions)
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+    if (!(lo.x <= hi.x)) return {glm::vec3(-0.5f), glm::vec3(0.5f)};
+    return {lo, hi};
+}
+
+Camera lookAt(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float yfov) {
+    // +z points from the target back to the eye.
+    const glm::vec3 z = glm::normalize(position - target);
+    const glm::vec3 x = glm::normalize(glm::cross(up, z));
+    const glm::vec3 y = glm::cross(z, x);
+    Camera camera;
+    camera.cameraToWorld = glm::mat4(glm::vec4(x, 0.0f), glm::vec4(y, 0.0f), glm::vec4(z, 0.0f), glm::vec4(position, 1.0f));
+    camera.yfov = yfov;
+    return camera;
+}
+
+Camera framingCamera(const SceneBox& box, float yfov) {
+    constexpr float kPitch = -0.5f;  // radians: looking slightly down
+    const float distance = std::max(box.radius(), 1e-3f) / std::sin(0.5f * yfov) * 1.05f;
+    const glm::vec3 forward(0.0f, std::sin(kPitch), -std::cos(kPitch));
+    return lookAt(box.centre() - distance * forward, box.centre(), glm::vec3(0.0f, 1.0f, 0.0f), yfov);
+}
+
+Camera sceneCamera(const SceneDescription& scene) {
+    return scene.hasCamera ? scene.camera : framingCamera(sceneBounds(scene), scene.camera.yfov);
+}
+
+}  // namespace woven

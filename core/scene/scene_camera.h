@@ -1,0 +1,30 @@
+#pragma once
+// The camera a scene is seen through when nothing else is asked for: its own camera, else one
+// that frames its bounds. `woven render` and the previewer both start from sceneCamera(), so a
+// final frame and the preview it came from look through the same camera, bit for bit.
+#include <glm/glm.hpp>
+
+#include "scene_description.h"
+
+namespace woven {
+
+struct SceneBox {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    glm::vec3 centre() const { return 0.5f * (lo + hi); }
+    float radius() const { return 0.5f * glm::length(hi - lo); }
+};
+// Bounds of every finite vertex; a unit box at the origin when there are none.
+SceneBox sceneBounds(const SceneDescription& scene);
+
+// A camera at `position` looking at `target`, `up` giving the image's vertical (must not be
+// parallel to the view direction). The glTF convention: it looks down its -z axis.
+Camera lookAt(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float yfov);
+
+// Looks at the whole box from the front (-z), slightly above, the bounding sphere filling the
+// vertical field of view with a little margin.
+Camera framingCamera(const SceneBox& box, float yfov);
+
+// The scene's camera if it has one, else framingCamera() of its bounds.
+Camera sceneCamera(const SceneDescription& scene);
+
+}  // namespace woven
