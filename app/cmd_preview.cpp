@@ -25,6 +25,7 @@ struct PreviewCommandOptions {
     std::string screenshot;
     FrameOptions frame;  // --width/--height: also the window's and the screenshot's size
     bool noFilter = false;
+    bool noShadows = false;
     int frames = 0;
     std::string windowScreenshot;
 };
@@ -55,6 +56,7 @@ void runHeadless(const PreviewCommandOptions& o) {
     renderer.setMeshes(scene);
     PreviewOptions options;
     options.filterWeave = !o.noFilter;
+    options.shadows = !o.noShadows;
     const glm::ivec2 size(o.frame.width > 0 ? o.frame.width : 960, o.frame.height > 0 ? o.frame.height : 540);
     renderer.render(scene, PreviewLights::fromScene(scene), camera, size, options);
     writeFrame(o.screenshot, {renderer.radiance(), {}}, o.frame.display);
@@ -71,6 +73,7 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-filter", o->noFilter, "Point-sample the weave even where it is finer than a pixel");
+    cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
     cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->callback([o] {

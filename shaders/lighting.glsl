@@ -1,7 +1,8 @@
 // The scene's lights as the preview sees them (app/preview/preview_lights.cpp builds the list):
 // point, spot and directional lights as they are, emissive triangles as a few point-like
 // samples each, and the environment as a constant ambient radiance integrated against the lobe.
-// No shadows.
+// With PREVIEW_SHADOWS, the strongest lights are occluded through ShadowMaps
+// (app/preview/shadow_maps.cpp); the environment is not.
 #define MAX_LIGHTS 32
 const int LIGHT_POINT = 0, LIGHT_SPOT = 1, LIGHT_DIRECTIONAL = 2, LIGHT_AREA = 3, LIGHT_AREA_TWO_SIDED = 4;
 
@@ -11,17 +12,48 @@ uniform vec4 lightAxis[MAX_LIGHTS];       // spot: direction travelled, w = cos(
 uniform vec4 lightIntensity[MAX_LIGHTS];  // rgb: W/sr, W/m^2, or radiance x area (area); w: spot cos(inner)
 uniform vec3 ambientRadiance;
 
+#ifdef PREVIEW_SHADOWS
+#define MAX_SHADOW_SUNS 2
+uniform samplerCubeArrayShadow shadowCubes;  // distance to the light / shadowFar
+uniform sampler2DArrayShadow shadowSuns;     // orthographic depth
+uniform int shadowIndex[MAX_LIGHTS];         // the light's cube or sun layer; -1: unshadowed
+uniform float shadowFar[MAX_LIGHTS];
+uniform mat4 sunMatrix[MAX_SHADOW_SUNS];
+uniform float sunTexelWorld[MAX_SHADOW_SUNS];
+uniform float cubeSize;
+
+// Fraction of light i that reaches p. The lookup point moves two shadow-map texels along the
+// geometric normal `ng` (on the light's side), so a surface does not shadow itself.
+float lightVisibility(int i, vec3 p, vec3 ng) {
+    int s = shadowIndex[i];
+    if (s < 0) return 1.0;
+    if (int(lightPosition[i].w) == LIGHT_DIRECTIONAL) {
+        vec4 c = sunMatrix[s] * vec4(p + ng * (2.0 * sunTexelWorld[s]), 1.0);
+        vec3 t = c.xyz * 0.5 + 0.5;
+        if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0)))) return 1.0;
+        return texture(shadowSuns, vec4(t.xy, float(s), t.z));
+    }
+    float texel = 2.0 * distance(p, lightPosition[i].xyz) / cubeSize;
+    vec3 d = p + ng * (2.0 * texel) - lightPosition[i].xyz;
+    return texture(shadowCubes, vec4(d, float(s)), length(d) / shadowFar[i]);
+}
+#endif
+
 // Radiance arriving at p from light i along -wi (before the cosine); wi points to the light.
-vec3 incidentLight(int i, vec3 p, out vec3 wi) {
+// `ng`: the geometric normal on the viewer's side; light from below the surface does not reach a
+// reflecting cloth.
+vec3 incidentLight(int i, vec3 p, vec3 ng, out vec3 wi) {
     int type = int(lightPosition[i].w);
     vec3 intensity = lightIntensity[i].rgb;
     if (type == LIGHT_DIRECTIONAL) {
         wi = -normalize(lightPosition[i].xyz);
-        return intensity;
+    } else {
+        vec3 d = lightPosition[i].xyz - p;
+        float dist2 = max(dot(d, d), 1e-12);
+        wi = d * inversesqrt(dist2);
+        intensity /= dist2;
     }
-    vec3 d = lightPosition[i].xyz - p;
-    float dist2 = max(dot(d, d), 1e-12);
-    wi = d * inversesqrt(dist2);
+    if (dot(wi, ng) <= 0.0) return vec3(0.0);
     if (type == LIGHT_SPOT) {
         // glTF KHR_lights_punctual's smooth falloff between the outer and inner cone.
         float cosAngle = dot(-wi, lightAxis[i].xyz);
@@ -31,18 +63,20 @@ vec3 incidentLight(int i, vec3 p, out vec3 wi) {
         float cosLight = dot(-wi, lightAxis[i].xyz);
         intensity *= type == LIGHT_AREA_TWO_SIDED ? abs(cosLight) : max(cosLight, 0.0);
     }
-    return intensity / dist2;
+#ifdef PREVIEW_SHADOWS
+    intensity *= lightVisibility(i, p, ng);
+#endif
+    return intensity;
 }
 
-// Light reflected towards wo by a lobe in frame f at p. `ng`: the geometric normal on the
-// viewer's side; light from below the surface does not reach a reflecting cloth.
+// Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
 vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     vec3 woLocal = toLocal(f, wo);
     vec3 sum = ambientRadiance * ashikhminShirleyAlbedo(lobe, woLocal.z);
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
-        vec3 L = incidentLight(i, p, wi);
-        if (dot(wi, ng) <= 0.0) continue;
+        vec3 L = incidentLight(i, p, ng, wi);
+        if (L == vec3(0.0)) continue;  // below the surface, outside a spot's cone, or in shadow
         vec3 wiLocal = toLocal(f, wi);
         sum += ashikhminShirley(lobe, woLocal, wiLocal) * L * max(wiLocal.z, 0.0);
     }

@@ -86,8 +86,8 @@ vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out flo
     }
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
-        vec3 L = incidentLight(i, p, wi);
-        if (dot(wi, ng) <= 0.0) continue;
+        vec3 L = incidentLight(i, p, ng, wi);
+        if (L == vec3(0.0)) continue;
         vec3 f = vec3(0.0);
         for (int k = 0; k < FILTER_SAMPLES; ++k) {
             vec3 weftWi = toLocal(weftFrame[k], wi), warpWi = toLocal(warpFrame[k], wi);

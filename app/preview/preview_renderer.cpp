@@ -50,6 +50,7 @@ PreviewRenderer::PreviewRenderer() {
     displayProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
                                                       std::vector<std::string>{"display.frag"});
     glGenVertexArrays(1, &emptyVao_);
+    if (ShadowMaps::supported()) shadows_ = std::make_unique<ShadowMaps>();
 }
 
 PreviewRenderer::~PreviewRenderer() {
@@ -62,12 +63,20 @@ PreviewRenderer::~PreviewRenderer() {
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
     tiles_.clear();
-    for (const Mesh& m : scene.meshes)
-        if (!m.triangles.empty()) meshes_.push_back(std::make_unique<GpuMesh>(m));
+    shadowCasters_.clear();
+    ++meshGeneration_;
+    for (const Mesh& m : scene.meshes) {
+        if (m.triangles.empty()) continue;
+        meshes_.push_back(std::make_unique<GpuMesh>(m));
+        // Emitters cast no shadow here: an area light's samples sit on (or in) its own surface.
+        const bool emitter = m.material >= 0 && m.material < int(scene.materials.size()) &&
+                             scene.materials[m.material].emission != glm::vec3(0.0f);
+        if (!emitter) shadowCasters_.push_back(meshes_.back().get());
+    }
 }
 
-const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave) {
-    const std::string preamble = surfaceProgramPreamble(material, filterWeave);
+const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave, bool shadows) {
+    const std::string preamble = surfaceProgramPreamble(material, filterWeave, shadows);
     auto it = programs_.find(preamble);
     if (it == programs_.end()) it = programs_.emplace(preamble, buildSurfaceProgram(preamble)).first;
     return *it->second;
@@ -97,6 +106,12 @@ void PreviewRenderer::ensureTarget(glm::ivec2 size) {
 
 void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
                              glm::ivec2 size, const PreviewOptions& options) {
+    const SceneBox box = sceneBounds(scene);
+    bool shadows = false;
+    if (options.shadows && shadows_) {
+        shadows_->update(shadowCasters_, meshGeneration_, lights, box);
+        shadows = shadows_->any();
+    }
     ensureTarget(size);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, size.x, size.y);
@@ -110,7 +125,6 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    const SceneBox box = sceneBounds(scene);
     const glm::vec3 eye(camera.cameraToWorld[3]);
     const float distance = glm::length(box.centre() - eye);
     const float radius = std::max(box.radius(), 1e-4f);
@@ -125,15 +139,15 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
         const int index = mesh->material();
         const bool valid = index >= 0 && index < int(scene.materials.size());
         drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, camera, viewProjection,
-                 options);
+                 options, shadows);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,
                                const PreviewLights& lights, const Camera& camera, const glm::mat4& viewProjection,
-                               const PreviewOptions& options) {
-    const ShaderProgram& program = surfaceProgram(material, options.filterWeave);
+                               const PreviewOptions& options, bool shadows) {
+    const ShaderProgram& program = surfaceProgram(material, options.filterWeave, shadows);
     glUseProgram(program.id());
     glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniform3fv(program.uniform("cameraPosition"), 1, glm::value_ptr(glm::vec3(camera.cameraToWorld[3])));
@@ -154,6 +168,8 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         glUniform1f(program.uniform("standardExponent"), lobe.exponent);
         glUniform1f(program.uniform("standardRs"), lobe.rs);
     }
+    // After the weave tile's update, which binds on the active unit.
+    if (shadows) shadows_->bind(program, 1, 2);
     mesh.draw();
 }
 

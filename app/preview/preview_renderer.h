@@ -10,6 +10,7 @@
 #include "gpu_mesh.h"
 #include "image_io.h"
 #include "preview_lights.h"
+#include "shadow_maps.h"
 #include "shader_program.h"
 #include "woven_gl_material.h"
 
@@ -17,6 +18,7 @@ namespace woven {
 
 struct PreviewOptions {
     bool filterWeave = true;   // fade to the element-averaged reflectance where the weave is finer than a pixel
+    bool shadows = true;       // occlude the strongest lights (ShadowMaps), where OpenGL 4.0 allows
 };
 
 class PreviewRenderer {
@@ -39,17 +41,20 @@ public:
     Image radiance() const;
 
     // The program a material is drawn with (compiled on first use, then cached).
-    const ShaderProgram& surfaceProgram(const Material& material, bool filterWeave);
+    const ShaderProgram& surfaceProgram(const Material& material, bool filterWeave, bool shadows);
 
 private:
     void ensureTarget(glm::ivec2 size);
     void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
-                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options);
+                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options, bool shadows);
 
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
     std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
     std::unique_ptr<ShaderProgram> displayProgram_;
+    std::unique_ptr<ShadowMaps> shadows_;  // null where the context cannot draw them
+    std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
+    unsigned meshGeneration_ = 0;
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0, emptyVao_ = 0;
     glm::ivec2 size_{0, 0};
 };

@@ -104,6 +104,7 @@ private:
     int presetIndex_ = -1;
     DisplayTransform display_;
     bool filterWeave_ = true;
+    bool shadows_ = true;
     double scroll_ = 0.0;
     std::vector<std::string> droppedPaths_;
     glm::dvec2 lastCursor_{0.0};
@@ -384,6 +385,8 @@ void PreviewWindow::drawPanel() {
     display_.toneMap = ToneMap(toneMap);
     if ((exposureChanged || toneMapChanged) && finalImage_) updateFinalTexture(*finalImage_);
     ImGui::Checkbox("filter distant weave", &filterWeave_);
+    ImGui::SameLine();
+    ImGui::Checkbox("shadows", &shadows_);
     if (ImGui::Button("Frame scene")) {
         const SceneBox box = sceneBounds(scene_);
         camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
@@ -489,6 +492,7 @@ void PreviewWindow::run() {
             camera.aspect = float(width) / float(height);
             PreviewOptions preview;
             preview.filterWeave = filterWeave_;
+            preview.shadows = shadows_;
             try {
                 renderer_->render(scene_, lights_, camera, {width, height}, preview);
                 renderer_->display(0, {0, 0}, display_);

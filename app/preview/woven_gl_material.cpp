@@ -112,8 +112,9 @@ void WeaveTileTexture::update(const WovenParams& p) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
 }
 
-std::string surfaceProgramPreamble(const Material& material, bool filterWeave) {
-    const std::string defines = material.woven ? wovenFeatureDefines(*material.woven, filterWeave) : "";
+std::string surfaceProgramPreamble(const Material& material, bool filterWeave, bool shadows) {
+    std::string defines = material.woven ? wovenFeatureDefines(*material.woven, filterWeave) : "";
+    if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines + wovenParamsGlslStruct();
 }
 

@@ -49,8 +49,9 @@ private:
 
 struct Material;
 
-// The surface program's preamble for a material: feature #defines plus the WovenParams struct.
-std::string surfaceProgramPreamble(const Material& material, bool filterWeave);
+// The surface program's preamble for a material: feature #defines (PREVIEW_SHADOWS when
+// `shadows`) plus the WovenParams struct.
+std::string surfaceProgramPreamble(const Material& material, bool filterWeave, bool shadows);
 // shaders/mesh.vert + the woven.frag chain, compiled with `preamble`.
 std::unique_ptr<ShaderProgram> buildSurfaceProgram(const std::string& preamble);
 

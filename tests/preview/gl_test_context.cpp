@@ -8,12 +8,14 @@ void ensureHeadlessGl() {
     static std::unique_ptr<HeadlessGl> context = HeadlessGl::create();
 }
 
-Image previewRadiance(const SceneDescription& scene, int width, int height, bool filterWeave, bool ambient) {
+Image previewRadiance(const SceneDescription& scene, int width, int height, bool filterWeave, bool ambient,
+                      bool shadows) {
     ensureHeadlessGl();
     PreviewRenderer renderer;
     renderer.setMeshes(scene);
     PreviewOptions options;
     options.filterWeave = filterWeave;
+    options.shadows = shadows;
     PreviewLights lights = PreviewLights::fromScene(scene);
     if (!ambient) lights.ambient = glm::vec3(0.0f);
     renderer.render(scene, lights, scene.camera, {width, height}, options);

@@ -11,8 +11,8 @@ void ensureHeadlessGl();
 
 // The preview frame of `scene` from its own camera, filter on unless told otherwise. With
 // `ambient` false the environment lights nothing (it still shows where the cloth is not),
-// as in a direct-lighting image.
+// as in a direct-lighting image. `shadows` as PreviewOptions::shadows.
 Image previewRadiance(const SceneDescription& scene, int width, int height, bool filterWeave = true,
-                      bool ambient = true);
+                      bool ambient = true, bool shadows = true);
 
 }  // namespace woven::test
