@@ -2,7 +2,8 @@
 // lighting.glsl. Features a material does not use are compiled out by #defines that the C++
 // side picks from its parameters (woven_gl_material.cpp): WOVEN_MATERIAL (else standard),
 // WOVEN_NOISE, WOVEN_CRIMP, WOVEN_GAPS (both yarns narrower than their element) and
-// WOVEN_FILTER (the far-field weave filter).
+// WOVEN_FILTER (the far-field weave filter); BASE_COLOR_TEXTURE for a standard material with a
+// texture; PREVIEW_SHADOWS (lighting.glsl).
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
@@ -12,7 +13,10 @@ layout(location = 0) out vec4 outRadiance;
 uniform vec3 cameraPosition;
 uniform vec3 emission;  // radiance of the front face
 #ifndef WOVEN_MATERIAL
-uniform vec3 baseColor;
+uniform vec3 baseColor;  // diffuse reflectance: base colour x (1 - metallic)
+#ifdef BASE_COLOR_TEXTURE
+uniform sampler2D baseColorTexture;
+#endif
 uniform float standardExponent;
 uniform float standardRs;
 #endif
@@ -168,7 +172,11 @@ void main() {
     if (opacity < ditherThreshold()) discard;
     radiance += ((1.0 - farWeight) * nearOpacity * near + farWeight * far) / opacity;
 #else
-    radiance += reflectedLight(frameFromNormal(n), Lobe(standardExponent, standardExponent, standardRs, baseColor), p, ng, wo);
+    vec3 rd = baseColor;
+#ifdef BASE_COLOR_TEXTURE
+    rd *= texture(baseColorTexture, vUv).rgb;
+#endif
+    radiance += reflectedLight(frameFromNormal(n), Lobe(standardExponent, standardExponent, standardRs, rd), p, ng, wo);
 #endif
     outRadiance = vec4(radiance, 1.0);
 }

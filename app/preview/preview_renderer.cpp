@@ -8,23 +8,11 @@
 
 #include "gl_error.h"
 #include "orbit_camera.h"
+#include "standard_lobe.h"
 
 namespace woven {
 
 namespace {
-
-// The standard fallback material as an isotropic A-S lobe: Blinn-Phong's exponent for the
-// GGX-like alpha = roughness^2, metals tinting the specular reflectance.
-struct StandardLobe {
-    glm::vec3 diffuse;
-    float exponent, rs;
-};
-StandardLobe standardLobe(const Material& m) {
-    const float alpha = std::max(m.roughness * m.roughness, 1e-3f);
-    const float luminance = glm::dot(m.baseColor, glm::vec3(0.2126f, 0.7152f, 0.0722f));
-    return {m.baseColor * (1.0f - m.metallic), std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e4f),
-            0.04f + (luminance - 0.04f) * m.metallic};
-}
 
 void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
     const int n = std::min<int>(int(lights.lights.size()), PreviewLights::kMaxLights);
@@ -58,11 +46,27 @@ PreviewRenderer::~PreviewRenderer() {
     glDeleteTextures(1, &colour_);
     glDeleteRenderbuffers(1, &depth_);
     glDeleteVertexArrays(1, &emptyVao_);
+    glDeleteTextures(GLsizei(textures_.size()), textures_.data());
 }
 
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
     tiles_.clear();
+    glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+    textures_.assign(scene.textures.size(), 0);
+    glGenTextures(GLsizei(textures_.size()), textures_.data());
+    for (size_t t = 0; t < textures_.size(); ++t) {
+        // Row 0 (the image's top) at t = 0, where glTF puts v = 0; linear floats, as core samples them.
+        const Image& image = scene.textures[t];
+        glBindTexture(GL_TEXTURE_2D, textures_[t]);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT, image.pixels.data());
+        glGenerateMipmap(GL_TEXTURE_2D);  // a pixel's average, as core's converged frame has it
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    }
     shadowCasters_.clear();
     ++meshGeneration_;
     for (const Mesh& m : scene.meshes) {
@@ -167,6 +171,11 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         glUniform3fv(program.uniform("baseColor"), 1, glm::value_ptr(lobe.diffuse));
         glUniform1f(program.uniform("standardExponent"), lobe.exponent);
         glUniform1f(program.uniform("standardRs"), lobe.rs);
+        if (material.baseColorTexture >= 0 && material.baseColorTexture < int(textures_.size())) {
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, textures_[material.baseColorTexture]);
+            glUniform1i(program.uniform("baseColorTexture"), 0);
+        }
     }
     // After the weave tile's update, which binds on the active unit.
     if (shadows) shadows_->bind(program, 1, 2);

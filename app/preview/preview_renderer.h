@@ -28,7 +28,7 @@ public:
     PreviewRenderer(const PreviewRenderer&) = delete;
     PreviewRenderer& operator=(const PreviewRenderer&) = delete;
 
-    // Uploads the scene's meshes (materials and lights are read at every render()).
+    // Uploads the scene's meshes and textures (materials and lights are read at every render()).
     void setMeshes(const SceneDescription& scene);
 
     // Renders the radiance image of `camera` at `size` into the internal target.
@@ -51,6 +51,7 @@ private:
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
     std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
+    std::vector<GLuint> textures_;                            // SceneDescription::textures
     std::unique_ptr<ShaderProgram> displayProgram_;
     std::unique_ptr<ShadowMaps> shadows_;  // null where the context cannot draw them
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters

@@ -113,7 +113,8 @@ void WeaveTileTexture::update(const WovenParams& p) {
 }
 
 std::string surfaceProgramPreamble(const Material& material, bool filterWeave, bool shadows) {
-    std::string defines = material.woven ? wovenFeatureDefines(*material.woven, filterWeave) : "";
+    std::string defines = material.woven ? wovenFeatureDefines(*material.woven, filterWeave)
+                          : material.baseColorTexture >= 0 ? "#define BASE_COLOR_TEXTURE\n" : "";
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines + wovenParamsGlslStruct();
 }

@@ -9,6 +9,7 @@
 
 #include "piecewise_constant.h"
 #include "scene_loader.h"
+#include "standard_lobe.h"
 #include "woven_material.h"
 
 namespace woven {
@@ -31,25 +32,13 @@ constexpr float kPositionError = 4.0f * (7.0f * kUnitRoundoff) / (1.0f - 7.0f * 
 // the target's own rounding error is larger.
 constexpr float kShadowEpsilon = 1e-4f;
 
-// The standard fallback material as an Ashikhmin-Shirley lobe:
-//   alpha = roughness^2 (the glTF/Disney remapping), and the isotropic exponent with the same
-//   highlight width as a Beckmann/Blinn lobe of that alpha: e = 2 / alpha^2 - 2, clamped to
-//   [0, 1e4] (roughness 1 gives e = 0, a broad lobe; roughness 0 the sharpest allowed);
-//   rs = mix(0.04, luminance(base colour), metallic): dielectric F0 of 4 %, metals reflect their
-//   colour's brightness (the lobe's Fresnel term is grey);
-//   rd = base colour x (1 - metallic) x texture (bilinear, repeat wrap, sRGB already linear).
+// standardLobe() with its texture.
 struct StandardMaterial {
-    float exponent, rs;
-    glm::vec3 diffuse;
+    StandardLobe lobe;
     const Image* texture;
 
-    StandardMaterial(const Material& m, const std::vector<Image>& textures) {
-        const float alpha = std::max(m.roughness * m.roughness, 1e-4f);
-        exponent = std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e4f);
-        rs = 0.04f + (std::clamp(luminance(m.baseColor), 0.0f, 1.0f) - 0.04f) * m.metallic;
-        diffuse = m.baseColor * (1.0f - m.metallic);
-        texture = m.baseColorTexture >= 0 ? &textures[m.baseColorTexture] : nullptr;
-    }
+    StandardMaterial(const Material& m, const std::vector<Image>& textures)
+        : lobe(standardLobe(m)), texture(m.baseColorTexture >= 0 ? &textures[m.baseColorTexture] : nullptr) {}
 };
 
 int wrap(int i, int n) {
@@ -435,9 +424,10 @@ std::optional<SurfaceBsdf> RenderScene::bsdf(const SurfaceHit& hit, const glm::v
         return shading->bsdf;
     }
     const StandardMaterial& m = impl_->standard[impl_->standardIndex(hit.material)];
-    glm::vec3 rd = m.diffuse;
+    glm::vec3 rd = m.lobe.diffuse;
     if (m.texture) rd *= bilinearRepeat(*m.texture, hit.uv);
-    return SurfaceBsdf(Frame::fromNormal(backSide ? -hit.ns : hit.ns), AshikhminShirley(m.exponent, m.exponent, m.rs, rd));
+    return SurfaceBsdf(Frame::fromNormal(backSide ? -hit.ns : hit.ns),
+                       AshikhminShirley(m.lobe.exponent, m.lobe.exponent, m.lobe.rs, rd));
 }
 
 int RenderScene::lightIndex(const SurfaceHit& hit) const {

@@ -65,11 +65,16 @@ glm::vec3 directLight(const SceneDescription& scene, const SurfaceBsdf& bsdf, co
 
 }  // namespace
 
+glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, int height) {
+    const float tanHalf = std::tan(0.5f * camera.yfov), aspect = float(width) / float(height);
+    const glm::vec3 local((2.0f * x / width - 1.0f) * tanHalf * aspect, (1.0f - 2.0f * y / height) * tanHalf, -1.0f);
+    return glm::normalize(glm::mat3(camera.cameraToWorld) * local);
+}
+
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask) {
     const WovenMaterial material(*scene.materials[0].woven);
     const Camera& cam = scene.camera;
     const glm::vec3 eye(cam.cameraToWorld[3]);
-    const float tanHalf = std::tan(0.5f * cam.yfov), aspect = float(width) / float(height);
     const glm::vec3 dpdu(2, 0, 0), dpdv(0, 0, -2), up(0, 1, 0);
 
     Image image;
@@ -83,10 +88,7 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
             int yarnHits = 0;
             for (int sy = 0; sy < n; ++sy)
                 for (int sx = 0; sx < n; ++sx) {
-                    const float x = 2.0f * (px + (sx + 0.5f) / n) / width - 1.0f;
-                    const float y = 1.0f - 2.0f * (py + (sy + 0.5f) / n) / height;
-                    const glm::vec3 d = glm::normalize(glm::mat3(cam.cameraToWorld) *
-                                                       glm::vec3(x * tanHalf * aspect, y * tanHalf, -1.0f));
+                    const glm::vec3 d = cameraRayDirection(cam, px + (sx + 0.5f) / n, py + (sy + 0.5f) / n, width, height);
                     const float t = -eye.y / d.y;
                     const glm::vec3 p = eye + t * d;
                     glm::vec3 L = scene.environment.color;

@@ -12,6 +12,10 @@ namespace woven::test {
 
 SceneDescription flatClothScene(const WovenParams& material);
 
+// The direction (unit length) of `camera`'s ray through image position (x, y) in pixels of a
+// width x height image, row 0 at the top: the preview's projection.
+glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, int height);
+
 // Core's direct-lighting image of flatClothScene: per pixel the mean over n x n stratified
 // sub-pixel positions of WovenMaterial::shade + SurfaceBsdf::eval times each light's incident
 // radiance and cosine; rays that miss (or pass through a see-through gap) see the environment.

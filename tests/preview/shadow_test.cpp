@@ -38,17 +38,14 @@ void expectShadowWhereGeometrySaysSo(const PunctualLight& light) {
     const Image shadowed = previewRadiance(scene, w, h, true, false, true);
     const Image open = previewRadiance(scene, w, h, true, false, false);
 
-    const Camera& c = scene.camera;
-    const glm::vec3 eye(c.cameraToWorld[3]);
-    const float tanHalf = std::tan(0.5f * c.yfov), aspect = float(w) / float(h);
+    const glm::vec3 eye(scene.camera.cameraToWorld[3]);
     // Pixel centres whose floor point is 0.05 (several shadow-map texels) or more from the
     // shadow's edge; near the edge the filtered lookup is partial, as a soft edge should be.
     constexpr float kMargin = 0.05f;
     size_t inShadow = 0, lit = 0, reachedWithoutShadows = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const glm::vec3 local((2.0f * (x + 0.5f) / w - 1.0f) * tanHalf * aspect, (1.0f - 2.0f * (y + 0.5f) / h) * tanHalf, -1.0f);
-            const glm::vec3 d = glm::vec3(c.cameraToWorld * glm::vec4(local, 0.0f));
+            const glm::vec3 d = cameraRayDirection(scene.camera, x + 0.5f, y + 0.5f, w, h);
             if (d.y >= 0.0f) continue;
             if (insideSquare(eye + d * ((kHeight - eye.y) / d.y)) > -kMargin) continue;  // sees the occluder
             const glm::vec3 p = eye + d * (-eye.y / d.y);
