@@ -61,8 +61,18 @@ run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
   echo "$build/tests/preview/test_preview --gtest_filter='*GlslVsCore*:*Filter*'"
   echo '```'
   echo '```'
-  "$build/tests/preview/test_preview" --gtest_filter='*GlslVsCore*:*Filter*' 2>/dev/null | grep -E 'error|differs' || true
+  "$build/tests/preview/test_preview" --gtest_filter='*GlslVsCore*:*Filter*' 2>/dev/null | grep -E 'error|differs|far field' || true
   echo '```'
+  echo
+  echo "## The preview beside the Render button's frame"
+  echo
+  echo "The GLSL preview (direct light, shadow maps, ambient environment) and the frame the Render"
+  echo 'button (or `woven render` with the same options) makes, default scene.'
+  run "$woven" preview assets/default_scene.json --headless --width 480 --height 360 --screenshot "$out/preview_default.png"
+  run "$woven" preview assets/default_scene.json --headless --final --width 480 --height 360 --spp 256 \
+      --screenshot "$out/final_default.png"
+  echo
+  echo "![preview]($(basename "$out")/preview_default.png) ![final]($(basename "$out")/final_default.png)"
   echo
   echo "## The source paper's figures"
   echo

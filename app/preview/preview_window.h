@@ -11,8 +11,9 @@ namespace woven {
 
 struct PreviewWindowOptions {
     std::string scene;           // empty: the procedural cloth
-    // --woven edits, the display transform, and the Render button's settings (as `woven render`
-    // takes them; the size defaults to the window's) ; width/height: the window's (else 1280x800).
+    // The --woven edits, the display transform and the Render button's settings, as `woven render`
+    // takes them. width/height also size the window (default 1280x800); the Render button's size
+    // is the scene's, else the window's.
     FrameOptions frame;
     int frames = 0;              // quit after this many frames; 0 = until the window is closed
     std::string screenshot;      // PNG of the last frame (panel included), written before quitting
