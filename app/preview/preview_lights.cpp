@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "environment_mapping.h"
+
 namespace woven {
 
 namespace {
@@ -38,22 +40,80 @@ PreviewLight sampleOf(const EmissiveTriangle* first, const EmissiveTriangle* las
 
 }  // namespace
 
-glm::vec3 meanEnvironmentRadiance(const Environment& env) {
-    if (!env.image || env.image->width == 0 || env.image->height == 0) return env.color;
-    const Image& im = *env.image;
-    glm::dvec3 sum(0.0);
-    double weight = 0.0;
-    for (int y = 0; y < im.height; ++y) {
-        const double w = std::sin(M_PI * (y + 0.5) / im.height);  // solid angle of the row
-        for (int x = 0; x < im.width; ++x) sum += w * glm::dvec3(im.at(x, y));
-        weight += w * im.width;
+EnvironmentLights environmentLights(const Environment& env, int maxLights) {
+    EnvironmentLights out;
+    if (!env.image || env.image->width == 0 || env.image->height == 0) {
+        out.ambient = env.color;
+        return out;
     }
-    return env.color * glm::vec3(sum / weight);
+    const Image& im = *env.image;
+    // Cells of at most 128 x 64 pixels' worth: radiance x solid angle summed exactly per pixel.
+    const int gw = std::min(im.width, 128), gh = std::min(im.height, 64);
+    std::vector<glm::dvec3> power(size_t(gw) * gh, glm::dvec3(0.0));  // sum of L dOmega
+    std::vector<double> solidAngle(size_t(gw) * gh, 0.0);
+    for (int y = 0; y < im.height; ++y) {
+        const double dOmega = 2.0 * M_PI / im.width * (std::cos(M_PI * y / im.height) - std::cos(M_PI * (y + 1) / im.height));
+        const int cy = int(int64_t(y) * gh / im.height);
+        for (int x = 0; x < im.width; ++x) {
+            const size_t cell = size_t(cy) * gw + size_t(int64_t(x) * gw / im.width);
+            power[cell] += dOmega * glm::dvec3(im.at(x, y));
+            solidAngle[cell] += dOmega;
+        }
+    }
+    auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    glm::dvec3 total(0.0);
+    for (const glm::dvec3& p : power) total += p;
+    const double meanLuminance = luminance(total) / (4.0 * M_PI);
+
+    // Connected bright regions (4-neighbours, wrapping around in u).
+    std::vector<int> region(power.size(), -1);
+    struct Region {
+        glm::dvec3 power{0.0}, direction{0.0};
+    };
+    std::vector<Region> regions;
+    auto bright = [&](size_t c) { return solidAngle[c] > 0.0 && luminance(power[c]) / solidAngle[c] > 8.0 * meanLuminance; };
+    for (size_t seed = 0; seed < power.size(); ++seed) {
+        if (region[seed] >= 0 || meanLuminance <= 0.0 || !bright(seed)) continue;
+        Region r;
+        std::vector<size_t> stack{seed};
+        region[seed] = int(regions.size());
+        while (!stack.empty()) {
+            const size_t c = stack.back();
+            stack.pop_back();
+            const int cx = int(c % gw), cy = int(c / gw);
+            r.power += power[c];
+            r.direction += luminance(power[c]) * glm::dvec3(equirectDirection({(cx + 0.5f) / gw, (cy + 0.5f) / gh}));
+            const int nx[4] = {(cx + 1) % gw, (cx + gw - 1) % gw, cx, cx}, ny[4] = {cy, cy, cy - 1, cy + 1};
+            for (int k = 0; k < 4; ++k) {
+                if (ny[k] < 0 || ny[k] >= gh) continue;
+                const size_t n = size_t(ny[k]) * gw + nx[k];
+                if (region[n] < 0 && bright(n)) {
+                    region[n] = int(regions.size());
+                    stack.push_back(n);
+                }
+            }
+        }
+        regions.push_back(r);
+    }
+    std::sort(regions.begin(), regions.end(),
+              [&](const Region& a, const Region& b) { return luminance(a.power) > luminance(b.power); });
+    glm::dvec3 rest = total;
+    for (const Region& r : regions) {
+        if (int(out.lights.size()) == maxLights || glm::length(r.direction) == 0.0) break;
+        PreviewLight l;
+        l.type = PreviewLight::Directional;
+        // From the region's direction, travelling the other way.
+        l.position = -rotateY(glm::normalize(glm::vec3(r.direction)), env.rotation);
+        l.intensity = env.color * glm::vec3(r.power);
+        out.lights.push_back(l);
+        rest -= r.power;
+    }
+    out.ambient = env.color * glm::vec3(glm::max(rest, glm::dvec3(0.0)) / (4.0 * M_PI));
+    return out;
 }
 
 PreviewLights PreviewLights::fromScene(const SceneDescription& scene) {
     PreviewLights out;
-    out.ambient = out.background = meanEnvironmentRadiance(scene.environment);
     for (const PunctualLight& p : scene.lights) {
         if (int(out.lights.size()) == kMaxLights) break;
         PreviewLight l;
@@ -71,6 +131,12 @@ PreviewLights PreviewLights::fromScene(const SceneDescription& scene) {
         }
         out.lights.push_back(l);
     }
+    constexpr int kEnvironmentLights = 4;
+    EnvironmentLights environment =
+        environmentLights(scene.environment, std::min(kEnvironmentLights, kMaxLights - int(out.lights.size())));
+    out.ambient = environment.ambient;
+    out.lights.insert(out.lights.end(), environment.lights.begin(), environment.lights.end());
+
     std::vector<EmissiveTriangle> emissive;
     for (const Mesh& m : scene.meshes) {
         if (m.material < 0 || m.material >= int(scene.materials.size())) continue;

@@ -1,7 +1,8 @@
 #pragma once
 // The scene's lights reduced to what the preview shader evaluates per pixel (see
 // shaders/lighting.glsl): punctual lights as they are, each emissive mesh as a few point-like
-// samples of its triangles, the environment as one ambient radiance. Plain data, no GL.
+// samples of its triangles, the environment's bright compact regions (a sun, a softbox) as
+// directional lights and the rest of it as one ambient radiance. Plain data, no GL.
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -21,17 +22,22 @@ struct PreviewLight {
 struct PreviewLights {
     static constexpr int kMaxLights = 32;  // MAX_LIGHTS in lighting.glsl
     std::vector<PreviewLight> lights;
-    glm::vec3 ambient{0.0f};     // constant environment radiance lighting the surfaces
-    glm::vec3 background{0.0f};  // what rays that miss everything see (the same mean)
+    glm::vec3 ambient{0.0f};  // constant environment radiance lighting the surfaces
 
-    // The scene's punctual lights, its emissive triangles (split into up to 4 samples each
-    // while the budget of kMaxLights allows, merged into clusters when there are too many) and
-    // its environment's mean radiance.
+    // The scene's punctual lights, its environment (environmentLights()), and its emissive
+    // triangles (split into up to 4 samples each while the budget of kMaxLights allows, merged
+    // into clusters when there are too many).
     static PreviewLights fromScene(const SceneDescription& scene);
 };
 
-// Mean radiance of an environment over the sphere (the equirectangular image weighted by solid
-// angle, times the colour).
-glm::vec3 meanEnvironmentRadiance(const Environment& env);
+// An environment as up to `maxLights` directional lights, one per connected region of the
+// image brighter than 8x its mean (the brightest regions first, each carrying its irradiance
+// sum L dOmega, from its luminance-weighted mean direction), plus the constant radiance that
+// keeps the rest of its energy. A constant environment is all ambient.
+struct EnvironmentLights {
+    std::vector<PreviewLight> lights;
+    glm::vec3 ambient{0.0f};
+};
+EnvironmentLights environmentLights(const Environment& env, int maxLights);
 
 }  // namespace woven

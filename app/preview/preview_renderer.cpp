@@ -37,6 +37,8 @@ void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
 PreviewRenderer::PreviewRenderer() {
     displayProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
                                                       std::vector<std::string>{"display.frag"});
+    environmentProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
+                                                          std::vector<std::string>{"environment.frag"});
     glGenVertexArrays(1, &emptyVao_);
     if (ShadowMaps::supported()) shadows_ = std::make_unique<ShadowMaps>();
 }
@@ -47,6 +49,7 @@ PreviewRenderer::~PreviewRenderer() {
     glDeleteRenderbuffers(1, &depth_);
     glDeleteVertexArrays(1, &emptyVao_);
     glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+    glDeleteTextures(1, &environmentTexture_);
 }
 
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
@@ -69,6 +72,16 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     }
     shadowCasters_.clear();
     ++meshGeneration_;
+    glDeleteTextures(1, &environmentTexture_);
+    environmentTexture_ = 0;
+    if (const auto& image = scene.environment.image; image && image->width > 0 && image->height > 0) {
+        glGenTextures(1, &environmentTexture_);
+        glBindTexture(GL_TEXTURE_2D, environmentTexture_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image->width, image->height, 0, GL_RGB, GL_FLOAT, image->pixels.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
     for (const Mesh& m : scene.meshes) {
         if (m.triangles.empty()) continue;
         meshes_.push_back(std::make_unique<GpuMesh>(m));
@@ -119,11 +132,13 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     ensureTarget(size);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, size.x, size.y);
-    // Rays that miss everything see the environment; its mean stands in for it here.
-    const glm::vec3 background = lights.background;
+    // Rays that miss everything see the environment: a constant one is the clear colour, an
+    // image is drawn over it.
+    const glm::vec3 background = environmentTexture_ ? glm::vec3(0.0f) : scene.environment.color;
     glClearColor(background.r, background.g, background.b, 1.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (environmentTexture_) drawEnvironment(scene.environment, camera, size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
@@ -146,6 +161,25 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
                  options, shadows);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PreviewRenderer::drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size) {
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(environmentProgram_->id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, environmentTexture_);
+    glUniform1i(environmentProgram_->uniform("environmentImage"), 0);
+    glUniform3fv(environmentProgram_->uniform("environmentColor"), 1, glm::value_ptr(environment.color));
+    glUniform1f(environmentProgram_->uniform("environmentRotation"), environment.rotation);
+    const glm::mat3 rotation(camera.cameraToWorld);
+    glUniformMatrix3fv(environmentProgram_->uniform("cameraRotation"), 1, GL_FALSE, glm::value_ptr(rotation));
+    const float tanHalf = std::tan(0.5f * camera.yfov);
+    const float aspect = camera.aspect > 0.0f ? camera.aspect : float(size.x) / float(size.y);
+    glUniform2f(environmentProgram_->uniform("tanHalfFov"), tanHalf * aspect, tanHalf);
+    glUniform2f(environmentProgram_->uniform("viewportSize"), float(size.x), float(size.y));
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
 }
 
 void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,

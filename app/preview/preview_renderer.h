@@ -28,7 +28,8 @@ public:
     PreviewRenderer(const PreviewRenderer&) = delete;
     PreviewRenderer& operator=(const PreviewRenderer&) = delete;
 
-    // Uploads the scene's meshes and textures (materials and lights are read at every render()).
+    // Uploads the scene's meshes, textures and environment image (materials, lights and the
+    // environment's colour and rotation are read at every render()).
     void setMeshes(const SceneDescription& scene);
 
     // Renders the radiance image of `camera` at `size` into the internal target.
@@ -45,6 +46,7 @@ public:
 
 private:
     void ensureTarget(glm::ivec2 size);
+    void drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size);
     void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
                   const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options, bool shadows);
 
@@ -52,7 +54,8 @@ private:
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
     std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
     std::vector<GLuint> textures_;                            // SceneDescription::textures
-    std::unique_ptr<ShaderProgram> displayProgram_;
+    std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_;
+    GLuint environmentTexture_ = 0;  // 0: a constant environment, drawn by the clear colour
     std::unique_ptr<ShadowMaps> shadows_;  // null where the context cannot draw them
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
     unsigned meshGeneration_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "environment_mapping.h"
 #include "frame.h"
 #include "piecewise_constant.h"
 #include "sampling.h"
@@ -29,31 +30,6 @@ glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
     const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     const float phi = 2.0f * kPi * u.y;
     return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-}
-
-// The environment image's mapping (scene_description.h): equirectangular, +y up; u = 0 looks
-// towards -z and u grows towards +x (u = 0.25 is +x, 0.5 is +z, 0.75 is -x); v = 0 is the top
-// row (+y), v = 1 the bottom (-y). So theta = pi v from +y and phi = 2 pi u from -z towards +x:
-//     dir = (sin theta sin phi, cos theta, -sin theta cos phi)
-// Environment::rotation turns the image about +y by the right-hand rule (a positive angle takes
-// the image's -z towards -x, as seen from above).
-glm::vec3 equirectDirection(const glm::vec2& uv) {
-    const float theta = kPi * uv.y, phi = 2.0f * kPi * uv.x;
-    const float sinTheta = std::sin(theta);
-    return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
-}
-
-glm::vec2 equirectUv(const glm::vec3& d) {
-    float phi = std::atan2(d.x, -d.z);
-    if (phi < 0.0f) phi += 2.0f * kPi;
-    // atan2 rather than acos(d.y): accurate near the poles too, where sampling and pdfLi must agree.
-    const float theta = std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y);
-    return {phi / (2.0f * kPi), theta / kPi};
-}
-
-glm::vec3 rotateY(const glm::vec3& d, float angle) {
-    const float c = std::cos(angle), s = std::sin(angle);
-    return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
 }
 
 float average(const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; }
