@@ -1,8 +1,8 @@
 // The scene's lights as the preview sees them (app/preview/preview_lights.cpp builds the list):
 // point, spot and directional lights as they are, emissive triangles as a few point-like
-// samples each, and the environment as a constant ambient radiance integrated against the lobe.
-// With PREVIEW_SHADOWS, the strongest lights are occluded through ShadowMaps
-// (app/preview/shadow_maps.cpp); the environment is not.
+// samples each, the environment's brightest regions as directional lights and the rest of it as
+// a constant ambient radiance integrated against the lobe. With PREVIEW_SHADOWS, the strongest
+// lights are occluded through ShadowMaps (app/preview/shadow_maps.cpp); the ambient is not.
 #define MAX_LIGHTS 32
 const int LIGHT_POINT = 0, LIGHT_SPOT = 1, LIGHT_DIRECTIONAL = 2, LIGHT_AREA = 3, LIGHT_AREA_TWO_SIDED = 4;
 
