@@ -38,6 +38,7 @@ SceneDescription openScene(const PreviewCommandOptions& o) {
 
 void runHeadless(const PreviewCommandOptions& o) {
     if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png (or .exr)");
+    checkFrameFileName(o.screenshot);
     const SceneDescription scene = openScene(o);
     const Camera camera = OrbitCamera::forScene(scene).camera();
     if (o.final) {  // the Render button's path: core's RenderJob for the preview's camera

@@ -47,12 +47,6 @@ private:
     struct sigaction previous_ {};
 };
 
-std::string lowerExtension(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return e;
-}
-
 // "out.exr" -> "out.partial.exr": an interrupted render never takes the final name.
 std::string partialName(const std::string& path) {
     const std::filesystem::path p(path);
@@ -78,9 +72,7 @@ std::string progressStatus(const RenderProgress& p, bool timeLimited) {
 
 int runRender(RenderOptions o) {
     if (o.out.empty()) o.out = std::filesystem::path(o.scene).stem().string() + ".exr";
-    const std::string extension = lowerExtension(o.out);
-    if (extension != ".exr" && extension != ".png")
-        throw std::invalid_argument("--out '" + o.out + "': unknown image type (expected .exr or .png)");
+    checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene));
     applyWovenOptions(*scene, o.frame);

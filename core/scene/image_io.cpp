@@ -240,12 +240,24 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     });
 }
 
-void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png) {
+namespace {
+std::string lowerExtension(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".exr") writeExr(path, frame, ExrPrecision::Float);
-    else if (extension == ".png") writePng(path, frame.image, png);
-    else fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
+    return extension;
+}
+}  // namespace
+
+void checkFrameFileName(const std::string& path) {
+    const std::string extension = lowerExtension(path);
+    if (extension != ".exr" && extension != ".png")
+        fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
+}
+
+void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png) {
+    checkFrameFileName(path);
+    if (lowerExtension(path) == ".exr") writeExr(path, frame, ExrPrecision::Float);
+    else writePng(path, frame.image, png);
 }
 
 }  // namespace woven

@@ -58,6 +58,8 @@ ExrImage readExr(const std::string& path);
 // A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
 // 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
+// Throws the ImageError writeFrame would for `path`'s extension: check before a long render.
+void checkFrameFileName(const std::string& path);
 
 // The sRGB transfer functions (IEC 61966-2-1), on one channel.
 float srgbToLinear(float encoded);
