@@ -58,7 +58,9 @@ void runHeadless(const PreviewCommandOptions& o) {
     PreviewOptions options;
     options.filterWeave = !o.noFilter;
     options.shadows = !o.noShadows;
-    const glm::ivec2 size(o.frame.width > 0 ? o.frame.width : 960, o.frame.height > 0 ? o.frame.height : 540);
+    // The size the Render button's frame would have, so both frame the scene alike.
+    const RenderSettings settings = frameSettings(scene, o.frame);
+    const glm::ivec2 size(settings.width, settings.height);
     renderer.render(scene, PreviewLights::fromScene(scene), camera, size, options);
     writeFrame(o.screenshot, {renderer.radiance(), {}}, o.frame.display);
 }

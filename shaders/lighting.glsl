@@ -13,29 +13,33 @@ uniform vec4 lightIntensity[MAX_LIGHTS];  // rgb: W/sr, W/m^2, or radiance x are
 uniform vec3 ambientRadiance;
 
 #ifdef PREVIEW_SHADOWS
-#define MAX_SHADOW_SUNS 2
+#define MAX_SHADOW_MAPS 8
 uniform samplerCubeArrayShadow shadowCubes;  // distance to the light / shadowFar
-uniform sampler2DArrayShadow shadowSuns;     // orthographic depth
-uniform int shadowIndex[MAX_LIGHTS];         // the light's cube or sun layer; -1: unshadowed
+uniform sampler2DArrayShadow shadowFlats;    // perspective or orthographic depth
+uniform int shadowCube[MAX_LIGHTS];          // the light's cube map, -1: none
+uniform int shadowFlat[MAX_LIGHTS];          // the light's flat map, -1: none
 uniform float shadowFar[MAX_LIGHTS];
-uniform mat4 sunMatrix[MAX_SHADOW_SUNS];
-uniform float sunTexelWorld[MAX_SHADOW_SUNS];
+uniform mat4 flatMatrix[MAX_SHADOW_MAPS];
+uniform vec2 flatTexel[MAX_SHADOW_MAPS];     // texel size: x world units, + y per unit of distance
 uniform float cubeSize;
 
 // Fraction of light i that reaches p. The lookup point moves two shadow-map texels along the
 // geometric normal `ng` (on the light's side), so a surface does not shadow itself.
 float lightVisibility(int i, vec3 p, vec3 ng) {
-    int s = shadowIndex[i];
-    if (s < 0) return 1.0;
-    if (int(lightPosition[i].w) == LIGHT_DIRECTIONAL) {
-        vec4 c = sunMatrix[s] * vec4(p + ng * (2.0 * sunTexelWorld[s]), 1.0);
-        vec3 t = c.xyz * 0.5 + 0.5;
-        if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0)))) return 1.0;
-        return texture(shadowSuns, vec4(t.xy, float(s), t.z));
+    int c = shadowCube[i];
+    if (c >= 0) {
+        float texel = 2.0 * distance(p, lightPosition[i].xyz) / cubeSize;
+        vec3 d = p + ng * (2.0 * texel) - lightPosition[i].xyz;
+        return texture(shadowCubes, vec4(d, float(c)), length(d) / shadowFar[i]);
     }
-    float texel = 2.0 * distance(p, lightPosition[i].xyz) / cubeSize;
-    vec3 d = p + ng * (2.0 * texel) - lightPosition[i].xyz;
-    return texture(shadowCubes, vec4(d, float(s)), length(d) / shadowFar[i]);
+    int f = shadowFlat[i];
+    if (f < 0) return 1.0;
+    // (For a directional light lightPosition is a direction and flatTexel[f].y is 0.)
+    float texel = flatTexel[f].x + flatTexel[f].y * distance(p, lightPosition[i].xyz);
+    vec4 q = flatMatrix[f] * vec4(p + ng * (2.0 * texel), 1.0);
+    vec3 t = q.xyz / q.w * 0.5 + 0.5;
+    if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0)))) return 1.0;
+    return texture(shadowFlats, vec4(t.xy, float(f), t.z));
 }
 #endif
 

@@ -95,7 +95,8 @@ vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out flo
         vec3 f = vec3(0.0);
         for (int k = 0; k < FILTER_SAMPLES; ++k) {
             vec3 weftWi = toLocal(weftFrame[k], wi), warpWi = toLocal(warpFrame[k], wi);
-            f += yarnArea.x * ashikhminShirley(weft, weftWo[k], weftWi) * max(weftWi.z, 0.0) +
+            // No test for a yarn type with no area: its lobe is finite, so it adds 0.
+        f += yarnArea.x * ashikhminShirley(weft, weftWo[k], weftWi) * max(weftWi.z, 0.0) +
                  yarnArea.y * ashikhminShirley(warp, warpWo[k], warpWi) * max(warpWi.z, 0.0);
         }
         sum += f * L;

@@ -18,6 +18,7 @@ OrbitCamera OrbitCamera::around(const Camera& camera, const SceneBox& box) {
     c.distance_ = std::max(depth > 0.0f ? depth : box.radius(), 1e-4f);
     c.pivot_ = position + c.distance_ * forward;
     c.yfov_ = camera.yfov;
+    c.aspect_ = camera.aspect;
     c.pitch_ = std::clamp(std::asin(std::clamp(forward.y, -1.0f, 1.0f)), -kMaxPitch, kMaxPitch);
     c.yaw_ = std::atan2(forward.x, -forward.z);
     return c;
@@ -48,7 +49,9 @@ Camera OrbitCamera::camera() const {
     if (initial_) return *initial_;
     // forward from yaw (about +y, 0 = looking down -z) and pitch (positive looks up).
     const glm::vec3 forward(std::sin(yaw_) * std::cos(pitch_), std::sin(pitch_), -std::cos(yaw_) * std::cos(pitch_));
-    return lookAt(pivot_ - distance_ * forward, pivot_, glm::vec3(0.0f, 1.0f, 0.0f), yfov_);
+    Camera c = lookAt(pivot_ - distance_ * forward, pivot_, glm::vec3(0.0f, 1.0f, 0.0f), yfov_);
+    c.aspect = aspect_;
+    return c;
 }
 
 }  // namespace woven

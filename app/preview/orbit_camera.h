@@ -1,7 +1,8 @@
 #pragma once
 // The previewer's interactive camera: it orbits a pivot point at some distance, pans the pivot
-// and zooms the distance, keeping +y up. Until it is first moved it is exactly the camera it
-// started from (roll and aspect included), so the Render button's first frame is `woven render`'s.
+// and zooms the distance, keeping +y up and the field of view and aspect ratio. Until it is
+// first moved it is exactly the camera it started from (roll included), so the Render button's
+// first frame is `woven render`'s.
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -28,7 +29,7 @@ public:
 private:
     std::optional<Camera> initial_;  // until moved
     glm::vec3 pivot_{0.0f};
-    float distance_ = 1.0f, yaw_ = 0.0f, pitch_ = 0.0f, yfov_ = 0.6911f;
+    float distance_ = 1.0f, yaw_ = 0.0f, pitch_ = 0.0f, yfov_ = 0.6911f, aspect_ = 0.0f;
 };
 
 }  // namespace woven

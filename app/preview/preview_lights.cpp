@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "environment_mapping.h"
 
@@ -40,13 +41,12 @@ PreviewLight sampleOf(const EmissiveTriangle* first, const EmissiveTriangle* las
 
 }  // namespace
 
-EnvironmentLights environmentLights(const Environment& env, int maxLights) {
+namespace {
+
+// environmentLights() for a white environment: the image's analysis, which only the image and
+// the rotation change.
+EnvironmentLights analyseEnvironmentImage(const Image& im, float rotation, int maxLights) {
     EnvironmentLights out;
-    if (!env.image || env.image->width == 0 || env.image->height == 0) {
-        out.ambient = env.color;
-        return out;
-    }
-    const Image& im = *env.image;
     // Cells of at most 128 x 64 pixels' worth: radiance x solid angle summed exactly per pixel.
     const int gw = std::min(im.width, 128), gh = std::min(im.height, 64);
     std::vector<glm::dvec3> power(size_t(gw) * gh, glm::dvec3(0.0));  // sum of L dOmega
@@ -56,11 +56,11 @@ EnvironmentLights environmentLights(const Environment& env, int maxLights) {
         const int cy = int(int64_t(y) * gh / im.height);
         for (int x = 0; x < im.width; ++x) {
             const size_t cell = size_t(cy) * gw + size_t(int64_t(x) * gw / im.width);
-            power[cell] += dOmega * glm::dvec3(im.at(x, y));
+            power[cell] += dOmega * glm::dvec3(glm::max(im.at(x, y), glm::vec3(0.0f)));  // as core's light
             solidAngle[cell] += dOmega;
         }
     }
-    auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    auto luminance = [](const glm::dvec3& c) { return double(woven::luminance(glm::vec3(c))); };
     glm::dvec3 total(0.0);
     for (const glm::dvec3& p : power) total += p;
     const double meanLuminance = luminance(total) / (4.0 * M_PI);
@@ -75,6 +75,7 @@ EnvironmentLights environmentLights(const Environment& env, int maxLights) {
     for (size_t seed = 0; seed < power.size(); ++seed) {
         if (region[seed] >= 0 || meanLuminance <= 0.0 || !bright(seed)) continue;
         Region r;
+        double regionLuminance = 0.0;
         std::vector<size_t> stack{seed};
         region[seed] = int(regions.size());
         while (!stack.empty()) {
@@ -82,6 +83,7 @@ EnvironmentLights environmentLights(const Environment& env, int maxLights) {
             stack.pop_back();
             const int cx = int(c % gw), cy = int(c / gw);
             r.power += power[c];
+            regionLuminance += luminance(power[c]);
             r.direction += luminance(power[c]) * glm::dvec3(equirectDirection({(cx + 0.5f) / gw, (cy + 0.5f) / gh}));
             const int nx[4] = {(cx + 1) % gw, (cx + gw - 1) % gw, cx, cx}, ny[4] = {cy, cy, cy - 1, cy + 1};
             for (int k = 0; k < 4; ++k) {
@@ -93,22 +95,45 @@ EnvironmentLights environmentLights(const Environment& env, int maxLights) {
                 }
             }
         }
-        regions.push_back(r);
+        // A region that wraps around (a ring, a band of horizon glow) has no one direction: it
+        // stays ambient.
+        if (glm::length(r.direction) >= 0.9 * regionLuminance) regions.push_back(r);
     }
     std::sort(regions.begin(), regions.end(),
               [&](const Region& a, const Region& b) { return luminance(a.power) > luminance(b.power); });
     glm::dvec3 rest = total;
     for (const Region& r : regions) {
-        if (int(out.lights.size()) == maxLights || glm::length(r.direction) == 0.0) break;
+        if (int(out.lights.size()) == maxLights) break;
         PreviewLight l;
         l.type = PreviewLight::Directional;
         // From the region's direction, travelling the other way.
-        l.position = -rotateY(glm::normalize(glm::vec3(r.direction)), env.rotation);
-        l.intensity = env.color * glm::vec3(r.power);
+        l.position = -rotateY(glm::normalize(glm::vec3(r.direction)), rotation);
+        l.intensity = glm::vec3(r.power);
         out.lights.push_back(l);
         rest -= r.power;
     }
-    out.ambient = env.color * glm::vec3(glm::max(rest, glm::dvec3(0.0)) / (4.0 * M_PI));
+    out.ambient = glm::vec3(glm::max(rest, glm::dvec3(0.0)) / (4.0 * M_PI));
+    return out;
+}
+
+}  // namespace
+
+EnvironmentLights environmentLights(const Environment& env, int maxLights) {
+    if (!env.image || env.image->width == 0 || env.image->height == 0) return {{}, env.color};
+    // The window calls this for every light edit: the image is analysed once (per rotation).
+    static std::weak_ptr<const Image> cachedImage;
+    static float cachedRotation = 0.0f;
+    static int cachedMaxLights = -1;
+    static EnvironmentLights cached;
+    if (cachedImage.lock() != env.image || cachedRotation != env.rotation || cachedMaxLights != maxLights) {
+        cached = analyseEnvironmentImage(*env.image, env.rotation, maxLights);
+        cachedImage = env.image;
+        cachedRotation = env.rotation;
+        cachedMaxLights = maxLights;
+    }
+    EnvironmentLights out = cached;
+    for (PreviewLight& l : out.lights) l.intensity *= env.color;
+    out.ambient *= env.color;
     return out;
 }
 

@@ -32,8 +32,9 @@ struct PreviewLights {
 
 // An environment as up to `maxLights` directional lights, one per connected region of the
 // image brighter than 8x its mean (the brightest regions first, each carrying its irradiance
-// sum L dOmega, from its luminance-weighted mean direction), plus the constant radiance that
-// keeps the rest of its energy. A constant environment is all ambient.
+// sum L dOmega, from its luminance-weighted mean direction; a region without one direction,
+// such as a ring, is left out), plus the constant radiance that keeps the rest of its energy.
+// A constant environment is all ambient. Negative pixels count as 0, as in core.
 struct EnvironmentLights {
     std::vector<PreviewLight> lights;
     glm::vec3 ambient{0.0f};

@@ -40,7 +40,7 @@ PreviewRenderer::PreviewRenderer() {
     environmentProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
                                                           std::vector<std::string>{"environment.frag"});
     glGenVertexArrays(1, &emptyVao_);
-    if (ShadowMaps::supported()) shadows_ = std::make_unique<ShadowMaps>();
+    shadows_ = std::make_unique<ShadowMaps>();
 }
 
 PreviewRenderer::~PreviewRenderer() {
@@ -77,8 +77,10 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     if (const auto& image = scene.environment.image; image && image->width > 0 && image->height > 0) {
         glGenTextures(1, &environmentTexture_);
         glBindTexture(GL_TEXTURE_2D, environmentTexture_);
+        std::vector<glm::vec3> radiance(image->pixels.size());
+        for (size_t i = 0; i < radiance.size(); ++i) radiance[i] = glm::max(image->pixels[i], glm::vec3(0.0f));  // as core
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image->width, image->height, 0, GL_RGB, GL_FLOAT, image->pixels.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image->width, image->height, 0, GL_RGB, GL_FLOAT, radiance.data());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
@@ -205,7 +207,10 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         glUniform3fv(program.uniform("baseColor"), 1, glm::value_ptr(lobe.diffuse));
         glUniform1f(program.uniform("standardExponent"), lobe.exponent);
         glUniform1f(program.uniform("standardRs"), lobe.rs);
-        if (material.baseColorTexture >= 0 && material.baseColorTexture < int(textures_.size())) {
+        if (material.baseColorTexture >= 0) {
+            if (material.baseColorTexture >= int(textures_.size()))
+                throw GlError("material '" + material.name + "': texture " + std::to_string(material.baseColorTexture) +
+                              " does not exist");
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, textures_[material.baseColorTexture]);
             glUniform1i(program.uniform("baseColorTexture"), 0);

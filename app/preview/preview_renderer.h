@@ -18,7 +18,7 @@ namespace woven {
 
 struct PreviewOptions {
     bool filterWeave = true;   // fade to the element-averaged reflectance where the weave is finer than a pixel
-    bool shadows = true;       // occlude the strongest lights (ShadowMaps), where OpenGL 4.0 allows
+    bool shadows = true;       // occlude the strongest lights (ShadowMaps)
 };
 
 class PreviewRenderer {
@@ -56,7 +56,7 @@ private:
     std::vector<GLuint> textures_;                            // SceneDescription::textures
     std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_;
     GLuint environmentTexture_ = 0;  // 0: a constant environment, drawn by the clear colour
-    std::unique_ptr<ShadowMaps> shadows_;  // null where the context cannot draw them
+    std::unique_ptr<ShadowMaps> shadows_;
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
     unsigned meshGeneration_ = 0;
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0, emptyVao_ = 0;

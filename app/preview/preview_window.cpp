@@ -179,10 +179,13 @@ void PreviewWindow::openScene(const std::string& path) {
         if (scene_.materials[i].woven) materialIndex_ = int(i);
     presetIndex_ = -1;
     showFinal_ = false;
+    // The Render button's settings as `woven render` takes them, but a size neither the command
+    // line nor the scene gives is the window's: what it frames.
     render_ = frameSettings(scene_, options_.frame);
-    const bool sizeGiven = (options_.frame.width > 0 && options_.frame.height > 0) ||
-                           (scene_.render.width > 0 && scene_.render.height > 0);
-    if (!sizeGiven) glfwGetFramebufferSize(window_, &render_.width, &render_.height);  // what the window frames
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetFramebufferSize(window_, &windowWidth, &windowHeight);
+    if (options_.frame.width <= 0 && scene_.render.width <= 0) render_.width = std::max(windowWidth, 1);
+    if (options_.frame.height <= 0 && scene_.render.height <= 0) render_.height = std::max(windowHeight, 1);
     status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
 }

@@ -25,8 +25,6 @@ constexpr int kTileSize = 16;
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 // Renders one pass (one sample per pixel, sample index `sampleIndex`) over tiles on the arena's
 // threads. Every pixel's random numbers come from (seed, pixel, sample index) alone. Returns
 // false, leaving `pass` incomplete, when `cancel` became true.

@@ -12,6 +12,9 @@
 
 namespace woven {
 
+// Luminance of linear Rec. 709 RGB.
+inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
 // Linear RGB float image, row 0 at the top.
 struct Image {
     int width = 0, height = 0;

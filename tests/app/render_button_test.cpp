@@ -4,7 +4,11 @@
 // RenderJob with the same camera, seed and sample range.
 #include <gtest/gtest.h>
 
+#include <gmock/gmock.h>
+
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "../scene/gltf_builder.h"
@@ -16,9 +20,16 @@ namespace {
 
 using test::TempDir;
 
-int run(const std::string& args) {
-    const std::string cmd = std::string(WOVEN_BINARY) + " " + args + " 2>/dev/null >/dev/null";
-    return std::system(cmd.c_str());
+// Runs `woven ARGS`; its stderr goes to `errors` when given.
+int run(const std::string& args, std::string* errors = nullptr) {
+    const std::string errorFile = testing::TempDir() + "woven_render_button_stderr.txt";
+    const std::string cmd = std::string(WOVEN_BINARY) + " " + args + " 2>" + errorFile + " >/dev/null";
+    const int status = std::system(cmd.c_str());
+    if (errors) {
+        std::ifstream in(errorFile);
+        *errors = std::string(std::istreambuf_iterator<char>(in), {});
+    }
+    return status;
 }
 
 // Renders `scene` both ways with `options`; expects identical radiance and sample counts.
@@ -125,11 +136,19 @@ TEST(RenderButton, PngsGoThroughTheSameDisplayTransform) {
 TEST(RenderButton, BadOptionsFailClearlyAndWriteNothing) {
     TempDir dir;
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
+    std::string errors;
     EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --woven 'NoSuchMaterial={}' --screenshot " +
-                  dir.file("x.exr")),
+                      dir.file("x.exr"),
+                  &errors),
               0);
-    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --tone-map sepia --screenshot " + dir.file("y.png")), 0);
-    EXPECT_NE(run("preview " + scene + " --headless --final --width 8 --height 8 --spp 1 --screenshot " + dir.file("z.tiff")), 0);
+    EXPECT_THAT(errors, testing::HasSubstr("no material named 'NoSuchMaterial'"));
+    EXPECT_THAT(errors, testing::HasSubstr("'Cloth'"));  // the names it has
+    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --tone-map sepia --screenshot " + dir.file("y.png"),
+                  &errors),
+              0);
+    EXPECT_THAT(errors, testing::HasSubstr("--tone-map"));
+    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --screenshot " + dir.file("z.tiff"), &errors), 0);
+    EXPECT_THAT(errors, testing::HasSubstr("z.tiff: unknown image type '.tiff' (expected .exr or .png)"));
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 

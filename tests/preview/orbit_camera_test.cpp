@@ -30,6 +30,8 @@ TEST(OrbitCamera, StartsAsTheScenesCameraExactlyRollAndAspectIncluded) {
     orbit.orbit(0.3f, 0.1f);
     const Camera moved = orbit.camera();
     EXPECT_NE(moved.cameraToWorld, scene.camera.cameraToWorld);
+    EXPECT_EQ(moved.aspect, 1.7f);
+    EXPECT_EQ(moved.yfov, scene.camera.yfov);
     EXPECT_NEAR(glm::vec3(moved.cameraToWorld[0]).y, 0.0f, 1e-6f);  // right vector horizontal
     const glm::vec3 movedForward = -glm::vec3(moved.cameraToWorld[2]);
     EXPECT_NEAR(glm::dot(glm::normalize(orbit.pivot() - glm::vec3(moved.cameraToWorld[3])), movedForward), 1.0f, 1e-5f);

@@ -1,6 +1,10 @@
 // The preview's shadows (ShadowMaps): a square hovering over the flat cloth must block a point
-// light and a directional light exactly where geometry says, and change nothing elsewhere.
+// light (cube map; turned six ways so each cube face does the work), a distant point light
+// (perspective map) and a directional light (orthographic map) exactly where geometry says, and
+// change nothing elsewhere.
 #include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <iostream>
@@ -32,11 +36,25 @@ SceneDescription occludedCloth(const PunctualLight& light) {
 // How far `q` (on the plane y = kHeight) is inside the square: negative outside.
 float insideSquare(const glm::vec3& q) { return kHalf - std::max(std::abs(q.x), std::abs(q.z)); }
 
-void expectShadowWhereGeometrySaysSo(const PunctualLight& light) {
-    const SceneDescription scene = occludedCloth(light);
+// The scene turned by `rotation` as a whole: the same picture, other cube faces.
+SceneDescription turned(SceneDescription scene, const glm::mat3& rotation) {
+    for (Mesh& m : scene.meshes) {
+        for (glm::vec3& p : m.positions) p = rotation * p;
+        for (glm::vec3& n : m.normals) n = rotation * n;
+    }
+    for (PunctualLight& l : scene.lights) {
+        l.position = rotation * l.position;
+        l.direction = rotation * l.direction;
+    }
+    scene.camera.cameraToWorld = glm::mat4(rotation) * scene.camera.cameraToWorld;
+    return scene;
+}
+
+void expectShadowWhereGeometrySaysSo(const PunctualLight& light, const glm::mat3& rotation = glm::mat3(1.0f)) {
+    const SceneDescription scene = occludedCloth(light);  // the geometry below is worked out here
     const int w = 256, h = 192;
-    const Image shadowed = previewRadiance(scene, w, h, true, false, true);
-    const Image open = previewRadiance(scene, w, h, true, false, false);
+    const Image shadowed = previewRadiance(turned(scene, rotation), w, h, true, false, true);
+    const Image open = previewRadiance(turned(scene, rotation), w, h, true, false, false);
 
     const glm::vec3 eye(scene.camera.cameraToWorld[3]);
     // Pixel centres whose floor point is 0.05 (several shadow-map texels) or more from the
@@ -61,7 +79,9 @@ void expectShadowWhereGeometrySaysSo(const PunctualLight& light) {
                 reachedWithoutShadows += open.pixels[i].g > 0.0f;
             } else if (depth < -kMargin) {
                 ++lit;
-                EXPECT_EQ(shadowed.pixels[i], open.pixels[i]) << "pixel " << x << "," << y << " should be lit";
+                // Turning the scene rounds its numbers differently: equal within float rounding.
+                EXPECT_NEAR(shadowed.pixels[i].g, open.pixels[i].g, 1e-5f * (1.0f + open.pixels[i].g))
+                    << "pixel " << x << "," << y << " should be lit";
             }
         }
     std::cout << inShadow << " pixels in shadow, " << lit << " lit\n";
@@ -72,12 +92,33 @@ void expectShadowWhereGeometrySaysSo(const PunctualLight& light) {
     EXPECT_GT(lit, size_t(w * h / 4));
 }
 
-TEST(PreviewShadows, PointLightIsBlockedExactlyWhereTheOccluderProjects) {
+PunctualLight pointLight(const glm::vec3& position, float intensity) {
     PunctualLight point;
     point.type = PunctualLight::Type::Point;
-    point.position = {-0.5f, 1.5f, 0.4f};
-    point.intensity = glm::vec3(3.0f);
-    expectShadowWhereGeometrySaysSo(point);
+    point.position = position;
+    point.intensity = glm::vec3(intensity);
+    return point;
+}
+
+class CubeFace : public testing::TestWithParam<int> {};
+
+// The light above the cloth looks down (-y) at the occluder and the floor; turning the scene
+// takes that direction to each of the six cube faces in turn.
+TEST_P(CubeFace, NearPointLightIsBlockedExactlyWhereTheOccluderProjects) {
+    const glm::vec3 x(1, 0, 0), z(0, 0, 1);
+    const glm::mat4 turns[6] = {glm::mat4(1.0f),                         // -y stays -y
+                                glm::rotate(glm::mat4(1.0f), float(M_PI), x),   // -y to +y
+                                glm::rotate(glm::mat4(1.0f), float(M_PI_2), z),  // -y to +x
+                                glm::rotate(glm::mat4(1.0f), -float(M_PI_2), z), // -y to -x
+                                glm::rotate(glm::mat4(1.0f), -float(M_PI_2), x), // -y to +z
+                                glm::rotate(glm::mat4(1.0f), float(M_PI_2), x)}; // -y to -z
+    expectShadowWhereGeometrySaysSo(pointLight({-0.5f, 1.5f, 0.4f}, 3.0f), glm::mat3(turns[GetParam()]));
+}
+INSTANTIATE_TEST_SUITE_P(PreviewShadows, CubeFace, testing::Range(0, 6));
+
+TEST(PreviewShadows, DistantPointLightIsBlockedExactlyWhereTheOccluderProjects) {
+    // 16 units away, 11 bounding radii: a perspective map fitted to the scene, not a cube.
+    expectShadowWhereGeometrySaysSo(pointLight({-5.0f, 15.0f, 4.0f}, 300.0f));
 }
 
 TEST(PreviewShadows, DirectionalLightIsBlockedExactlyWhereTheOccluderProjects) {
