@@ -19,7 +19,8 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         {"clamp", ToneMap::Clamp}, {"reinhard", ToneMap::Reinhard}, {"aces", ToneMap::Aces}};
     command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops");
     command.add_option("--tone-map", o.display.toneMap, "PNG and display tone curve: aces (default), clamp or reinhard")
-        ->transform(CLI::CheckedTransformer(toneMaps, CLI::ignore_case));
+        ->transform(CLI::CheckedTransformer(toneMaps, CLI::ignore_case).description(""))
+        ->type_name("aces|clamp|reinhard");
 }
 
 void applyWovenOptions(SceneDescription& scene, const FrameOptions& options) {
