@@ -11,7 +11,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--height", o.height, "image height (default: the scene's, else 480)")->check(CLI::Range(1, 1 << 15));
     command.add_option("--spp", o.spp, "samples per pixel (default: the scene's, else 64)")->check(CLI::Range(1, 1 << 24));
     command.add_option("--integrator", o.integrator, "bdpt, path or auto (default: the scene's, else auto)")
-        ->check(CLI::IsMember({"bdpt", "path", "auto"}));
+        ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
     command.add_option("--woven", o.woven, "NAME=JSON: make material NAME woven with these parameters (repeatable)");

@@ -70,7 +70,6 @@ std::vector<uint8_t> displayBytes(const Image& image, const DisplayTransform& tr
     return bytes;
 }
 
-const char* const kIntegrators[] = {"auto", "bdpt", "path"};
 
 class PreviewWindow {
 public:
@@ -331,7 +330,7 @@ void PreviewWindow::drawRenderControls() {
     ImGui::InputInt("spp", &render_.spp);
     render_.spp = std::clamp(render_.spp, 1, 1 << 20);
     if (ImGui::BeginCombo("integrator", render_.integrator.c_str())) {
-        for (const char* name : kIntegrators)
+        for (const char* name : kIntegratorNames)
             if (ImGui::Selectable(name, render_.integrator == name)) render_.integrator = name;
         ImGui::EndCombo();
     }

@@ -68,6 +68,9 @@ struct Camera {
     float aspect = 0.0f;            // 0: take it from the image size
 };
 
+// The integrators a frame can be rendered with; "auto" lets the render job choose.
+inline constexpr const char* kIntegratorNames[] = {"auto", "bdpt", "path"};
+
 // Render settings a scene file asks for; 0 or empty = not given (the command line decides).
 struct RenderHints {
     int width = 0, height = 0;

@@ -1,5 +1,6 @@
 #include "scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -220,7 +221,8 @@ private:
         if (render.contains("spp")) hints.spp = positiveInt(render["spp"], "render.spp", 1 << 20);
         if (render.contains("integrator")) {
             hints.integrator = string(render["integrator"], "render.integrator");
-            if (hints.integrator != "bdpt" && hints.integrator != "path" && hints.integrator != "auto")
+            if (std::find(std::begin(kIntegratorNames), std::end(kIntegratorNames), hints.integrator) ==
+                std::end(kIntegratorNames))
                 fail("render.integrator", "must be \"bdpt\", \"path\" or \"auto\", not \"" + hints.integrator + "\"");
         }
     }
