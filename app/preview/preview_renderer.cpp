@@ -72,6 +72,7 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     }
     shadowCasters_.clear();
     ++meshGeneration_;
+    bounds_ = sceneBounds(scene);
     glDeleteTextures(1, &environmentTexture_);
     environmentTexture_ = 0;
     if (const auto& image = scene.environment.image; image && image->width > 0 && image->height > 0) {
@@ -125,10 +126,9 @@ void PreviewRenderer::ensureTarget(glm::ivec2 size) {
 
 void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
                              glm::ivec2 size, const PreviewOptions& options) {
-    const SceneBox box = sceneBounds(scene);
     bool shadows = false;
-    if (options.shadows && shadows_) {
-        shadows_->update(shadowCasters_, meshGeneration_, lights, box);
+    if (options.shadows) {
+        shadows_->update(shadowCasters_, meshGeneration_, lights, bounds_);
         shadows = shadows_->any();
     }
     ensureTarget(size);
@@ -147,8 +147,8 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     glDisable(GL_BLEND);
 
     const glm::vec3 eye(camera.cameraToWorld[3]);
-    const float distance = glm::length(box.centre() - eye);
-    const float radius = std::max(box.radius(), 1e-4f);
+    const float distance = glm::length(bounds_.centre() - eye);
+    const float radius = std::max(bounds_.radius(), 1e-4f);
     const float zFar = distance + radius * 1.01f;
     const float zNear = std::max(distance - radius * 1.01f, zFar * 1e-4f);
     const float aspect = camera.aspect > 0.0f ? camera.aspect : float(size.x) / float(size.y);

@@ -59,6 +59,7 @@ private:
     std::unique_ptr<ShadowMaps> shadows_;
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
     unsigned meshGeneration_ = 0;
+    SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0, emptyVao_ = 0;
     glm::ivec2 size_{0, 0};
 };
