@@ -75,7 +75,7 @@ int runRender(RenderOptions o) {
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene));
-    applyWovenOptions(*scene, o.frame);
+    applySceneOptions(*scene, o.frame);
 
     RenderSettings settings = frameSettings(*scene, o.frame);
     const bool timeLimited = o.time > 0.0;

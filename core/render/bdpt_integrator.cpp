@@ -24,7 +24,7 @@ struct BdptIntegrator::Vertex {
     glm::vec3 dir{0.0f};  // infinite lights: the direction light travels, into the scene
     glm::vec3 wo{0.0f};   // surfaces: unit direction towards the vertex before
     SurfaceHit hit;
-    std::optional<SurfaceBsdf> bsdf;
+    std::optional<Bsdf> bsdf;
     int light = -1;  // light vertices: index into lights(); surfaces: their area light or -1
     float pdfFwd = 0.0f, pdfRev = 0.0f;
 
@@ -45,7 +45,7 @@ float shadingNormalCorrection(const Vertex& v, const glm::vec3& wo, const glm::v
 
 // f at surface vertex v towards wi (unit); zero across the geometric surface.
 glm::vec3 vertexF(const Vertex& v, const glm::vec3& wi, bool importance) {
-    if (v.type != Vertex::Type::Surface || !v.bsdf || !sameGeometricSide(v.hit, v.wo, wi)) return glm::vec3(0.0f);
+    if (v.type != Vertex::Type::Surface || !v.bsdf || !connects(v.hit, *v.bsdf, v.wo, wi)) return glm::vec3(0.0f);
     glm::vec3 f = v.bsdf->eval(v.wo, wi);
     if (importance) f *= shadingNormalCorrection(v, v.wo, wi);
     return f;
@@ -103,7 +103,7 @@ float BdptIntegrator::pdf(const Vertex& v, const Vertex* prev, const Vertex& nex
         const glm::vec3 toPrev = prev->p - v.p;
         if (!v.bsdf || !(glm::dot(toPrev, toPrev) > 0.0f)) return 0.0f;
         const glm::vec3 wp = glm::normalize(toPrev);
-        if (!sameGeometricSide(v.hit, wp, wn)) return 0.0f;
+        if (!connects(v.hit, *v.bsdf, wp, wn)) return 0.0f;
         pdfDir = v.bsdf->pdf(wp, wn);
     }
     return convertDensity(v, pdfDir, next);
@@ -189,7 +189,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
         v.p = hit->p;
         v.n = hit->ng;
         v.wo = -ray.d;
-        v.bsdf = scene_.bsdf(*hit, v.wo);
+        v.bsdf = scene_.materials().bsdf(*hit, v.wo);
         v.ns = v.bsdf ? v.bsdf->shadingNormal() : hit->ns;
         v.light = scene_.lightIndex(*hit);
         v.beta = beta;
@@ -198,7 +198,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
 
         const glm::vec2 u = rng.uniform2();
         const auto bs = v.bsdf->sample(v.wo, u, rng.uniform());
-        if (!bs || !sameGeometricSide(v.hit, v.wo, bs->wi)) break;
+        if (!bs || !connects(v.hit, *v.bsdf, v.wo, bs->wi)) break;
         beta *= bs->weight;
         if (importance) beta *= shadingNormalCorrection(v, v.wo, bs->wi);
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
