@@ -1,5 +1,6 @@
 #include "bdpt_integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -369,8 +370,12 @@ glm::vec3 BdptIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
     const int nCamera = cameraSubpath(pRaster, rng, sink, camera);
     const int nLight = lightSubpath(rng, sink, light);
     glm::vec3 L(0.0f);
+    // s = 1 samples a light vertex of its own: it exists even where the light subpath does not
+    // (its origin emitted nothing, say on a black texel of a textured emitter), and its MIS
+    // weight counts on it.
+    const int maxS = std::max(nLight, 1);
     for (int t = 1; t <= nCamera; ++t)
-        for (int s = 0; s <= nLight; ++s) {
+        for (int s = 0; s <= maxS; ++s) {
             const int depth = s + t - 2;
             if ((s == 1 && t == 1) || depth < 0 || depth > maxDepth_) continue;
             glm::vec2 pSplat(0.0f);
