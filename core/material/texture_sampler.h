@@ -1,5 +1,5 @@
 #pragma once
-// One use of a texture, bound to its image: looks a TextureRef up at a surface point with its
+// One use of a texture, bound to its image (which must outlive it): looks a TextureRef up at a surface point with its
 // texture coordinate set, KHR_texture_transform, wrap modes and filter, and decodes sRGB colour
 // to linear texel by texel before filtering, as a GPU does with an sRGB texture. The renderer
 // filters bilinearly (or picks the nearest texel for a NEAREST magnification filter) and never
