@@ -36,14 +36,16 @@ std::optional<long long> parseInteger(std::string_view s) {
     return v;
 }
 
-// A decimal number; one decimal comma is read as a decimal point, as some European programs write.
-std::optional<double> parseReal(std::string_view s) {
+// A decimal number; one decimal comma is read as a decimal point, as some European programs
+// write. Parsed straight to T, so the shortest text of a float reads back as that float.
+template <class T = double>
+std::optional<T> parseReal(std::string_view s) {
     s = withoutComment(s);
     std::string text(s);
     if (std::count(text.begin(), text.end(), ',') == 1 && text.find('.') == std::string::npos)
         text[text.find(',')] = '.';
     if (!text.empty() && text.front() == '+') text.erase(0, 1);
-    double v = 0;
+    T v = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
         return std::nullopt;
@@ -332,9 +334,9 @@ private:
             return palette[size_t(*index - 1)];
         };
         const auto length = [](std::string_view text, Ignored& bad, Ignored&, int line) -> std::optional<float> {
-            const auto v = parseReal(text);
-            if (!v || !(float(*v) > 0.0f) || !std::isfinite(float(*v))) return bad.add(line), std::nullopt;
-            return float(*v);
+            const auto v = parseReal<float>(text);
+            if (!v || !(*v > 0.0f)) return bad.add(line), std::nullopt;
+            return *v;
         };
         const std::string notInPalette = "names no colour of [COLOR TABLE]";
         threads.colors = everyThreadOrNone(
