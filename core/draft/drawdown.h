@@ -6,6 +6,10 @@
 
 namespace woven {
 
+// The shafts that pick `pick` moves: those its treadles are tied to when the draft has a tie-up
+// and a treadling, else those its lift plan names.
+IndexSet shedOf(const Draft& draft, int pick);
+
 class Drawdown {
 public:
     // Throws DraftError, prefixed by `name`, when the draft has no interlacement (no lift plan,

@@ -8,6 +8,7 @@
 #include <optional>
 #include <tuple>
 
+#include "drawdown.h"
 #include "image_io.h"
 #include "text_encoding.h"
 #include "wif_sections.h"
@@ -192,16 +193,17 @@ private:
 
     // A declared count, checked against [least, limit] before anything is sized by it. A count
     // the file leaves out is taken from the highest number it uses, with a warning.
-    int readCount(std::string_view section, std::string_view key, int least, int limit, long long highest) {
+    int readCount(std::string_view section, std::string_view key, int least, int limit,
+                  const std::function<long long()>& highestUsed) {
         const std::string what = "[" + std::string(section) + "] " + std::string(key);
         const auto entry = value(section, key);
-        long long count = highest;
+        long long count = 0;
         if (entry) {
             const auto parsed = parseInteger(entry->value);
             if (!parsed) fail(what + "='" + std::string(entry->value) + "' is not a whole number", entry->line);
             count = *parsed;
-        } else if (highest > 0) {
-            warn(what + " is missing; taking " + std::to_string(highest) + ", the highest number the draft uses");
+        } else if ((count = highestUsed()) > 0) {
+            warn(what + " is missing; taking " + std::to_string(count) + ", the highest number the draft uses");
         }
         if (count > limit)
             fail(what + "=" + std::to_string(count) + " is more than woven's limit of " + std::to_string(limit),
@@ -215,12 +217,14 @@ private:
 
     void readWeaving(Draft& draft) {
         draft.shafts = readCount("WEAVING", "Shafts", 1, kMaxShafts,
-                                 highestUsed({"THREADING", "TIEUP", "LIFTPLAN"}, false));
-        draft.treadles = readCount("WEAVING", "Treadles", 0, kMaxShafts,
-                                   std::max(highestUsed({"TIEUP"}, true), highestUsed({"TREADLING"}, false)));
-        draft.warp.count = readCount("WARP", "Threads", 1, kMaxDraftThreads, highestUsed({"THREADING"}, true));
+                                 [&] { return highestUsed({"THREADING", "TIEUP", "LIFTPLAN"}, false); });
+        draft.treadles = readCount("WEAVING", "Treadles", 0, kMaxShafts, [&] {
+            return std::max(highestUsed({"TIEUP"}, true), highestUsed({"TREADLING"}, false));
+        });
+        draft.warp.count = readCount("WARP", "Threads", 1, kMaxDraftThreads,
+                                     [&] { return highestUsed({"THREADING"}, true); });
         draft.weft.count = readCount("WEFT", "Threads", 1, kMaxDraftThreads,
-                                     highestUsed({"TREADLING", "LIFTPLAN"}, true));
+                                     [&] { return highestUsed({"TREADLING", "LIFTPLAN"}, true); });
         if (const auto rising = value("WEAVING", "Rising Shed")) {
             const auto parsed = parseBool(rising->value);
             if (parsed) draft.risingShed = *parsed;
@@ -233,7 +237,7 @@ private:
     // stored linear. Entries the table does not define are black and cannot be used by threads.
     void readPalette(Draft& draft) {
         const int entries = readCount("COLOR PALETTE", "Entries", 0, kMaxPaletteEntries,
-                                      highestUsed({"COLOR TABLE"}, true));
+                                      [&] { return highestUsed({"COLOR TABLE"}, true); });
         if (const auto form = value("COLOR PALETTE", "Form"); form && !equalsIgnoringCase(withoutComment(form->value), "RGB"))
             warn("[COLOR PALETTE] Form=" + std::string(form->value) + " is not RGB; the colours are read as RGB");
         double low = 0, high = 255;
@@ -402,12 +406,7 @@ private:
     void checkLiftplanAgrees(const Draft& draft) {
         if (!draft.usesTieup() || draft.liftplan.empty()) return;
         int differing = 0;
-        for (size_t pick = 0; pick < draft.treadling.size(); ++pick) {
-            IndexSet shed;
-            for (int t = 0; t < draft.treadles; ++t)
-                if (draft.treadling[pick][size_t(t)]) shed |= draft.tieup[size_t(t)];
-            differing += shed != draft.liftplan[pick];
-        }
+        for (int pick = 0; pick < draft.picks(); ++pick) differing += shedOf(draft, pick) != draft.liftplan[size_t(pick)];
         if (differing)
             warn("[LIFTPLAN] differs from [TIEUP] x [TREADLING] in " + counted(differing, "pick") +
                  "; the tie-up and treadling are used");

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "atomic_file.h"
+#include "drawdown.h"
 #include "image_io.h"
 #include "temp_dir.h"
 #include "wif_reader.h"
@@ -79,11 +80,7 @@ public:
             d.treadling = sets(d.picks(), d.treadles, 2);
         }
         if (form == 2 && !d.tieup.empty()) {
-            for (const IndexSet& treadles : d.treadling) {
-                d.liftplan.emplace_back();
-                for (int t = 0; t < d.treadles; ++t)
-                    if (treadles[size_t(t)]) d.liftplan.back() |= d.tieup[size_t(t)];
-            }
+            for (int pick = 0; pick < d.picks(); ++pick) d.liftplan.push_back(shedOf(d, pick));
         } else if (form != 0 || d.tieup.empty()) {
             d.liftplan = sets(d.picks(), d.shafts, 5);
         }

@@ -3,6 +3,7 @@
 // same bytes. From the repository root: build/tools/make_drafts/make_drafts assets/drafts
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
