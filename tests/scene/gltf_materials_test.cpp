@@ -252,6 +252,25 @@ TEST(GltfDeformation, SkinPlacesVerticesByTheJointsNotTheMeshNode) {
     expectNear(s.meshes[0].positions[2], {0, 6, 0});
 }
 
+TEST(GltfDeformation, InverseBindMatricesAreMat4Accessors) {
+    TempDir dir;
+    GltfBuilder b;
+    // One joint at (0, 5, 0) whose inverse bind matrix undoes that translation: the mesh stays
+    // where its bind pose puts it. A MAT4 accessor of floats, column-major.
+    const std::vector<uint8_t> joints(12, 0);
+    const std::vector<glm::vec4> weights(3, glm::vec4(1, 0, 0, 0));
+    const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(kTriangle)},
+                                                {"JOINTS_0", b.addAccessor(joints.data(), joints.size(), test::kUnsignedByte, "VEC4", 3)},
+                                                {"WEIGHTS_0", b.addVec4(weights)}}}});
+    const glm::mat4 inverseBind(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -5, 2, 1);  // translate (0, -5, 2)
+    const int joint = b.addNode({{"translation", {0, 5, 0}}});
+    b.json()["skins"] = {{{"joints", {joint}}, {"inverseBindMatrices", b.addAccessor(&inverseBind[0][0], 64, test::kFloat, "MAT4", 1)}}};
+    b.setScene({b.addNode({{"mesh", mesh}, {"skin", 0}}), joint});
+    b.writeGltf(dir.file("bind.gltf"));
+    const SceneDescription s = loadScene(dir.file("bind.gltf"));
+    expectNear(s.meshes.at(0).positions[1], {1, 0, 2});  // (1, 0, 0) - (0, 5, -2) + (0, 5, 0)
+}
+
 TEST(GltfLights, PhotometricUnitsBecomeRadiometricByBlendersRule) {
     TempDir dir;
     GltfBuilder b;
