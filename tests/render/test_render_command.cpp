@@ -160,6 +160,23 @@ TEST(RenderCommand, EnvironmentOptionLightsAnyScene) {
     expectFailure(missing, "sky.hdr", "--environment", dir);
 }
 
+TEST(RenderCommand, PreviewRefusesWhatRenderRefusesAndLightsAsRenderDoes) {
+    test::TempDir dir;
+    test::GltfBuilder empty;
+    empty.setScene({empty.addNode(nlohmann::json::object())});
+    empty.writeGltf(dir.file("empty.gltf"));
+    const Result render = runWoven({"render", dir.file("empty.gltf"), "--out", dir.file("out.png")}, dir);
+    expectFailure(render, "empty.gltf", "no triangles", dir);
+    const Result preview = runWoven({"preview", dir.file("empty.gltf"), "--headless", "--screenshot", dir.file("out.png")}, dir);
+    expectFailure(preview, "empty.gltf", "no triangles", dir);
+
+    writeScene(dir.file("dark.gltf"), false);
+    const Result lit = runWoven({"preview", dir.file("dark.gltf"), "--headless", "--width", "32", "--height", "24",
+                                 "--screenshot", dir.file("lit.png")}, dir);
+    ASSERT_EQ(lit.exitCode, 0) << lit.err;
+    EXPECT_NE(lit.err.find("lit by woven's studio environment"), std::string::npos) << lit.err;
+}
+
 TEST(RenderCommand, NanVertexIsAnErrorNamingTheFile) {
     test::TempDir dir;
     writeScene(dir.file("nan.gltf"), true, true);
