@@ -3,7 +3,7 @@
 #include <iostream>
 #include <map>
 
-#include "make_woven.h"
+#include "woven_assignment.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
 
@@ -17,7 +17,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
-    command.add_option("--woven", o.woven, "NAME=JSON: make material NAME woven with these parameters (repeatable)");
+    command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
                        "radiance (a number), instead of its own environment")
@@ -33,7 +33,10 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
 void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
     validateScene(scene);
     if (!options.environment.empty()) scene.environment = environmentFromOption(options.environment);
-    for (const std::string& option : options.woven) applyWovenOption(scene, option);
+    // One call, so the options layer by specificity and then in the order given.
+    std::vector<WovenAssignment> assignments;
+    for (const std::string& option : options.woven) assignments.push_back(parseWovenOption(scene, option));
+    if (!assignments.empty()) assignWoven(scene, assignments);
     // An --environment given is the user's choice, even a black one.
     if (options.environment.empty() && lightByDefault(scene))
         std::cerr << "note: " << scene.source

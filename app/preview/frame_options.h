@@ -19,7 +19,7 @@ struct FrameOptions {
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
-    std::vector<std::string> woven;      // NAME=JSON, applied in order
+    std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;
 };

@@ -92,7 +92,7 @@ public:
         scene_.source = path_;
         GltfMaterialReader(path_, document_, encodedImages_, [this](const std::string& m) { warn(m); }).read(scene_);
         computeNodeMatrices();
-        for (int root : rootNodes()) visit(root, 0);
+        for (int root : rootNodes()) visit(root, {});
         return std::move(scene_);
     }
 
@@ -208,18 +208,20 @@ private:
         }
     }
 
-    void visit(int nodeIndex, size_t depth) {
+    // `path`: the names of the nodes above this one, root first.
+    void visit(int nodeIndex, std::vector<std::string> path) {
         if (nodeIndex < 0 || size_t(nodeIndex) >= model_.nodes.size())
             fail("node " + std::to_string(nodeIndex) + " does not exist");
-        if (depth > model_.nodes.size()) fail("the node hierarchy has a cycle (through node " + std::to_string(nodeIndex) + ")");
+        if (path.size() > model_.nodes.size()) fail("the node hierarchy has a cycle (through node " + std::to_string(nodeIndex) + ")");
         const tinygltf::Node& node = model_.nodes[nodeIndex];
         const glm::mat4& world = nodeWorld_[size_t(nodeIndex)];
         const std::string nodeName = nameOr(node.name, "node", nodeIndex);
-        if (node.mesh >= 0) addMesh(node, world, nodeName);
+        path.push_back(nodeName);
+        if (node.mesh >= 0) addMesh(node, world, path);
         if (node.camera >= 0) addCamera(node, world, nodeName);
         if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
             addLight(it->second.Get("light"), world, nodeName);
-        for (int child : node.children) visit(child, depth + 1);
+        for (int child : node.children) visit(child, path);
     }
 
     void addCamera(const tinygltf::Node& node, const glm::mat4& world, const std::string& nodeName) {
@@ -263,9 +265,11 @@ private:
 
     // --- meshes -----------------------------------------------------------------------------
 
-    void addMesh(const tinygltf::Node& node, const glm::mat4& world, const std::string& nodeName) {
+    void addMesh(const tinygltf::Node& node, const glm::mat4& world, const std::vector<std::string>& nodePath) {
+        const std::string& nodeName = nodePath.back();
         if (size_t(node.mesh) >= model_.meshes.size()) fail("node '" + nodeName + "': mesh " + std::to_string(node.mesh) + " does not exist");
         const tinygltf::Mesh& mesh = model_.meshes[node.mesh];
+        const size_t first = scene_.meshes.size();
         // A node's weights override its mesh's; missing ones are 0.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -276,6 +280,10 @@ private:
             } catch (const AccessorError& e) {
                 fail("mesh '" + name + "': " + e.what());
             }
+        }
+        for (size_t m = first; m < scene_.meshes.size(); ++m) {
+            scene_.meshes[m].meshName = nameOr(mesh.name, "mesh", node.mesh);
+            scene_.meshes[m].nodePath = nodePath;
         }
     }
 

@@ -117,6 +117,10 @@ struct Material {
 // derivable) or the size of positions.
 struct Mesh {
     std::string name;  // "node/mesh/primitive" for messages
+    // What users name parts by (woven_assignment.h): the glTF mesh's name and the names of the
+    // nodes from the scene's root down to the node that holds it ("mesh3", "node7" when unnamed).
+    std::string meshName;
+    std::vector<std::string> nodePath;
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;   // TEXCOORD_0

@@ -8,7 +8,7 @@
 
 #include "gltf_loader.h"
 #include "image_io.h"
-#include "make_woven.h"
+#include "woven_assignment.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
@@ -110,30 +110,12 @@ private:
     }
 
     void readMaterials(const json& materials, SceneDescription& scene) const {
-        if (!materials.is_object()) fail("materials", "must be an object from material name (or \"*\") to woven parameters");
-        // "*" first, so a named entry refines what "*" set.
-        std::vector<std::string> order;
-        if (materials.contains("*")) order.push_back("*");
+        if (!materials.is_object())
+            fail("materials", "must be an object from a target (a material, \"mesh:NAME\", \"node:NAME\" or \"*\") to woven parameters");
+        std::vector<WovenAssignment> assignments;
         for (const auto& item : materials.items())
-            if (item.key() != "*") order.push_back(item.key());
-        for (const std::string& name : order) {
-            const std::string where = "materials." + name;
-            std::vector<int> selected;
-            try {
-                selected = selectMaterials(scene, name);
-            } catch (const SceneError& e) {
-                // selectMaterials names scene.source (= path_) first; say the key instead.
-                fail(where, std::string(e.what()).substr(path_.size() + 2));
-            }
-            for (int m : selected) {
-                Material& material = scene.materials[m];
-                try {
-                    material.woven = paramsFromJson(materials[name], material.woven.value_or(WovenParams{}));
-                } catch (const std::invalid_argument& e) {
-                    fail(where, e.what());
-                }
-            }
-        }
+            assignments.push_back({item.key(), item.value(), "materials." + item.key()});
+        assignWoven(scene, assignments);
     }
 
     void readEnvironment(const json& env, Environment& environment) const {

@@ -141,7 +141,7 @@ TEST(RenderButton, BadOptionsFailClearlyAndWriteNothing) {
                       dir.file("x.exr"),
                   &errors),
               0);
-    EXPECT_THAT(errors, testing::HasSubstr("no material named 'NoSuchMaterial'"));
+    EXPECT_THAT(errors, testing::HasSubstr("'NoSuchMaterial' names nothing"));
     EXPECT_THAT(errors, testing::HasSubstr("'Cloth'"));  // the names it has
     EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --tone-map sepia --screenshot " + dir.file("y.png"),
                   &errors),

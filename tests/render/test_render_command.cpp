@@ -198,7 +198,7 @@ TEST(RenderCommand, BadWovenOptionIsAnErrorNamingFileMaterialAndField) {
         {"curtain={\"ex\":10}", "curtain"},          // no such material
         {"cloth={\"ex\":-5}", "ex"},                 // out of range
         {"cloth={\"ex\":", "not valid JSON"},       // malformed
-        {"cloth", "NAME=JSON"}};                     // no parameters
+        {"cloth", "TARGET=JSON"}};                   // no parameters
     for (const auto& [option, problem] : cases) {
         const Result r = runWoven({"render", dir.file("scene.gltf"), "--spp", "1", "--woven", option, "--out", dir.file("out.exr")}, dir);
         expectFailure(r, "scene.gltf", problem, dir);

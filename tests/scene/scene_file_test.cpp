@@ -1,5 +1,5 @@
 // Woven scene files (.json): every key applied to the loaded scene, and every mistake reported
-// with the file and the key; makeWoven for the command line.
+// with the file and the key.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
@@ -7,7 +7,6 @@
 #include <fstream>
 
 #include "gltf_builder.h"
-#include "make_woven.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
 
@@ -131,7 +130,7 @@ TEST_F(SceneFile, ErrorsNameTheFileAndTheKey) {
     EXPECT_THAT(error(with("materials", {{"Cloth", {{"cy", 2}}}})), HasSubstr("cy"));
     EXPECT_THAT(error(with("materials", {{"Cloth", {{"colour", 2}}}})), HasSubstr("unknown woven material field 'colour'"));
     EXPECT_THAT(error(with("materials", {{"Silk", json::object()}})),
-                HasSubstr("materials.Silk: no material named 'Silk' (the scene has 'Cloth', 'Floor')"));
+                HasSubstr("materials.Silk: 'Silk' names nothing: the scene has materials 'Cloth', 'Floor'"));
     EXPECT_THAT(error(with("render", {{"width", -5}})), HasSubstr("render.width: must be an integer from 1"));
     EXPECT_THAT(error(with("render", {{"spp", 2.5}})), HasSubstr("render.spp: must be an integer"));
     EXPECT_THAT(error(with("render", {{"integrator", "fast"}})), HasSubstr("render.integrator: must be"));
@@ -156,27 +155,6 @@ TEST_F(SceneFile, MalformedJson) {
     } catch (const SceneError& e) {
         EXPECT_THAT(e.what(), HasSubstr(path + ": not valid JSON"));
     }
-}
-
-TEST_F(SceneFile, MakeWovenByNameOrStar) {
-    SceneDescription scene = loadScene(dir.file("sub/scene.gltf"));
-    WovenParams satin;
-    satin.pattern = {9, 1, 3};
-    makeWoven(scene, "Floor", satin);
-    EXPECT_EQ(scene.materials[1].woven->pattern, glm::ivec3(9, 1, 3));
-    EXPECT_EQ(scene.materials[0].woven->ex, 300.0f);  // untouched
-    makeWoven(scene, "*", satin);
-    EXPECT_EQ(scene.materials[0].woven->pattern, glm::ivec3(9, 1, 3));
-    EXPECT_EQ(scene.materials[0].woven->ex, WovenParams{}.ex);
-    try {
-        makeWoven(scene, "Velvet", satin);
-        FAIL();
-    } catch (const SceneError& e) {
-        EXPECT_THAT(e.what(), HasSubstr(dir.file("sub/scene.gltf") + ": no material named 'Velvet' (the scene has 'Cloth', 'Floor')"));
-    }
-    WovenParams bad;
-    bad.cy = -1.0f;
-    EXPECT_THROW(makeWoven(scene, "Cloth", bad), SceneError);
 }
 
 }  // namespace

@@ -1,0 +1,149 @@
+#include "woven_assignment.h"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "scene_loader.h"
+#include "woven_params_json.h"
+
+namespace woven {
+
+namespace {
+
+struct Target {
+    enum class Kind { All, Material, Mesh, Node } kind = Kind::All;
+    std::string pattern;
+    bool glob = false;
+};
+
+Target parseTarget(const std::string& text) {
+    Target t;
+    if (text == "*") return t;
+    const auto startsWith = [&](const char* prefix) { return text.rfind(prefix, 0) == 0; };
+    if (startsWith("mesh:")) t.kind = Target::Kind::Mesh, t.pattern = text.substr(5);
+    else if (startsWith("node:")) t.kind = Target::Kind::Node, t.pattern = text.substr(5);
+    else if (startsWith("material:")) t.kind = Target::Kind::Material, t.pattern = text.substr(9);
+    else t.kind = Target::Kind::Material, t.pattern = text;
+    t.glob = t.pattern.find_first_of("*?[") != std::string::npos;
+    return t;
+}
+
+bool matches(const Target& t, const std::string& name) {
+    return t.glob ? fnmatch(t.pattern.c_str(), name.c_str(), 0) == 0 : t.pattern == name;
+}
+
+// How specific `t` is for `mesh`, or -1 when it does not name it (the order in the header).
+int specificity(const Target& t, const SceneDescription& scene, const Mesh& mesh) {
+    switch (t.kind) {
+        case Target::Kind::All: return 0;
+        case Target::Kind::Material:
+            if (mesh.material < 0 || !matches(t, scene.materials[size_t(mesh.material)].name)) return -1;
+            return t.glob ? 1 : 2;
+        case Target::Kind::Mesh:
+            if (!matches(t, mesh.meshName)) return -1;
+            return t.glob ? 3 : 4;
+        case Target::Kind::Node:
+            for (size_t depth = mesh.nodePath.size(); depth-- > 0;)
+                if (matches(t, mesh.nodePath[depth])) return 5 + 2 * int(depth) + (t.glob ? 0 : 1);
+            return -1;
+    }
+    return -1;
+}
+
+std::string quotedList(const std::set<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+    return list.empty() ? "none" : list;
+}
+
+// What the scene offers to name, for the error of a target that names nothing.
+std::string whatExists(const SceneDescription& scene) {
+    std::set<std::string> materials, meshes, nodes;
+    for (const Material& m : scene.materials) materials.insert(m.name);
+    for (const Mesh& m : scene.meshes) {
+        if (!m.meshName.empty()) meshes.insert(m.meshName);
+        nodes.insert(m.nodePath.begin(), m.nodePath.end());
+    }
+    return "the scene has materials " + quotedList(materials) + "; meshes " + quotedList(meshes) + "; nodes " +
+           quotedList(nodes) + " (targets: NAME, material:NAME, mesh:NAME, node:NAME, globs, or \"*\")";
+}
+
+}  // namespace
+
+bool targetNames(const SceneDescription& scene, const std::string& target, const Mesh& mesh) {
+    return specificity(parseTarget(target), scene, mesh) >= 0;
+}
+
+void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& assignments) {
+    const auto fail = [&](const WovenAssignment& a, const std::string& problem) {
+        throw SceneError(scene.source + ": " + a.where + ": " + problem);
+    };
+    std::vector<Target> targets;
+    for (const WovenAssignment& a : assignments) targets.push_back(parseTarget(a.target));
+
+    // Per primitive, the assignments that name it, least specific first (stable: ties keep
+    // their order). Primitives of one material with the same list form one group.
+    std::map<std::pair<int, std::vector<size_t>>, std::vector<size_t>> groups;
+    std::vector<bool> used(assignments.size(), false);
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        std::vector<std::pair<int, size_t>> layers;
+        for (size_t a = 0; a < targets.size(); ++a) {
+            const int s = specificity(targets[a], scene, scene.meshes[m]);
+            if (s >= 0) layers.emplace_back(s, a), used[a] = true;
+        }
+        if (layers.empty()) continue;
+        std::stable_sort(layers.begin(), layers.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        std::vector<size_t> order;
+        for (const auto& layer : layers) order.push_back(layer.second);
+        groups[{scene.meshes[m].material, order}].push_back(m);
+    }
+    for (size_t a = 0; a < assignments.size(); ++a)
+        if (!used[a]) fail(assignments[a], "'" + assignments[a].target + "' names nothing: " + whatExists(scene));
+
+    // How many primitives use each material, to know when a group has all of them.
+    std::map<int, size_t> users;
+    for (const Mesh& mesh : scene.meshes) ++users[mesh.material];
+    for (const auto& [key, meshes] : groups) {
+        const auto& [materialIndex, order] = key;
+        Material material = materialIndex >= 0 ? scene.materials[size_t(materialIndex)] : Material{};
+        if (materialIndex < 0) material.name = "(no material)";
+        WovenParams params = material.woven.value_or(WovenParams{});
+        std::string names;
+        for (size_t a : order) {
+            try {
+                params = paramsFromJson(assignments[a].params, params);
+            } catch (const std::exception& e) {
+                fail(assignments[a], e.what());
+            }
+            names += (names.empty() ? "" : ", ") + assignments[a].target;
+        }
+        material.woven = params;
+        if (materialIndex >= 0 && meshes.size() == users[materialIndex]) {
+            scene.materials[size_t(materialIndex)] = std::move(material);
+            continue;
+        }
+        material.name += " [" + names + "]";
+        scene.materials.push_back(std::move(material));
+        for (size_t m : meshes) scene.meshes[m].material = int(scene.materials.size()) - 1;
+    }
+}
+
+WovenAssignment parseWovenOption(const SceneDescription& scene, const std::string& option) {
+    const size_t eq = option.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw SceneError(scene.source + ": --woven '" + option + "': expected TARGET=JSON, e.g. cloth='{\"ex\":100}'");
+    WovenAssignment a;
+    a.target = option.substr(0, eq);
+    a.where = "--woven " + a.target;
+    try {
+        a.params = nlohmann::json::parse(option.substr(eq + 1));
+    } catch (const std::exception& e) {
+        throw SceneError(scene.source + ": " + a.where + ": not valid JSON: " + e.what());
+    }
+    return a;
+}
+
+}  // namespace woven

@@ -1,0 +1,42 @@
+#pragma once
+// Making parts of a scene woven without editing its glTF file: scene files' "materials", the
+// command line's --woven TARGET=JSON and the previewer's "make woven" all name the parts by a
+// target (docs/SCENE_FORMAT.md):
+//   "NAME" or "material:NAME"   the primitives whose material is NAME
+//   "mesh:NAME"                 the primitives of glTF mesh NAME
+//   "node:NAME"                 the primitives of node NAME and of every node below it
+//   "*"                         every primitive, those without a material included
+// NAME may be a glob (*, ? and [...], as a shell matches file names).
+// Each primitive takes the woven parameters of every target that names it, layered from the
+// least specific to the most: "*", material globs, material names, mesh globs, mesh names,
+// then node targets by the depth of the node they match, a deeper node over a shallower one
+// and a name over a glob at the same depth; targets equally specific apply in the order given.
+// The layers go on top of what its material already has (its WOVEN_fabric, else the defaults).
+// A material shared by primitives that end up with different parameters is split: each group
+// gets a copy (textures, emission and sides kept) named "MATERIAL [target]", so making one mesh
+// woven never changes another that shared its glTF material.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+struct WovenAssignment {
+    std::string target;
+    nlohmann::json params;  // woven parameters (woven_params_json.h), applied as a layer
+    std::string where;      // for messages: "materials.Cloth", "--woven Cloth"
+};
+
+// Throws SceneError "<scene.source>: <where>: <problem>" for a target that matches nothing
+// (listing the scene's materials, meshes and nodes) or parameters that are invalid.
+void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& assignments);
+
+// The command line's "TARGET=JSON". Throws SceneError naming scene.source and the option.
+WovenAssignment parseWovenOption(const SceneDescription& scene, const std::string& option);
+
+// Whether `target` names primitive `mesh` of `scene`.
+bool targetNames(const SceneDescription& scene, const std::string& target, const Mesh& mesh);
+
+}  // namespace woven
