@@ -24,7 +24,10 @@
 #include "orbit_camera.h"
 #include "preview_renderer.h"
 #include "scene_loader.h"
+#include "scene_picker.h"
 #include "weave_presets.h"
+#include "woven_assignment.h"
+#include "woven_edits.h"
 
 namespace woven {
 
@@ -80,14 +83,18 @@ public:
 private:
     void openScene(const std::string& path);
     void handleMouse();
+    void pick(glm::vec2 cursor);
     void drawPanel();
+    void drawSelection();
     void drawMaterialControls(WovenParams& p);
+    void applyEdits();
     void drawLightControls();
     void drawRenderControls();
     void updateFinalTexture(const FilmImage& film);
     void drawFinalImage();
     void writeWindowScreenshot(const std::string& path);
-    WovenParams* editedMaterial();
+    WovenParams* editedParams();
+    SceneDescription& scene() { return edits_->sceneForLighting(); }
 
     static void onScroll(GLFWwindow* window, double, double dy);
     static void onDrop(GLFWwindow* window, int count, const char** paths);
@@ -95,11 +102,14 @@ private:
     PreviewWindowOptions options_;
     GLFWwindow* window_ = nullptr;
     std::unique_ptr<PreviewRenderer> renderer_;
-    SceneDescription scene_;
+    std::optional<WovenEdits> edits_;  // the scene as loaded, with the window's "make woven" edits
     std::string scenePath_;
     PreviewLights lights_;
     OrbitCamera camera_;
-    int materialIndex_ = -1;  // the woven material the panel edits
+    ScenePicker picker_;
+    int pickedMesh_ = -1;     // the primitive last clicked
+    int targetChoice_ = 0;    // which of its targets the selection panel offers
+    int editIndex_ = -1;      // the edit the panel tunes
     int presetIndex_ = -1;
     DisplayTransform display_;
     bool filterWeave_ = true;
@@ -107,6 +117,7 @@ private:
     double scroll_ = 0.0;
     std::vector<std::string> droppedPaths_;
     glm::dvec2 lastCursor_{0.0};
+    std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
@@ -164,37 +175,71 @@ PreviewWindow::~PreviewWindow() {
 }
 
 void PreviewWindow::openScene(const std::string& path) {
-    SceneDescription scene = path.empty() ? wavyClothScene() : loadScene(path);
+    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path);
     // The command line's --woven edits name the command line's scene's materials.
     FrameOptions sceneOptions = options_.frame;
     if (path != options_.scene) sceneOptions.woven.clear();
-    applySceneOptions(scene, sceneOptions);
+    applySceneOptions(loaded, sceneOptions);
     final_.cancel();
-    scene_ = std::move(scene);
+    edits_.emplace(std::move(loaded));
     scenePath_ = path;
-    renderer_->setMeshes(scene_);
-    lights_ = PreviewLights::fromScene(scene_);
-    camera_ = OrbitCamera::forScene(scene_);
-    materialIndex_ = -1;
-    for (size_t i = 0; i < scene_.materials.size() && materialIndex_ < 0; ++i)
-        if (scene_.materials[i].woven) materialIndex_ = int(i);
+    renderer_->setMeshes(scene());
+    picker_.reset();
+    pickedMesh_ = -1;
+    lights_ = PreviewLights::fromScene(scene());
+    camera_ = OrbitCamera::forScene(scene());
+    // The panel starts on the first woven material, as an edit of its own name (no change yet).
+    editIndex_ = -1;
+    for (const Material& m : scene().materials)
+        if (m.woven) {
+            editIndex_ = edits_->makeWoven(literalTarget(TargetKind::Material, m.name));
+            break;
+        }
     presetIndex_ = -1;
     showFinal_ = false;
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
-    render_ = frameSettings(scene_, options_.frame);
+    render_ = frameSettings(scene(), options_.frame);
     int windowWidth = 0, windowHeight = 0;
     glfwGetFramebufferSize(window_, &windowWidth, &windowHeight);
-    if (options_.frame.width <= 0 && scene_.render.width <= 0) render_.width = std::max(windowWidth, 1);
-    if (options_.frame.height <= 0 && scene_.render.height <= 0) render_.height = std::max(windowHeight, 1);
+    if (options_.frame.width <= 0 && scene().render.width <= 0) render_.width = std::max(windowWidth, 1);
+    if (options_.frame.height <= 0 && scene().render.height <= 0) render_.height = std::max(windowHeight, 1);
     status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
 }
 
-WovenParams* PreviewWindow::editedMaterial() {
-    if (materialIndex_ < 0 || materialIndex_ >= int(scene_.materials.size())) return nullptr;
-    auto& woven = scene_.materials[materialIndex_].woven;
-    return woven ? &*woven : nullptr;
+WovenParams* PreviewWindow::editedParams() {
+    if (editIndex_ < 0 || editIndex_ >= int(edits_->edits().size())) return nullptr;
+    return &edits_->params(editIndex_);
+}
+
+// The scene's materials from the edits, after any change; the meshes go to the GPU again only
+// when a primitive's material index changed (a split, a revert).
+void PreviewWindow::applyEdits() {
+    try {
+        if (edits_->apply()) {
+            renderer_->setMeshes(scene());
+            picker_.reset();
+        }
+    } catch (const std::exception& e) {
+        status_ = e.what();
+    }
+}
+
+// A click: select the primitive under the cursor, as core's renderer sees the preview's view.
+void PreviewWindow::pick(glm::vec2 cursor) {
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    Camera camera = camera_.camera();
+    camera.aspect = float(width) / float(std::max(height, 1));
+    try {
+        pickedMesh_ = picker_.pick(scene(), camera, {width, height}, cursor);
+    } catch (const std::exception& e) {
+        status_ = e.what();
+        pickedMesh_ = -1;
+    }
+    // Offer the most specific target: the node that holds the primitive.
+    if (pickedMesh_ >= 0) targetChoice_ = int(edits_->targetsFor(pickedMesh_).size()) - 1;
 }
 
 void PreviewWindow::onScroll(GLFWwindow* window, double, double dy) {
@@ -213,7 +258,14 @@ void PreviewWindow::handleMouse() {
     lastCursor_ = cursor;
     const double scroll = scroll_;
     scroll_ = 0.0;
+    const bool leftDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (!leftDown && pressedAt_) {
+        // Released where it was pressed: a click, not the end of an orbit.
+        if (glm::length(cursor - *pressedAt_) < 3.0) pick(glm::vec2(cursor));
+        pressedAt_.reset();
+    }
     if (ImGui::GetIO().WantCaptureMouse) return;
+    if (leftDown && !pressedAt_) pressedAt_ = cursor;
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
     const float h = float(std::max(height, 1));
@@ -279,12 +331,13 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", e.what());
     }
 
-    ImGui::InputText("material file", materialPath_, sizeof materialPath_);
-    const std::string& name = scene_.materials[materialIndex_].name;
-    if (ImGui::Button("Save material")) {
+    ImGui::InputText("scene file", materialPath_, sizeof materialPath_);
+    const std::string& target = edits_->edits()[size_t(editIndex_)].target;
+    if (ImGui::Button("Save materials")) {
+        // Every edit under its target, as a scene file's "materials" says it.
         try {
             const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
-            saveMaterial(materialPath_, name, p, gltf ? scenePath_ : "");
+            for (const WovenEdit& e : edits_->edits()) saveMaterial(materialPath_, e.target, e.params, gltf ? scenePath_ : "");
             status_ = std::string("saved ") + materialPath_;
         } catch (const std::exception& e) {
             status_ = e.what();
@@ -293,7 +346,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
     ImGui::SameLine();
     if (ImGui::Button("Load material")) {
         try {
-            p = loadMaterial(materialPath_, name, p);
+            p = loadMaterial(materialPath_, target, p);
             presetIndex_ = -1;
             status_ = std::string("loaded ") + materialPath_;
         } catch (const std::exception& e) {
@@ -306,8 +359,8 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
 void PreviewWindow::drawLightControls() {
     static const char* typeNames[] = {"point", "spot", "directional"};
     bool changed = false;
-    for (size_t i = 0; i < scene_.lights.size(); ++i) {
-        PunctualLight& light = scene_.lights[i];
+    for (size_t i = 0; i < scene().lights.size(); ++i) {
+        PunctualLight& light = scene().lights[i];
         ImGui::PushID(int(i));
         ImGui::Text("light %zu (%s)", i, typeNames[int(light.type)]);
         changed |= ImGui::ColorEdit3("intensity", &light.intensity.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
@@ -320,9 +373,9 @@ void PreviewWindow::drawLightControls() {
         }
         ImGui::PopID();
     }
-    changed |= ImGui::ColorEdit3("environment", &scene_.environment.color.x,
+    changed |= ImGui::ColorEdit3("environment", &scene().environment.color.x,
                                  ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    if (changed) lights_ = PreviewLights::fromScene(scene_);
+    if (changed) lights_ = PreviewLights::fromScene(scene());
 }
 
 void PreviewWindow::drawRenderControls() {
@@ -339,7 +392,7 @@ void PreviewWindow::drawRenderControls() {
     if (ImGui::Button("Render")) {
         RenderSettings settings = render_;
         settings.camera = camera_.camera();
-        final_.start(scene_, settings);
+        final_.start(scene(), settings);
         finalImage_.reset();
         showFinal_ = true;
     }
@@ -375,6 +428,51 @@ void PreviewWindow::drawRenderControls() {
     }
 }
 
+// What the last click picked, the targets that name it, and "make woven" / "revert".
+void PreviewWindow::drawSelection() {
+    if (pickedMesh_ < 0 || pickedMesh_ >= int(scene().meshes.size())) {
+        ImGui::TextWrapped("Click a surface to select it.");
+        return;
+    }
+    const Mesh& mesh = scene().meshes[size_t(pickedMesh_)];
+    std::string path;
+    for (const std::string& node : mesh.nodePath) path += (path.empty() ? "" : " > ") + node;
+    ImGui::TextWrapped("node %s", path.c_str());
+    ImGui::TextWrapped("mesh %s", mesh.meshName.c_str());
+    ImGui::TextWrapped("material %s", mesh.material >= 0 ? scene().materials[size_t(mesh.material)].name.c_str() : "(none)");
+    const std::vector<std::string> targets = edits_->targetsFor(pickedMesh_);
+    targetChoice_ = std::clamp(targetChoice_, 0, int(targets.size()) - 1);
+    if (ImGui::BeginCombo("target", targets[size_t(targetChoice_)].c_str())) {
+        for (size_t i = 0; i < targets.size(); ++i)
+            if (ImGui::Selectable(targets[i].c_str(), int(i) == targetChoice_)) targetChoice_ = int(i);
+        ImGui::EndCombo();
+    }
+    const std::string& target = targets[size_t(targetChoice_)];
+    if (ImGui::Button("Make woven")) {
+        try {
+            editIndex_ = edits_->makeWoven(target);
+            presetIndex_ = -1;
+            applyEdits();
+            status_ = "made " + target + " woven";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Revert")) {
+        const std::string current = editIndex_ >= 0 ? edits_->edits()[size_t(editIndex_)].target : "";
+        if (edits_->revert(target)) {
+            editIndex_ = -1;
+            for (size_t i = 0; i < edits_->edits().size(); ++i)
+                if (edits_->edits()[i].target == current) editIndex_ = int(i);
+            applyEdits();
+            status_ = "reverted " + target;
+        } else {
+            status_ = target + " has no edit to revert";
+        }
+    }
+}
+
 void PreviewWindow::drawPanel() {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(440, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
@@ -392,19 +490,22 @@ void PreviewWindow::drawPanel() {
     ImGui::SameLine();
     ImGui::Checkbox("shadows", &shadows_);
     if (ImGui::Button("Frame scene")) {
-        const SceneBox box = sceneBounds(scene_);
+        const SceneBox box = sceneBounds(scene());
         camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
     }
 
+    if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) drawSelection();
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (ImGui::BeginCombo("material", materialIndex_ >= 0 ? scene_.materials[materialIndex_].name.c_str() : "(none woven)")) {
-            for (size_t i = 0; i < scene_.materials.size(); ++i)
-                if (scene_.materials[i].woven &&
-                    ImGui::Selectable(scene_.materials[i].name.c_str(), int(i) == materialIndex_))
-                    materialIndex_ = int(i), presetIndex_ = -1;
+        const auto& edits = edits_->edits();
+        if (ImGui::BeginCombo("woven", editIndex_ >= 0 ? edits[size_t(editIndex_)].target.c_str() : "(none: click a surface)")) {
+            for (size_t i = 0; i < edits.size(); ++i)
+                if (ImGui::Selectable(edits[i].target.c_str(), int(i) == editIndex_)) editIndex_ = int(i), presetIndex_ = -1;
             ImGui::EndCombo();
         }
-        if (WovenParams* p = editedMaterial()) drawMaterialControls(*p);
+        if (WovenParams* p = editedParams()) {
+            drawMaterialControls(*p);
+            applyEdits();
+        }
     }
     if (ImGui::CollapsingHeader("Lights")) drawLightControls();
     if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderControls();
@@ -498,7 +599,7 @@ void PreviewWindow::run() {
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
             try {
-                renderer_->render(scene_, lights_, camera, {width, height}, preview);
+                renderer_->render(scene(), lights_, camera, {width, height}, preview);
                 renderer_->display(0, {0, 0}, display_);
             } catch (const std::exception& e) {
                 status_ = e.what();  // e.g. a shader variant that fails to compile

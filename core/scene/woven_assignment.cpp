@@ -27,20 +27,32 @@ Target parseTarget(const std::string& text) {
     else if (startsWith("node:")) t.kind = Target::Kind::Node, t.pattern = text.substr(5);
     else if (startsWith("material:")) t.kind = Target::Kind::Material, t.pattern = text.substr(9);
     else t.kind = Target::Kind::Material, t.pattern = text;
-    t.glob = t.pattern.find_first_of("*?[") != std::string::npos;
+    // A glob has an unescaped wildcard; "\\*" is a literal star.
+    for (size_t i = 0; i < t.pattern.size() && !t.glob; ++i) {
+        if (t.pattern[i] == '\\') ++i;
+        else t.glob = t.pattern[i] == '*' || t.pattern[i] == '?' || t.pattern[i] == '[';
+    }
     return t;
 }
 
-bool matches(const Target& t, const std::string& name) {
-    return t.glob ? fnmatch(t.pattern.c_str(), name.c_str(), 0) == 0 : t.pattern == name;
+bool matches(const Target& t, const std::string& name) { return fnmatch(t.pattern.c_str(), name.c_str(), 0) == 0; }
+
+std::string escapeGlob(const std::string& name) {
+    std::string escaped;
+    for (char c : name) {
+        if (c == '*' || c == '?' || c == '[' || c == '\\') escaped += '\\';
+        escaped += c;
+    }
+    return escaped;
 }
 
-// How specific `t` is for `mesh`, or -1 when it does not name it (the order in the header).
-int specificity(const Target& t, const SceneDescription& scene, const Mesh& mesh) {
+// How specific `t` is for `mesh` of `material` (null: none), or -1 when it does not name it
+// (the order in the header).
+int specificity(const Target& t, const Mesh& mesh, const Material* material) {
     switch (t.kind) {
         case Target::Kind::All: return 0;
         case Target::Kind::Material:
-            if (mesh.material < 0 || !matches(t, scene.materials[size_t(mesh.material)].name)) return -1;
+            if (!material || !matches(t, material->name)) return -1;
             return t.glob ? 1 : 2;
         case Target::Kind::Mesh:
             if (!matches(t, mesh.meshName)) return -1;
@@ -59,8 +71,9 @@ std::string quotedList(const std::set<std::string>& names) {
     return list.empty() ? "none" : list;
 }
 
-// What the scene offers to name, for the error of a target that names nothing.
-std::string whatExists(const SceneDescription& scene) {
+}  // namespace
+
+std::string whatTargetsCanName(const SceneDescription& scene) {
     std::set<std::string> materials, meshes, nodes;
     for (const Material& m : scene.materials) materials.insert(m.name);
     for (const Mesh& m : scene.meshes) {
@@ -71,10 +84,20 @@ std::string whatExists(const SceneDescription& scene) {
            quotedList(nodes) + " (targets: NAME, material:NAME, mesh:NAME, node:NAME, globs, or \"*\")";
 }
 
-}  // namespace
+std::string literalTarget(TargetKind kind, const std::string& name) {
+    switch (kind) {
+        case TargetKind::Mesh: return "mesh:" + escapeGlob(name);
+        case TargetKind::Node: return "node:" + escapeGlob(name);
+        case TargetKind::Material: break;
+    }
+    // A bare name would be read as "*" or as a mesh or node target: say it is a material's.
+    const bool ambiguous = name == "*" || name.rfind("mesh:", 0) == 0 || name.rfind("node:", 0) == 0 ||
+                           name.rfind("material:", 0) == 0;
+    return (ambiguous ? "material:" : "") + escapeGlob(name);
+}
 
-bool targetNames(const SceneDescription& scene, const std::string& target, const Mesh& mesh) {
-    return specificity(parseTarget(target), scene, mesh) >= 0;
+bool targetNames(const std::string& target, const Mesh& mesh, const Material* material) {
+    return specificity(parseTarget(target), mesh, material) >= 0;
 }
 
 void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& assignments) {
@@ -91,7 +114,8 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         std::vector<std::pair<int, size_t>> layers;
         for (size_t a = 0; a < targets.size(); ++a) {
-            const int s = specificity(targets[a], scene, scene.meshes[m]);
+            const Mesh& mesh = scene.meshes[m];
+            const int s = specificity(targets[a], mesh, mesh.material >= 0 ? &scene.materials[size_t(mesh.material)] : nullptr);
             if (s >= 0) layers.emplace_back(s, a), used[a] = true;
         }
         if (layers.empty()) continue;
@@ -101,7 +125,7 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         groups[{scene.meshes[m].material, order}].push_back(m);
     }
     for (size_t a = 0; a < assignments.size(); ++a)
-        if (!used[a]) fail(assignments[a], "'" + assignments[a].target + "' names nothing: " + whatExists(scene));
+        if (!used[a]) fail(assignments[a], "'" + assignments[a].target + "' names nothing: " + whatTargetsCanName(scene));
 
     // How many primitives use each material, to know when a group has all of them.
     std::map<int, size_t> users;

@@ -6,7 +6,8 @@
 //   "mesh:NAME"                 the primitives of glTF mesh NAME
 //   "node:NAME"                 the primitives of node NAME and of every node below it
 //   "*"                         every primitive, those without a material included
-// NAME may be a glob (*, ? and [...], as a shell matches file names).
+// NAME may be a glob (*, ? and [...], as a shell matches file names; a backslash makes the next
+// character literal).
 // Each primitive takes the woven parameters of every target that names it, layered from the
 // least specific to the most: "*", material globs, material names, mesh globs, mesh names,
 // then node targets by the depth of the node they match, a deeper node over a shallower one
@@ -36,7 +37,15 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
 // The command line's "TARGET=JSON". Throws SceneError naming scene.source and the option.
 WovenAssignment parseWovenOption(const SceneDescription& scene, const std::string& option);
 
-// Whether `target` names primitive `mesh` of `scene`.
-bool targetNames(const SceneDescription& scene, const std::string& target, const Mesh& mesh);
+// "the scene has materials 'A', 'B'; meshes ...; nodes ... (targets: ...)": for errors.
+std::string whatTargetsCanName(const SceneDescription& scene);
+
+// The target that names exactly the material, mesh or node called `name`, whatever characters
+// the name holds (wildcards escaped, a material name that looks like a prefix prefixed).
+enum class TargetKind { Material, Mesh, Node };
+std::string literalTarget(TargetKind kind, const std::string& name);
+
+// Whether `target` names primitive `mesh`, whose material is `material` (null: it has none).
+bool targetNames(const std::string& target, const Mesh& mesh, const Material* material);
 
 }  // namespace woven
