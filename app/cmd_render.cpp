@@ -117,8 +117,8 @@ void addRenderCommand(CLI::App& app) {
                                        "without --spp no sample limit)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("-o,--out", o->out,
-                    "output image: .exr (linear float RGB, sample count N, and the exact sample sums and range woven merge adds up) or .png (sRGB, tone-mapped); "
-                    "default: the scene's name with .exr");
+                    "output image: .exr (linear float RGB, sample count N, and the exact sample sums and range "
+                    "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
         ->check(CLI::NonNegativeNumber);

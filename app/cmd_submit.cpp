@@ -86,7 +86,8 @@ std::vector<ClusterFrame> resolveFrames(const SubmitOptions& o, std::string* job
     if (numbered) {
         outPattern = FramePattern::parse(out.string());
         if (!outPattern)
-            throw std::invalid_argument("-o " + o.out + ": with several frames, OUT needs a frame number field such as frame_%04d.exr");
+            throw std::invalid_argument("-o " + o.out +
+                                        ": with several frames, OUT needs a frame number field such as frame_%04d.exr");
         named = outPattern->withField(std::to_string(firstNumber) + "-" + std::to_string(firstNumber + int(scenes.size()) - 1));
     }
     *jobDir = o.jobDir.empty() ? (named.parent_path() / named.stem()).string() + ".slurm" : absolute(o.jobDir);
@@ -205,8 +206,8 @@ bool waitForJobs(const SlurmJob& job, const std::string& renderId, const std::st
         for (const auto& [index, state] : mergeStates) ended = ended && hasEnded(state);
         if (ended) break;
         if (timeout > 0.0 && elapsed >= timeout)
-            throw std::runtime_error("gave up waiting after " + std::to_string(int(timeout)) + " s; the jobs go on: squeue --jobs=" +
-                                     renderId + "," + mergeId);
+            throw std::runtime_error("gave up waiting after " + std::to_string(int(timeout)) +
+                                     " s; the jobs go on: squeue --jobs=" + renderId + "," + mergeId);
         // Often at first, when the small jobs of a test end, then every 10 s at most, to spare slurmctld.
         std::this_thread::sleep_for(std::chrono::duration<double>(std::clamp(elapsed / 10.0, 0.5, 10.0)));
     }

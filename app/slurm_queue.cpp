@@ -47,7 +47,8 @@ std::vector<ArrayTask> arrayTasks(const std::vector<std::string>& jobIds) {
                                              "--format=%i %T"});
     // squeue fails with "Invalid job id specified" once slurmctld has forgotten every job asked for.
     if (squeue.exitCode != 0 && squeue.err.find("Invalid job id") == std::string::npos)
-        throw std::runtime_error("squeue failed: " + (squeue.err.empty() ? "exit status " + std::to_string(squeue.exitCode) : squeue.err));
+        throw std::runtime_error("squeue failed: " +
+                                 (squeue.err.empty() ? "exit status " + std::to_string(squeue.exitCode) : squeue.err));
     std::vector<ArrayTask> tasks = squeue.exitCode == 0 ? parseTasks(squeue.out, ' ') : std::vector<ArrayTask>();
 
     std::set<std::string> known;

@@ -5,7 +5,8 @@
 #   2. a task killed with scancel makes --wait fail, the merge refuse and name the task's
 #      samples, and the parts there are go to OUT.partial.exr, never to OUT;
 #   3. the killed task requeued (scontrol requeue) renders the same samples again: merging then
-#      gives the local frame bit for bit, no sample twice.
+#      gives the local frame bit for bit, no sample twice;
+#   4. --wait gives up after --wait-timeout.
 # Every wait is bounded, and the EXIT trap stops the daemons by their pid files whatever fails.
 # Exits 77 (skipped) when Slurm or munge is not installed, or not run as root.
 #
@@ -81,4 +82,12 @@ bash "$work/two/frame.slurm/merge.sbatch" || fail "the merge failed after the re
 [ ! -e "$work/two/frame.partial.exr" ] || fail "the partial frame outlived the complete one"
 "$woven" render "$scene" "${large[@]}" -o "$work/local_large.exr" >/dev/null 2>&1
 "$exr_equal" "$work/local_large.exr" "$out" || fail "the frame with the requeued task differs from the local render"
+
+echo "== 4. --wait gives up after --wait-timeout, and the jobs go on"
+status=0
+"$woven" submit "$scene" "${large[@]}" --tasks 4 -o "$work/three/frame.exr" --wait --wait-timeout 1 2>"$work/timeout.err" ||
+  status=$?
+[ "$status" -ne 0 ] || fail "woven submit --wait-timeout 1 succeeded"
+grep -q "gave up waiting after 1 s; the jobs go on" "$work/timeout.err" || fail "no message on the timeout"
+[ -n "$(squeue --noheader --states=pending,running)" ] || fail "the jobs did not go on"
 echo "PASS"

@@ -84,7 +84,8 @@ TEST(SubmitCommand, DryRunScriptsRunByHandGiveTheLocalFrameBitForBit) {
     const std::string scene = writeScene(root / "my scene.json", 0.3f);
     const std::string out = (root / "out" / "frame $1.exr").string();
     const std::vector<std::string> options = {"--width", "32", "--height", "24", "--integrator", "path", "--seed", "4",
-                                              "--woven", "Cloth={\"ex\": 3, \"pattern\": [2, 1, 1], \"weft_color\": [0.8, 0.2, 0.1]}"};
+                                              "--woven",
+                                              "Cloth={\"ex\": 3, \"pattern\": [2, 1, 1], \"weft_color\": [0.8, 0.2, 0.1]}"};
     std::vector<std::string> submit = {"submit", scene, "--tasks", "3", "--spp", "5", "-o", out, "--dry-run",
                                        "--partition", "short", "--time", "5:00", "--cpus-per-task", "2",
                                        "--sbatch=--account=lab", "--requeue"};
@@ -103,7 +104,8 @@ TEST(SubmitCommand, DryRunScriptsRunByHandGiveTheLocalFrameBitForBit) {
 
     // Samples 0-4 over 3 tasks: 0, 1-2, 3-4.
     for (int task = 0; task < 3; ++task) {
-        const Result r = shell("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " + shellQuote((job / "render.sbatch").string()));
+        const Result r =
+            shell("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " + shellQuote((job / "render.sbatch").string()));
         ASSERT_EQ(r.status, 0) << r.output;
     }
     for (const char* part : {"samples_0-0.exr", "samples_1-2.exr", "samples_3-4.exr"})
