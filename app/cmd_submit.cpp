@@ -77,18 +77,18 @@ std::vector<ClusterFrame> resolveFrames(const SubmitOptions& o, std::string* job
     for (const std::string& scene : scenes)
         if (!fs::is_regular_file(scene)) throw std::invalid_argument(scene + ": no such scene file");
 
-    const fs::path out = absolute(o.out);
-    if (out.extension() != ".exr")
+    if (fs::path(o.out).extension() != ".exr")
         throw std::invalid_argument(o.out + ": woven submit writes EXR (the merge needs each part's sample sums): name it .exr");
     const bool numbered = !o.frames.empty() || scenes.size() > 1;
     std::optional<FramePattern> outPattern;
-    fs::path named = out;
+    fs::path named = absolute(o.out);
     if (numbered) {
-        outPattern = FramePattern::parse(out.string());
+        outPattern = FramePattern::parse(o.out);
         if (!outPattern)
             throw std::invalid_argument("-o " + o.out +
                                         ": with several frames, OUT needs a frame number field such as frame_%04d.exr");
-        named = outPattern->withField(std::to_string(firstNumber) + "-" + std::to_string(firstNumber + int(scenes.size()) - 1));
+        const int last = firstNumber + int(scenes.size()) - 1;
+        named = absolute(outPattern->withField(std::to_string(firstNumber) + "-" + std::to_string(last)));
     }
     *jobDir = o.jobDir.empty() ? (named.parent_path() / named.stem()).string() + ".slurm" : absolute(o.jobDir);
 
@@ -97,7 +97,7 @@ std::vector<ClusterFrame> resolveFrames(const SubmitOptions& o, std::string* job
         ClusterFrame f;
         f.number = firstNumber + int(i);
         f.scene = absolute(scenes[i]);
-        f.out = numbered ? outPattern->name(f.number) : out.string();
+        f.out = numbered ? absolute(outPattern->name(f.number)) : named.string();
         f.parts = numbered ? *jobDir + "/parts/" + std::to_string(f.number) : *jobDir + "/parts";
         frames.push_back(f);
     }
@@ -155,7 +155,7 @@ void removeEarlierResults(const SlurmJob& job) {
             if (entry.path().filename().string().rfind(kPartPrefix, 0) == 0) removed += fs::remove(entry.path());
         removed += fs::remove(partialFrameName(f.out));
     }
-    if (removed > 0) std::cerr << "removed " << removed << " part files of an earlier submission\n";
+    if (removed > 0) std::cerr << "removed " << removed << " files left by an earlier submission of these frames\n";
 }
 
 std::string submit(const std::vector<std::string>& command) {
