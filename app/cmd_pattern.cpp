@@ -1,36 +1,80 @@
-// `woven pattern`: print the top-yarn map of a weave as MODEL.md draws it.
+// `woven pattern`: print the top-yarn map of a weave as MODEL.md draws it, or draw it in thread
+// colours as a PNG; the weave is an (i, j, k) pattern or a WIF draft.
 #include <iostream>
 #include <stdexcept>
 
 #include "commands.h"
+#include "draft_tile.h"
+#include "drawdown_image.h"
+#include "image_io.h"
 #include "weave_pattern.h"
+#include "wif_reader.h"
 
 namespace woven {
+
+namespace {
+
+// Where neither a draft nor anything else gives colours: a classic drawdown, black where the
+// warp is on top.
+const glm::vec3 kPlainWarpColor{0.0f}, kPlainWeftColor{1.0f};
+
+struct Weave {
+    WeavePattern pattern;
+    std::vector<glm::vec3> warpColors{kPlainWarpColor}, weftColors{kPlainWeftColor};
+};
+
+Weave weaveFromDraft(const std::string& path) {
+    std::vector<std::string> warnings;
+    const Draft draft = readWif(path, warnings);
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    DraftTile tile = draftTile(draft, path);
+    Weave weave{WeavePattern::fromRows(tile.rows)};
+    if (!tile.warpColors.empty()) weave.warpColors = std::move(tile.warpColors);
+    if (!tile.weftColors.empty()) weave.weftColors = std::move(tile.weftColors);
+    return weave;
+}
+
+}  // namespace
 
 void addPatternCommand(CLI::App& app) {
     struct Options {
         std::vector<int> pattern{1, 1, 1};
+        std::string wif, png;
         std::vector<int> size;
+        int cellPixels = 8;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("pattern", "Print the top-yarn map of a weave ('-' weft, '|' warp)");
-    cmd->add_option("--pattern", opts->pattern, "I,J,K: I weft, J warp elements per row, shift K per row")
+    CLI::App* cmd = app.add_subcommand("pattern", "Print the top-yarn map of a weave ('-' weft, '|' warp), or draw it as a PNG");
+    CLI::Option* pattern = cmd->add_option("--pattern", opts->pattern, "I,J,K: I weft, J warp elements per row, shift K per row")
         ->delimiter(',')->expected(3);
-    cmd->add_option("--size", opts->size, "W,H: columns and rows to print (default: one repeat)")
+    cmd->add_option("--wif", opts->wif, "a weaving draft (WIF file) instead of --pattern")->excludes(pattern);
+    cmd->add_option("--size", opts->size, "W,H: columns and rows (default: one repeat)")
         ->delimiter(',')->expected(2);
+    cmd->add_option("--png", opts->png, "draw the weave in thread colours to this PNG instead of printing it "
+                                        "(a draft's colours; black warp, white weft otherwise)");
+    cmd->add_option("--cell-pixels", opts->cellPixels, "pixels per weave cell in --png")->check(CLI::Range(1, 256));
     cmd->callback([opts] {
-        const auto& p = opts->pattern;
-        if (p[0] < 0 || p[1] < 0 || p[0] + p[1] < 1 || p[0] + p[1] > 1024)
-            throw std::invalid_argument("--pattern: need I, J >= 0 and 1 <= I + J <= 1024");
-        const WeavePattern weave = WeavePattern::regular(p[0], p[1], p[2]);
-        int w = weave.width(), h = weave.height();
+        Weave weave = [&] {
+            if (!opts->wif.empty()) return weaveFromDraft(opts->wif);
+            const auto& p = opts->pattern;
+            if (p[0] < 0 || p[1] < 0 || p[0] + p[1] < 1 || p[0] + p[1] > 1024)
+                throw std::invalid_argument("--pattern: need I, J >= 0 and 1 <= I + J <= 1024");
+            return Weave{WeavePattern::regular(p[0], p[1], p[2])};
+        }();
+        int w = weave.pattern.width(), h = weave.pattern.height();
         if (!opts->size.empty()) {
             w = opts->size[0];
             h = opts->size[1];
             if (w < 1 || h < 1 || w > 100000 || h > 100000)
                 throw std::invalid_argument("--size: W and H must be between 1 and 100000");
         }
-        std::cout << weave.draw(w, h);
+        if (opts->png.empty()) {
+            std::cout << weave.pattern.draw(w, h);
+            return;
+        }
+        // Clamp: the PNG holds the thread colours exactly, with no tone curve.
+        writePng(opts->png, drawdownImage(weave.pattern, weave.warpColors, weave.weftColors, w, h, opts->cellPixels),
+                 DisplayTransform{0.0f, ToneMap::Clamp});
     });
 }
 

@@ -32,7 +32,7 @@ struct PreviewCommandOptions {
 
 SceneDescription openScene(const PreviewCommandOptions& o) {
     SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene);
-    applyWovenOptions(scene, o.frame);
+    applySceneOptions(scene, o.frame);
     return scene;
 }
 

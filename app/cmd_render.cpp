@@ -68,7 +68,7 @@ int runRender(RenderCommand o) {
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene));
-    applyWovenOptions(*scene, o.options.frame);
+    applySceneOptions(*scene, o.options.frame);
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);
     const bool timeLimited = o.time > 0.0;

@@ -115,7 +115,7 @@ SlurmJob planJob(const SubmitOptions& o) {
     // The first frame's scene, with the --woven edits: bad options fail here rather than in
     // every task, and it gives the samples per pixel when --spp does not.
     SceneDescription scene = loadScene(job.frames.front().scene);
-    applyWovenOptions(scene, o.render.frame);
+    applySceneOptions(scene, o.render.frame);
     const RenderSettings settings = frameSettings(scene, o.render.frame);
     job.spp = settings.spp;
     if (job.tasks > job.spp)

@@ -1,30 +1,7 @@
-// core/model/ashikhmin_shirley.cpp's eval() and frame.cpp in GLSL: the anisotropic specular
-// lobe with Schlick Fresnel plus the coupled diffuse term, in a frame with z = the shading
-// normal and x = the e_x axis (along the yarn).
-const float PI = 3.14159265358979;
-
-struct Frame { vec3 x, y, z; };
+// core/model/ashikhmin_shirley.cpp's eval() in GLSL: the anisotropic specular lobe with
+// Schlick Fresnel plus the coupled diffuse term, in a frame with z = the shading normal and
+// x = the e_x axis (along the yarn).
 struct Lobe { float ex, ey, rs; vec3 rd; };
-
-vec3 toLocal(Frame f, vec3 v) { return vec3(dot(v, f.x), dot(v, f.y), dot(v, f.z)); }
-vec3 toWorld(Frame f, vec3 v) { return v.x * f.x + v.y * f.y + v.z * f.z; }
-
-Frame frameFromNormal(vec3 n) {  // Duff et al. 2017, as Frame::fromNormal
-    float s = n.z >= 0.0 ? 1.0 : -1.0;
-    float a = -1.0 / (s + n.z);
-    float b = n.x * n.y * a;
-    return Frame(vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), vec3(b, s + n.y * n.y * a, -n.y), n);
-}
-
-Frame frameFromNormalAndAxis(vec3 n, vec3 axis) {  // as Frame::fromNormalAndAxis
-    vec3 t = axis - dot(axis, n) * n;
-    float len2 = dot(t, t);
-    if (!(len2 > 1e-20) || isinf(len2)) return frameFromNormal(n);
-    vec3 x = t * inversesqrt(len2);
-    return Frame(x, cross(n, x), n);
-}
-
-float pow5(float x) { return (x * x) * (x * x) * x; }
 
 // log(1 - x), accurate where 1 - x rounds to 1 (GLSL has no log1p), so exponents up to 1e5
 // keep their narrow peak.

@@ -72,17 +72,3 @@ vec3 incidentLight(int i, vec3 p, vec3 ng, out vec3 wi) {
 #endif
     return intensity;
 }
-
-// Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
-vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
-    vec3 woLocal = toLocal(f, wo);
-    vec3 sum = ambientRadiance * ashikhminShirleyAlbedo(lobe, woLocal.z);
-    for (int i = 0; i < lightCount; ++i) {
-        vec3 wi;
-        vec3 L = incidentLight(i, p, ng, wi);
-        if (L == vec3(0.0)) continue;  // below the surface, outside a spot's cone, or in shadow
-        vec3 wiLocal = toLocal(f, wi);
-        sum += ashikhminShirley(lobe, woLocal, wiLocal) * L * max(wiLocal.z, 0.0);
-    }
-    return sum;
-}

@@ -1,9 +1,8 @@
-// The surface shader: core's WovenMaterial::shade (or the standard fallback material) lit by
-// lighting.glsl. Features a material does not use are compiled out by #defines that the C++
-// side picks from its parameters (woven_gl_material.cpp): WOVEN_MATERIAL (else standard),
-// WOVEN_NOISE, WOVEN_CRIMP, WOVEN_GAPS (both yarns narrower than their element) and
-// WOVEN_FILTER (the far-field weave filter); BASE_COLOR_TEXTURE for a standard material with a
-// texture; PREVIEW_SHADOWS (lighting.glsl).
+// The woven surface shader: core's WovenMaterial::shade lit by lighting.glsl (gltf.frag draws
+// every other material). Features a material does not use are compiled out by #defines that the
+// C++ side picks from its parameters (woven_gl_material.cpp): WOVEN_NOISE, WOVEN_CRIMP,
+// WOVEN_GAPS (both yarns narrower than their element) and WOVEN_FILTER (the far-field weave
+// filter); PREVIEW_SHADOWS (lighting.glsl).
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
@@ -12,14 +11,6 @@ layout(location = 0) out vec4 outRadiance;
 
 uniform vec3 cameraPosition;
 uniform vec3 emission;  // radiance of the front face
-#ifndef WOVEN_MATERIAL
-uniform vec3 baseColor;  // diffuse reflectance: base colour x (1 - metallic)
-#ifdef BASE_COLOR_TEXTURE
-uniform sampler2D baseColorTexture;
-#endif
-uniform float standardExponent;
-uniform float standardRs;
-#endif
 
 // A projection keeps a fair part of its vector, else it is rounding noise (as core).
 bool usableProjection(vec3 projected, vec3 original) {
@@ -46,7 +37,20 @@ Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
     return frameFromNormal(n);
 }
 
-#ifdef WOVEN_MATERIAL
+// Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
+vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
+    vec3 woLocal = toLocal(f, wo);
+    vec3 sum = ambientRadiance * ashikhminShirleyAlbedo(lobe, woLocal.z);
+    for (int i = 0; i < lightCount; ++i) {
+        vec3 wi;
+        vec3 L = incidentLight(i, p, ng, wi);
+        if (L == vec3(0.0)) continue;  // below the surface, outside a spot's cone, or in shadow
+        vec3 wiLocal = toLocal(f, wi);
+        sum += ashikhminShirley(lobe, woLocal, wiLocal) * L * max(wiLocal.z, 0.0);
+    }
+    return sum;
+}
+
 vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
     if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
     bool weft = y.type == WEFT;
@@ -112,15 +116,6 @@ vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out flo
 }
 #endif
 
-// Threshold in (0, 1) from a 4x4 ordered-dither matrix: partial coverage of see-through gaps
-// becomes a screen-door pattern, which needs no sorting.
-float ditherThreshold() {
-    ivec2 q = ivec2(gl_FragCoord.xy) & 3;
-    const int bayer[16] = int[](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-    return (float(bayer[q.y * 4 + q.x]) + 0.5) / 16.0;
-}
-#endif
-
 void main() {
     vec3 p = vPosition;
     vec3 wo = normalize(cameraPosition - p);
@@ -134,7 +129,6 @@ void main() {
     vec3 n = backSide ? -ns : ns;
     vec3 radiance = backSide ? vec3(0.0) : emission;
 
-#ifdef WOVEN_MATERIAL
     // dp/du and dp/dv of the triangle: p is an affine function of uv across a triangle, so
     // screen-space differences give them exactly, like core's per-triangle derivatives.
     float det = dux.x * duy.y - duy.x * dux.y;
@@ -172,12 +166,5 @@ void main() {
     float opacity = mix(nearOpacity, farOpacity, farWeight);
     if (opacity < ditherThreshold()) discard;
     radiance += ((1.0 - farWeight) * nearOpacity * near + farWeight * far) / opacity;
-#else
-    vec3 rd = baseColor;
-#ifdef BASE_COLOR_TEXTURE
-    rd *= texture(baseColorTexture, vUv).rgb;
-#endif
-    radiance += reflectedLight(frameFromNormal(n), Lobe(standardExponent, standardExponent, standardRs, rd), p, ng, wo);
-#endif
     outRadiance = vec4(radiance, 1.0);
 }

@@ -1,8 +1,11 @@
 #include "frame_options.h"
 
+#include <iostream>
 #include <map>
 
 #include "make_woven.h"
+#include "scene_lighting.h"
+#include "scene_validation.h"
 
 namespace woven {
 
@@ -15,6 +18,10 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
     command.add_option("--woven", o.woven, "NAME=JSON: make material NAME woven with these parameters (repeatable)");
+    command.add_option("--environment", o.environment,
+                       "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
+                       "radiance (a number), instead of its own environment")
+        ->type_name("FILE|GREY");
     static const std::map<std::string, ToneMap> toneMaps = {
         {"clamp", ToneMap::Clamp}, {"reinhard", ToneMap::Reinhard}, {"aces", ToneMap::Aces}};
     command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops");
@@ -23,8 +30,15 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->type_name("aces|clamp|reinhard");
 }
 
-void applyWovenOptions(SceneDescription& scene, const FrameOptions& options) {
+void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
+    validateScene(scene);
+    if (!options.environment.empty()) scene.environment = environmentFromOption(options.environment);
     for (const std::string& option : options.woven) applyWovenOption(scene, option);
+    // An --environment given is the user's choice, even a black one.
+    if (options.environment.empty() && lightByDefault(scene))
+        std::cerr << "note: " << scene.source
+                  << " has no light source (punctual light or environment): lit by woven's studio environment "
+                     "(--environment FILE|GREY to choose)\n";
 }
 
 RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& o) {

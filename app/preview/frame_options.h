@@ -20,14 +20,18 @@ struct FrameOptions {
     uint64_t seed = 0;
     int maxDepth = 8;
     std::vector<std::string> woven;      // NAME=JSON, applied in order
+    std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --woven --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --woven --environment
+// --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
-// The scene with the --woven edits applied.
-void applyWovenOptions(SceneDescription& scene, const FrameOptions& options);
+// The scene as a frame sees it: --environment, then the --woven edits, then, without
+// --environment, the studio environment if nothing lights it (said on stderr). Throws SceneError for a scene that cannot be
+// shown (no triangles, NaN vertices: validateScene()).
+void applySceneOptions(SceneDescription& scene, const FrameOptions& options);
 
 // defaultRenderSettings(scene) with the options that were given.
 RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& options);

@@ -8,8 +8,14 @@ namespace woven {
 namespace {
 struct Vertex {
     glm::vec3 position, normal;
-    glm::vec2 uv;
+    glm::vec2 uv, uv1;
+    glm::vec4 color, tangent;
 };
+
+void attribute(GLuint location, int size, size_t offset) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offset));
+}
 }  // namespace
 
 GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
@@ -18,6 +24,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
         vertices[i].position = mesh.positions[i];
         vertices[i].normal = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[i];
         vertices[i].uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i];
+        vertices[i].uv1 = mesh.uvs1.empty() ? glm::vec2(0.0f) : mesh.uvs1[i];
+        vertices[i].color = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[i];
+        vertices[i].tangent = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
     }
     indexCount_ = GLsizei(mesh.triangles.size() * 3);
     glGenVertexArrays(1, &vao_);
@@ -29,12 +38,12 @@ GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.triangles.size() * sizeof(glm::uvec3)),
                  mesh.triangles.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    attribute(0, 3, offsetof(Vertex, position));
+    attribute(1, 3, offsetof(Vertex, normal));
+    attribute(2, 2, offsetof(Vertex, uv));
+    attribute(3, 2, offsetof(Vertex, uv1));
+    attribute(4, 4, offsetof(Vertex, color));
+    attribute(5, 4, offsetof(Vertex, tangent));
     glBindVertexArray(0);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// One scene mesh in GPU buffers: interleaved position, normal, uv (zeros where the mesh has
-// none: the shader then falls back to the geometric normal and one weave element).
+// One scene mesh in GPU buffers: interleaved position, normal, both uv sets, colour and tangent
+// (zeros where the mesh has none, white for colour: the shader then falls back to the geometric
+// normal and one weave element).
 #include <epoxy/gl.h>
 
 #include "scene_description.h"

@@ -8,7 +8,7 @@
 
 #include "gl_error.h"
 #include "orbit_camera.h"
-#include "standard_lobe.h"
+#include "sheen_lobe.h"
 
 namespace woven {
 
@@ -41,6 +41,16 @@ PreviewRenderer::PreviewRenderer() {
                                                           std::vector<std::string>{"environment.frag"});
     glGenVertexArrays(1, &emptyVao_);
     shadows_ = std::make_unique<ShadowMaps>();
+    // Core's sheen albedo table, texel centres at its grid points so bilinear filtering matches.
+    const int n = SheenLobe::kAlbedoTableSize;
+    glGenTextures(1, &sheenAlbedoTable_);
+    glBindTexture(GL_TEXTURE_2D, sheenAlbedoTable_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, n, n, 0, GL_RED, GL_FLOAT, SheenLobe::albedoTable().data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 PreviewRenderer::~PreviewRenderer() {
@@ -48,28 +58,14 @@ PreviewRenderer::~PreviewRenderer() {
     glDeleteTextures(1, &colour_);
     glDeleteRenderbuffers(1, &depth_);
     glDeleteVertexArrays(1, &emptyVao_);
-    glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+    glDeleteTextures(1, &sheenAlbedoTable_);
     glDeleteTextures(1, &environmentTexture_);
 }
 
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
     tiles_.clear();
-    glDeleteTextures(GLsizei(textures_.size()), textures_.data());
-    textures_.assign(scene.textures.size(), 0);
-    glGenTextures(GLsizei(textures_.size()), textures_.data());
-    for (size_t t = 0; t < textures_.size(); ++t) {
-        // Row 0 (the image's top) at t = 0, where glTF puts v = 0; linear floats, as core samples them.
-        const Image& image = scene.textures[t];
-        glBindTexture(GL_TEXTURE_2D, textures_[t]);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT, image.pixels.data());
-        glGenerateMipmap(GL_TEXTURE_2D);  // a pixel's average, as core's converged frame has it
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    }
+    textures_.reset(&scene.textures);
     shadowCasters_.clear();
     ++meshGeneration_;
     bounds_ = sceneBounds(scene);
@@ -96,9 +92,12 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
 }
 
 const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave, bool shadows) {
-    const std::string preamble = surfaceProgramPreamble(material, filterWeave, shadows);
+    // The preamble names the program; a comment tells the two kinds apart.
+    const std::string preamble = material.woven ? "// woven\n" + wovenProgramPreamble(*material.woven, filterWeave, shadows)
+                                                : "// gltf\n" + gltfProgramPreamble(material, shadows);
     auto it = programs_.find(preamble);
-    if (it == programs_.end()) it = programs_.emplace(preamble, buildSurfaceProgram(preamble)).first;
+    if (it == programs_.end())
+        it = programs_.emplace(preamble, material.woven ? buildWovenProgram(preamble) : buildGltfProgram(preamble)).first;
     return *it->second;
 }
 
@@ -203,18 +202,10 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         glUniform1i(program.uniform("weaveTile"), 0);
         glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(tile->yarnCoverage()));
     } else {
-        const StandardLobe lobe = standardLobe(material);
-        glUniform3fv(program.uniform("baseColor"), 1, glm::value_ptr(lobe.diffuse));
-        glUniform1f(program.uniform("standardExponent"), lobe.exponent);
-        glUniform1f(program.uniform("standardRs"), lobe.rs);
-        if (material.baseColorTexture >= 0) {
-            if (material.baseColorTexture >= int(textures_.size()))
-                throw GlError("material '" + material.name + "': texture " + std::to_string(material.baseColorTexture) +
-                              " does not exist");
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, textures_[material.baseColorTexture]);
-            glUniform1i(program.uniform("baseColorTexture"), 0);
-        }
+        glActiveTexture(GL_TEXTURE3);
+        glBindTexture(GL_TEXTURE_2D, sheenAlbedoTable_);
+        glUniform1i(program.uniform("sheenAlbedoTable"), 3);
+        uploadGltfMaterial(program, material, textures_, 4);
     }
     // After the weave tile's update, which binds on the active unit.
     if (shadows) shadows_->bind(program, 1, 2);

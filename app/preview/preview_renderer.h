@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "gltf_gl_material.h"
 #include "gpu_mesh.h"
 #include "image_io.h"
 #include "preview_lights.h"
@@ -53,7 +54,8 @@ private:
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
     std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
-    std::vector<GLuint> textures_;                            // SceneDescription::textures
+    GpuTextures textures_;                                    // SceneDescription::textures
+    GLuint sheenAlbedoTable_ = 0;
     std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_;
     GLuint environmentTexture_ = 0;  // 0: a constant environment, drawn by the clear colour
     std::unique_ptr<ShadowMaps> shadows_;

@@ -166,7 +166,9 @@ PreviewWindow::~PreviewWindow() {
 void PreviewWindow::openScene(const std::string& path) {
     SceneDescription scene = path.empty() ? wavyClothScene() : loadScene(path);
     // The command line's --woven edits name the command line's scene's materials.
-    if (path == options_.scene) applyWovenOptions(scene, options_.frame);
+    FrameOptions sceneOptions = options_.frame;
+    if (path != options_.scene) sceneOptions.woven.clear();
+    applySceneOptions(scene, sceneOptions);
     final_.cancel();
     scene_ = std::move(scene);
     scenePath_ = path;

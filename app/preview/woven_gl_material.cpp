@@ -43,7 +43,7 @@ std::string wovenParamsGlslStruct() {
 }
 
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
-    std::string d = "#define WOVEN_MATERIAL\n";
+    std::string d;
     if (p.noise > 0.0f) d += "#define WOVEN_NOISE\n";
     if (p.crimp > 0.0f) d += "#define WOVEN_CRIMP\n";
     if (p.yarn_width < 1.0f && p.warp_width < 1.0f) d += "#define WOVEN_GAPS\n";
@@ -112,18 +112,17 @@ void WeaveTileTexture::update(const WovenParams& p) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
 }
 
-std::string surfaceProgramPreamble(const Material& material, bool filterWeave, bool shadows) {
-    std::string defines = material.woven ? wovenFeatureDefines(*material.woven, filterWeave)
-                          : material.baseColorTexture >= 0 ? "#define BASE_COLOR_TEXTURE\n" : "";
+std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bool shadows) {
+    std::string defines = wovenFeatureDefines(params, filterWeave);
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines + wovenParamsGlslStruct();
 }
 
-std::unique_ptr<ShaderProgram> buildSurfaceProgram(const std::string& preamble) {
+std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
-        std::vector<std::string>{"woven_params.glsl", "ashikhmin_shirley.glsl", "yarn_noise.glsl", "yarn_geometry.glsl",
-                                 "lighting.glsl", "woven.frag"},
+        std::vector<std::string>{"frame.glsl", "woven_params.glsl", "ashikhmin_shirley.glsl", "yarn_noise.glsl",
+                                 "yarn_geometry.glsl", "lighting.glsl", "screen_door.glsl", "woven.frag"},
         preamble);
 }
 

@@ -47,12 +47,10 @@ private:
     std::string key_;
 };
 
-struct Material;
-
-// The surface program's preamble for a material: feature #defines (PREVIEW_SHADOWS when
+// The woven program's preamble for a material: feature #defines (PREVIEW_SHADOWS when
 // `shadows`) plus the WovenParams struct.
-std::string surfaceProgramPreamble(const Material& material, bool filterWeave, bool shadows);
+std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bool shadows);
 // shaders/mesh.vert + the woven.frag chain, compiled with `preamble`.
-std::unique_ptr<ShaderProgram> buildSurfaceProgram(const std::string& preamble);
+std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble);
 
 }  // namespace woven

@@ -47,11 +47,11 @@ SceneDescription drapedClothScene() {
     cloth.woven = p;
     Material floor;
     floor.name = "floor";
-    floor.baseColor = glm::vec3(0.5f);
+    floor.baseColor = glm::vec4(glm::vec3(0.5f), 1.0f);
     Material lamp;
     lamp.name = "lamp";
     lamp.emission = glm::vec3(8.0f);
-    lamp.baseColor = glm::vec3(0.0f);
+    lamp.baseColor = glm::vec4(glm::vec3(0.0f), 1.0f);
     scene.materials = {cloth, floor, lamp};
 
     constexpr int n = 88;

@@ -6,14 +6,9 @@
 #include <glm/glm.hpp>
 #include <optional>
 
-namespace woven {
+#include "bsdf_sample.h"
 
-struct BsdfSample {
-    glm::vec3 wi;      // sampled direction
-    glm::vec3 f;       // BRDF value (without the cosine)
-    float pdf;         // solid-angle density of wi
-    glm::vec3 weight;  // f * cos(wi) / pdf
-};
+namespace woven {
 
 class AshikhminShirley {
 public:
@@ -24,6 +19,7 @@ public:
     // u: two uniform numbers in [0, 1) for the direction, uc one more for the lobe choice.
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
 
+    bool transmits() const { return false; }
     float specularProbability() const { return specularProb_; }
     // Density of half vector h for the specular lobe (the source's eq. 1, p_h).
     float halfVectorPdf(const glm::vec3& h) const;

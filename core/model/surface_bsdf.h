@@ -1,15 +1,19 @@
 #pragma once
-// The BSDF at one shading point in world space: a reflection lobe in its shading frame. Every
-// material reduces to this at a hit: the woven material per yarn point, the standard fallback
-// with an isotropic exponent.
+// A lobe in its shading frame, seen in world space: directions go to the lobe's local frame
+// (z = the shading normal) and samples come back. Every BSDF at a hit is one: the woven model's
+// Ashikhmin-Shirley lobe per yarn point (SurfaceBsdf), and the renderer's Bsdf over every kind
+// of lobe (core/bsdf/bsdf.h).
+#include <optional>
+
 #include "ashikhmin_shirley.h"
 #include "frame.h"
 
 namespace woven {
 
-class SurfaceBsdf {
+template <class Lobe>
+class FramedLobe {
 public:
-    SurfaceBsdf(const Frame& frame, const AshikhminShirley& lobe) : frame_(frame), lobe_(lobe) {}
+    FramedLobe(const Frame& frame, const Lobe& lobe) : frame_(frame), lobe_(lobe) {}
 
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
         return lobe_.eval(frame_.toLocal(wo), frame_.toLocal(wi));
@@ -22,13 +26,18 @@ public:
         if (s) s->wi = frame_.toWorld(s->wi);
         return s;
     }
+    // Whether light may pass to the other side of the surface (else the lobe only reflects).
+    bool transmits() const { return lobe_.transmits(); }
     const Frame& frame() const { return frame_; }
     const glm::vec3& shadingNormal() const { return frame_.z; }
-    const AshikhminShirley& lobe() const { return lobe_; }
+    const Lobe& lobe() const { return lobe_; }
 
 private:
     Frame frame_;
-    AshikhminShirley lobe_;
+    Lobe lobe_;
 };
+
+// The woven model's BSDF at one yarn point.
+using SurfaceBsdf = FramedLobe<AshikhminShirley>;
 
 }  // namespace woven

@@ -34,6 +34,8 @@ public:
     std::optional<WovenShading> shade(const ShadingInput& in) const;
     // Cheap test for the ray-tracing filter: no yarn and no backing at this uv.
     bool isSeeThrough(const glm::dvec2& uv) const;
+    // Whether any uv is see-through: both yarns narrower than their element, and no backing.
+    bool hasSeeThroughGaps() const { return mayHaveGaps_; }
 
 private:
     WovenParams params_;

@@ -1,5 +1,6 @@
 #include "bdpt_integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -24,7 +25,7 @@ struct BdptIntegrator::Vertex {
     glm::vec3 dir{0.0f};  // infinite lights: the direction light travels, into the scene
     glm::vec3 wo{0.0f};   // surfaces: unit direction towards the vertex before
     SurfaceHit hit;
-    std::optional<SurfaceBsdf> bsdf;
+    std::optional<Bsdf> bsdf;
     int light = -1;  // light vertices: index into lights(); surfaces: their area light or -1
     float pdfFwd = 0.0f, pdfRev = 0.0f;
 
@@ -45,7 +46,7 @@ float shadingNormalCorrection(const Vertex& v, const glm::vec3& wo, const glm::v
 
 // f at surface vertex v towards wi (unit); zero across the geometric surface.
 glm::vec3 vertexF(const Vertex& v, const glm::vec3& wi, bool importance) {
-    if (v.type != Vertex::Type::Surface || !v.bsdf || !sameGeometricSide(v.hit, v.wo, wi)) return glm::vec3(0.0f);
+    if (v.type != Vertex::Type::Surface || !v.bsdf || !connects(v.hit, *v.bsdf, v.wo, wi)) return glm::vec3(0.0f);
     glm::vec3 f = v.bsdf->eval(v.wo, wi);
     if (importance) f *= shadingNormalCorrection(v, v.wo, wi);
     return f;
@@ -103,7 +104,7 @@ float BdptIntegrator::pdf(const Vertex& v, const Vertex* prev, const Vertex& nex
         const glm::vec3 toPrev = prev->p - v.p;
         if (!v.bsdf || !(glm::dot(toPrev, toPrev) > 0.0f)) return 0.0f;
         const glm::vec3 wp = glm::normalize(toPrev);
-        if (!sameGeometricSide(v.hit, wp, wn)) return 0.0f;
+        if (!connects(v.hit, *v.bsdf, wp, wn)) return 0.0f;
         pdfDir = v.bsdf->pdf(wp, wn);
     }
     return convertDensity(v, pdfDir, next);
@@ -189,7 +190,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
         v.p = hit->p;
         v.n = hit->ng;
         v.wo = -ray.d;
-        v.bsdf = scene_.bsdf(*hit, v.wo);
+        v.bsdf = scene_.materials().bsdf(*hit, v.wo);
         v.ns = v.bsdf ? v.bsdf->shadingNormal() : hit->ns;
         v.light = scene_.lightIndex(*hit);
         v.beta = beta;
@@ -198,7 +199,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
 
         const glm::vec2 u = rng.uniform2();
         const auto bs = v.bsdf->sample(v.wo, u, rng.uniform());
-        if (!bs || !sameGeometricSide(v.hit, v.wo, bs->wi)) break;
+        if (!bs || !connects(v.hit, *v.bsdf, v.wo, bs->wi)) break;
         beta *= bs->weight;
         if (importance) beta *= shadingNormalCorrection(v, v.wo, bs->wi);
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
@@ -369,8 +370,12 @@ glm::vec3 BdptIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
     const int nCamera = cameraSubpath(pRaster, rng, sink, camera);
     const int nLight = lightSubpath(rng, sink, light);
     glm::vec3 L(0.0f);
+    // s = 1 samples a light vertex of its own: it exists even where the light subpath does not
+    // (its origin emitted nothing, say on a black texel of a textured emitter), and its MIS
+    // weight counts on it.
+    const int maxS = std::max(nLight, 1);
     for (int t = 1; t <= nCamera; ++t)
-        for (int s = 0; s <= nLight; ++s) {
+        for (int s = 0; s <= maxS; ++s) {
             const int depth = s + t - 2;
             if ((s == 1 && t == 1) || depth < 0 || depth > maxDepth_) continue;
             glm::vec2 pSplat(0.0f);

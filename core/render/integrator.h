@@ -36,6 +36,16 @@ public:
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene,
                                            const CameraModel& camera, int maxDepth);
 
+// Whether the BSDF at a hit may connect wo and wi. A reflecting BSDF only connects directions on
+// the same side of the geometric surface, which keeps shading normals from leaking light (Veach
+// 1997, 5.3); a transmitting one connects across it too, where its shading frame agrees.
+inline bool connects(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo, const glm::vec3& wi) {
+    const bool sameSide = sameGeometricSide(hit, wo, wi);
+    if (!bsdf.transmits()) return sameSide;
+    const glm::vec3& n = bsdf.shadingNormal();
+    return sameSide == (glm::dot(wo, n) * glm::dot(wi, n) > 0.0f);
+}
+
 // The power heuristic (beta = 2) for one-sample densities f and g.
 inline float powerHeuristic(float f, float g) {
     if (!(f > 0.0f)) return 0.0f;

@@ -57,6 +57,8 @@ struct Light::Data {
     glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
     float area = 0.0f;
     bool twoSided = false;
+    const SurfaceMaterial* emitter = nullptr;  // else the constant L
+    std::array<TexCoords, 3> corners;
     // Point, spot, directional: position, direction of travel; L is the intensity (W/sr) or the
     // directional light's irradiance (W/m^2). Triangle: radiance. Environment: colour.
     glm::vec3 position{0.0f}, direction{0.0f, 0.0f, -1.0f};
@@ -88,6 +90,31 @@ Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     light.type_ = Type::Triangle;
     light.data_ = std::move(d);
     return light;
+}
+
+Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const SurfaceMaterial& emitter,
+                      const std::array<TexCoords, 3>& corners) {
+    Light light = triangle(a, b, c, glm::vec3(0.0f), emitter.twoSidedEmission());
+    auto d = std::make_shared<Data>(*light.data_);
+    d->emitter = &emitter;
+    d->corners = corners;
+    light.data_ = d;
+    // L only chooses lights by power: the mean over a 4 x 4 stratified set of points.
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < 16; ++i) sum += light.triangleRadiance(sampleTriangleBarycentrics({(i % 4 + 0.5f) / 4, (i / 4 + 0.5f) / 4}));
+    d->L = sum / 16.0f;
+    return light;
+}
+
+glm::vec3 Light::triangleRadiance(const glm::vec2& b) const {
+    const Data& d = *data_;
+    if (!d.emitter) return d.L;
+    const float b0 = 1.0f - b.x - b.y;
+    TexCoords tc = d.corners[0];
+    for (int set = 0; set < 2; ++set)
+        tc.uv[set] = b0 * d.corners[0].uv[set] + b.x * d.corners[1].uv[set] + b.y * d.corners[2].uv[set];
+    tc.color = b0 * d.corners[0].color + b.x * d.corners[1].color + b.y * d.corners[2].color;
+    return d.emitter->emission(tc);
 }
 
 Light Light::punctual(const PunctualLight& p) {
@@ -164,9 +191,10 @@ glm::vec3 Light::power() const {
     return glm::vec3(0.0f);
 }
 
-glm::vec3 Light::L(const glm::vec3& n, const glm::vec3& w) const {
+glm::vec3 Light::L(const glm::vec3& n, const glm::vec3& w, const TexCoords& tc) const {
     if (type_ != Type::Triangle) return glm::vec3(0.0f);
-    return data_->twoSided || glm::dot(n, w) > 0.0f ? data_->L : glm::vec3(0.0f);
+    if (!data_->twoSided && !(glm::dot(n, w) > 0.0f)) return glm::vec3(0.0f);
+    return data_->emitter ? data_->emitter->emission(tc) : data_->L;
 }
 
 glm::vec3 Light::Le(const glm::vec3& dir) const {
@@ -219,7 +247,7 @@ std::optional<LightLiSample> Light::sampleLi(const glm::vec3& ref, const glm::ve
         const float cosLight = std::abs(glm::dot(d.n, s.wi));
         if (!(cosLight > 0.0f)) return std::nullopt;
         s.pdf = dist2 / (cosLight * d.area);
-        s.L = L(d.n, -s.wi);
+        s.L = data_->twoSided || glm::dot(d.n, -s.wi) > 0.0f ? triangleRadiance(b) : glm::vec3(0.0f);
         break;
     }
     case Type::Point:
@@ -287,7 +315,7 @@ std::optional<LightLeSample> Light::sampleLe(const glm::vec2& u1, const glm::vec
         s.pdfPos = 1.0f / d.area;
         s.pdfDir = sidePdf * local.z / kPi;
         if (!(s.pdfDir > 0.0f)) return std::nullopt;
-        s.L = d.L;
+        s.L = triangleRadiance(b);
         break;
     }
     case Type::Point:

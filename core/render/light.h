@@ -4,12 +4,14 @@
 // equirectangular image, importance-sampled). Radiance, importance and densities follow pbrt-v3's
 // conventions: pdfLi is per unit solid angle at the reference point, pdfPos per unit area (or 1
 // for delta positions), pdfDir per unit solid angle (or 1 for delta directions).
+#include <array>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 
 #include "interaction.h"
 #include "scene_description.h"
+#include "surface_material.h"
 
 namespace woven {
 
@@ -41,6 +43,11 @@ public:
     // An emissive triangle (world-space vertices) with radiance `L` from its front face
     // (and its back when `twoSided`).
     static Light triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& L, bool twoSided);
+    // An emissive triangle of a material (which must outlive the light), whose emission (a
+    // texture, perhaps) is looked up with the corners' texture coordinates; its power, for
+    // choosing lights, is estimated from 16 points of the triangle.
+    static Light triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const SurfaceMaterial& emitter,
+                          const std::array<TexCoords, 3>& corners);
     static Light punctual(const PunctualLight& light);
     static Light environment(const Environment& env);  // builds the importance distribution
 
@@ -59,8 +66,8 @@ public:
     // triangles; ignored for the environment). Zero for delta lights.
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
 
-    // Radiance leaving an area light at normal n towards w.
-    glm::vec3 L(const glm::vec3& n, const glm::vec3& w) const;
+    // Radiance leaving an area light at normal n towards w, at the point with texture coordinates tc.
+    glm::vec3 L(const glm::vec3& n, const glm::vec3& w, const TexCoords& tc = {}) const;
     // Environment radiance arriving from direction `dir` (a ray's direction escaping the scene).
     glm::vec3 Le(const glm::vec3& dir) const;
 
@@ -72,6 +79,8 @@ private:
     // Environment: a direction towards it with its solid-angle density, and that density.
     glm::vec3 sampleEnvironment(const glm::vec2& u, float* pdf) const;
     float environmentPdf(const glm::vec3& dir) const;
+    // A triangle's radiance from its front at barycentrics b.
+    glm::vec3 triangleRadiance(const glm::vec2& b) const;
 
 
     Type type_ = Type::Point;

@@ -15,7 +15,7 @@ bool isBlack(const glm::vec3& v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0
 
 }  // namespace
 
-glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const SurfaceBsdf& bsdf, const glm::vec3& wo,
+glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo,
                                          Rng& rng, SampleSink& sink) const {
     float pmf = 0.0f;
     const int index = scene_.sampleLight(rng.uniform(), &pmf);
@@ -24,7 +24,7 @@ glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const SurfaceBsd
     const Light& light = scene_.lights()[size_t(index)];
     const auto ls = light.sampleLi(hit.p, u);
     if (!ls || !(ls->pdf > 0.0f) || isBlack(ls->L)) return glm::vec3(0.0f);
-    if (!sameGeometricSide(hit, wo, ls->wi)) return glm::vec3(0.0f);
+    if (!connects(hit, bsdf, wo, ls->wi)) return glm::vec3(0.0f);
     const glm::vec3 f = bsdf.eval(wo, ls->wi) * std::abs(glm::dot(ls->wi, bsdf.shadingNormal()));
     if (isBlack(f)) return glm::vec3(0.0f);
     ++sink.rays;
@@ -71,14 +71,14 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
             L += beta * Le * weight;
         }
         if (bounces >= maxDepth_) break;
-        const auto bsdf = scene_.bsdf(*hit, wo);
+        const auto bsdf = scene_.materials().bsdf(*hit, wo);
         if (!bsdf) break;
 
         L += beta * sampleOneLight(*hit, *bsdf, wo, rng, sink);
 
         const glm::vec2 u = rng.uniform2();
         const auto bs = bsdf->sample(wo, u, rng.uniform());
-        if (!bs || !sameGeometricSide(*hit, wo, bs->wi)) break;
+        if (!bs || !connects(*hit, *bsdf, wo, bs->wi)) break;
         beta *= bs->weight;
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
         prevP = hit->p;

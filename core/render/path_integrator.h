@@ -16,7 +16,7 @@ public:
 
 private:
     // Light sampled at hit, MIS-weighted against the BSDF's density; beta excluded.
-    glm::vec3 sampleOneLight(const SurfaceHit& hit, const SurfaceBsdf& bsdf, const glm::vec3& wo, Rng& rng,
+    glm::vec3 sampleOneLight(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo, Rng& rng,
                              SampleSink& sink) const;
 
     const RenderScene& scene_;

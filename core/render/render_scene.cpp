@@ -4,13 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 
 #include "piecewise_constant.h"
+#include "sampling.h"
 #include "scene_loader.h"
-#include "standard_lobe.h"
-#include "woven_material.h"
+#include "scene_validation.h"
 
 namespace woven {
 
@@ -30,54 +31,35 @@ constexpr float kPositionError = 4.0f * (7.0f * kUnitRoundoff) / (1.0f - 7.0f * 
 // the target's own rounding error is larger.
 constexpr float kShadowEpsilon = 1e-4f;
 
-// standardLobe() with its texture.
-struct StandardMaterial {
-    StandardLobe lobe;
-    const Image* texture;
-
-    StandardMaterial(const Material& m, const std::vector<Image>& textures)
-        : lobe(standardLobe(m)), texture(m.baseColorTexture >= 0 ? &textures[m.baseColorTexture] : nullptr) {}
-};
-
-int wrap(int i, int n) {
-    const int r = i % n;
-    return r < 0 ? r + n : r;
-}
-
-glm::vec3 bilinearRepeat(const Image& image, const glm::vec2& uv) {
-    // glTF puts uv (0, 0) at the image's top-left corner, as Image's row 0 is the top.
-    const float x = uv.x * image.width - 0.5f, y = uv.y * image.height - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return image.at(0, 0);
-    const float fx = std::floor(x), fy = std::floor(y);
-    const float tx = x - fx, ty = y - fy;
-    // The modulo in double: floor(uv * size) can exceed int's range for huge uv.
-    const int x0 = int(std::fmod(double(fx), double(image.width))), y0 = int(std::fmod(double(fy), double(image.height)));
-    const int xa = wrap(x0, image.width), xb = wrap(x0 + 1, image.width);
-    const int ya = wrap(y0, image.height), yb = wrap(y0 + 1, image.height);
-    return (1.0f - ty) * ((1.0f - tx) * image.at(xa, ya) + tx * image.at(xb, ya)) +
-           ty * ((1.0f - tx) * image.at(xa, yb) + tx * image.at(xb, yb));
-}
-
-// What an Embree filter callback needs to find the uv of a candidate hit.
-struct GapFilter {
+// What an Embree filter callback needs to decide whether a candidate hit lets the ray through.
+struct HitFilter {
     const Mesh* mesh;
-    const WovenMaterial* material;
+    const SurfaceMaterial* material;
 };
 
-glm::vec2 interpolateUv(const Mesh& mesh, unsigned prim, float b1, float b2) {
-    const glm::uvec3 t = mesh.triangles[prim];
-    const glm::vec2 uv = (1.0f - b1 - b2) * mesh.uvs[t.x] + b1 * mesh.uvs[t.y] + b2 * mesh.uvs[t.z];
-    return std::isfinite(uv.x) && std::isfinite(uv.y) ? uv : glm::vec2(0.0f);
+// A uniform number for stochastic transparency from the ray and the candidate hit: a pure
+// function of the path, so a frame stays a pure function of (scene, seed, sample range).
+float transparencyRandom(const RTCFilterFunctionNArguments* args, unsigned i) {
+    uint64_t h = mix64(uint64_t(RTCHitN_primID(args->hit, args->N, i)) * 0x9e3779b97f4a7c15ULL);
+    const float values[] = {RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i),
+                            RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                            RTCRayN_dir_z(args->ray, args->N, i), RTCRayN_org_x(args->ray, args->N, i)};
+    for (float v : values) {
+        uint32_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h = mix64(h ^ bits);
+    }
+    return float(h >> 40) * 0x1p-24f;
 }
 
-// Rejects candidate hits in see-through gaps, for intersection and occlusion rays alike.
-void rejectGaps(const RTCFilterFunctionNArguments* args) {
-    const auto* filter = static_cast<const GapFilter*>(args->geometryUserPtr);
+// Rejects candidate hits at points that let rays through, for intersection and occlusion rays alike.
+void rejectPassThrough(const RTCFilterFunctionNArguments* args) {
+    const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        const glm::vec2 uv = interpolateUv(*filter->mesh, RTCHitN_primID(args->hit, args->N, i),
-                                           RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-        if (filter->material->isSeeThrough(glm::dvec2(uv))) args->valid[i] = 0;
+        const TexCoords tc = interpolateTexCoords(*filter->mesh, RTCHitN_primID(args->hit, args->N, i),
+                                                  RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        if (filter->material->passesThrough(tc, transparencyRandom(args, i))) args->valid[i] = 0;
     }
 }
 
@@ -94,10 +76,8 @@ struct RenderScene::Impl {
     RTCScene rtcScene = nullptr;
     std::string embreeMessage;
 
-    Material defaultMaterial;
-    std::vector<std::optional<WovenMaterial>> woven;  // per material; the default is never woven
-    std::vector<StandardMaterial> standard;           // per material, then the default at the end
-    std::vector<GapFilter> gapFilters;                // per mesh, referenced by Embree
+    std::optional<SceneMaterials> materials;
+    std::vector<HitFilter> hitFilters;  // per mesh, referenced by Embree
 
     std::vector<Light> lights;
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
@@ -112,63 +92,10 @@ struct RenderScene::Impl {
 
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
 
-    const Material& material(int index) const { return index >= 0 ? scene->materials[index] : defaultMaterial; }
-    int standardIndex(int index) const { return index >= 0 ? index : int(standard.size()) - 1; }
-
-    void validate() const;
-    void buildMaterials();
     void buildGeometry();
     void buildLights();
     SurfaceHit makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t, const glm::vec3& dir) const;
 };
-
-void RenderScene::Impl::validate() const {
-    const SceneDescription& s = *scene;
-    size_t triangles = 0;
-    for (const Mesh& mesh : s.meshes) {
-        const std::string name = "mesh '" + mesh.name + "': ";
-        const size_t n = mesh.positions.size();
-        for (size_t v = 0; v < n; ++v) {
-            if (!finite(mesh.positions[v])) {
-                std::ostringstream msg;
-                msg << name << "vertex " << v << " is not finite (" << mesh.positions[v].x << ", "
-                    << mesh.positions[v].y << ", " << mesh.positions[v].z << ")";
-                fail(msg.str());
-            }
-        }
-        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const glm::uvec3 tri = mesh.triangles[t];
-            if (tri.x >= n || tri.y >= n || tri.z >= n)
-                fail(name + "triangle " + std::to_string(t) + " refers to a vertex past the " + std::to_string(n) + " it has");
-        }
-        if (!mesh.normals.empty() && mesh.normals.size() != n) fail(name + "normal count differs from vertex count");
-        if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail(name + "uv count differs from vertex count");
-        if (!mesh.tangents.empty() && mesh.tangents.size() != n) fail(name + "tangent count differs from vertex count");
-        if (mesh.material < -1 || mesh.material >= int(s.materials.size()))
-            fail(name + "material " + std::to_string(mesh.material) + " does not exist");
-        triangles += mesh.triangles.size();
-    }
-    if (triangles == 0) fail("no triangles to render");
-    for (const Material& m : s.materials)
-        if (m.baseColorTexture < -1 || m.baseColorTexture >= int(s.textures.size()))
-            fail("material '" + m.name + "': texture " + std::to_string(m.baseColorTexture) + " does not exist");
-}
-
-void RenderScene::Impl::buildMaterials() {
-    for (const Material& m : scene->materials) {
-        if (m.woven) {
-            try {
-                woven.emplace_back(std::in_place, *m.woven);
-            } catch (const std::invalid_argument& e) {
-                fail("material '" + m.name + "': " + e.what());
-            }
-        } else {
-            woven.emplace_back();
-        }
-        standard.emplace_back(m, scene->textures);
-    }
-    standard.emplace_back(defaultMaterial, scene->textures);
-}
 
 void RenderScene::Impl::buildGeometry() {
     device = rtcNewDevice(nullptr);
@@ -178,7 +105,7 @@ void RenderScene::Impl::buildGeometry() {
     rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
 
-    gapFilters.resize(scene->meshes.size());
+    hitFilters.resize(scene->meshes.size());
     for (size_t m = 0; m < scene->meshes.size(); ++m) {
         const Mesh& mesh = scene->meshes[m];
         if (mesh.triangles.empty()) continue;
@@ -190,12 +117,13 @@ void RenderScene::Impl::buildGeometry() {
         if (!vertices || !indices) fail("mesh '" + mesh.name + "': Embree cannot allocate it: " + embreeMessage);
         std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
         std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
-        // Gaps need UVs to be found; a woven mesh without them is shaded as solid cloth.
-        if (mesh.material >= 0 && woven[mesh.material] && !mesh.uvs.empty()) {
-            gapFilters[m] = GapFilter{&mesh, &*woven[mesh.material]};
-            rtcSetGeometryUserData(geom, &gapFilters[m]);
-            rtcSetGeometryIntersectFilterFunction(geom, rejectGaps);
-            rtcSetGeometryOccludedFilterFunction(geom, rejectGaps);
+        // Only meshes whose material can let rays through pay for the filter.
+        const SurfaceMaterial& material = (*materials)[mesh.material];
+        if (material.mayPassThrough(mesh)) {
+            hitFilters[m] = HitFilter{&mesh, &material};
+            rtcSetGeometryUserData(geom, &hitFilters[m]);
+            rtcSetGeometryIntersectFilterFunction(geom, rejectPassThrough);
+            rtcSetGeometryOccludedFilterFunction(geom, rejectPassThrough);
         }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(rtcScene, geom, unsigned(m));
@@ -213,13 +141,16 @@ void RenderScene::Impl::buildLights() {
     triangleLights.resize(scene->meshes.size());
     for (size_t m = 0; m < scene->meshes.size(); ++m) {
         const Mesh& mesh = scene->meshes[m];
-        const Material& mat = material(mesh.material);
-        if (!(glm::max(mat.emission.r, glm::max(mat.emission.g, mat.emission.b)) > 0.0f)) continue;
+        const SurfaceMaterial& material = (*materials)[mesh.material];
+        if (!material.emits()) continue;
         triangleLights[m].assign(mesh.triangles.size(), -1);
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t];
+            const std::array<TexCoords, 3> corners = {interpolateTexCoords(mesh, unsigned(t), 0.0f, 0.0f),
+                                                      interpolateTexCoords(mesh, unsigned(t), 1.0f, 0.0f),
+                                                      interpolateTexCoords(mesh, unsigned(t), 0.0f, 1.0f)};
             Light light = Light::triangle(mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z],
-                                          mat.emission, mat.doubleSided);
+                                          material, corners);
             if (!(light.power() != glm::vec3(0.0f))) continue;  // degenerate: never hit, never sampled
             triangleLights[m][t] = int(lights.size());
             lights.push_back(std::move(light));
@@ -271,18 +202,16 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
         const float len = glm::length(n);
         if (len > 0.0f && std::isfinite(len)) nFile = n / len;
     }
-    hit.ns = glm::dot(nFile, hit.ng) < 0.0f ? -nFile : nFile;
+    hit.nsFlipped = glm::dot(nFile, hit.ng) < 0.0f;
+    hit.ns = hit.nsFlipped ? -nFile : nFile;
+    hit.tex = interpolateTexCoords(mesh, prim, b1, b2);
 
     if (mesh.uvs.empty()) {
-        // No UVs: one uv for the whole mesh and tangents from an arbitrary frame around ng. The
-        // uv is (0, 0), or for woven cloth the middle of the first weave element, which is on a
-        // yarn: the gap filter needs UVs, so such cloth must be solid everywhere.
-        if (mesh.material >= 0 && woven[mesh.material]) hit.uv = 0.5f / woven[mesh.material]->params().repeat;
+        // No UVs: tangents from an arbitrary frame around ng.
         const Frame f = Frame::fromNormal(hit.ng);
         hit.dpdu = f.x;
         hit.dpdv = f.y;
     } else {
-        hit.uv = interpolateUv(mesh, prim, b1, b2);
         const glm::vec2 duv02 = mesh.uvs[tri.x] - mesh.uvs[tri.z], duv12 = mesh.uvs[tri.y] - mesh.uvs[tri.z];
         const glm::vec3 dp02 = p0 - p2, dp12 = p1 - p2;
         const float det = duv02.x * duv12.y - duv02.y * duv12.x;
@@ -318,8 +247,8 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
 
 RenderScene::RenderScene(std::shared_ptr<const SceneDescription> scene) : impl_(std::make_unique<Impl>()) {
     impl_->scene = std::move(scene);
-    impl_->validate();
-    impl_->buildMaterials();
+    validateScene(*impl_->scene);
+    impl_->materials.emplace(*impl_->scene);
     impl_->buildGeometry();
     impl_->buildLights();
 }
@@ -408,25 +337,7 @@ bool RenderScene::occludedToInfinity(const SurfaceHit& from, const glm::vec3& di
     return occludedRay(impl_->rtcScene, ray.o, ray.d, std::numeric_limits<float>::infinity());
 }
 
-std::optional<SurfaceBsdf> RenderScene::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
-    const bool backSide = glm::dot(wo, hit.ng) < 0.0f;
-    if (hit.material >= 0 && impl_->woven[hit.material]) {
-        ShadingInput in;
-        in.uv = glm::dvec2(hit.uv);
-        in.ns = hit.ns;
-        in.dpdu = hit.dpdu;
-        in.dpdv = hit.dpdv;
-        in.backSide = backSide;
-        auto shading = impl_->woven[hit.material]->shade(in);
-        if (!shading) return std::nullopt;
-        return shading->bsdf;
-    }
-    const StandardMaterial& m = impl_->standard[impl_->standardIndex(hit.material)];
-    glm::vec3 rd = m.lobe.diffuse;
-    if (m.texture) rd *= bilinearRepeat(*m.texture, hit.uv);
-    return SurfaceBsdf(Frame::fromNormal(backSide ? -hit.ns : hit.ns),
-                       AshikhminShirley(m.lobe.exponent, m.lobe.exponent, m.lobe.rs, rd));
-}
+const SceneMaterials& RenderScene::materials() const { return *impl_->materials; }
 
 int RenderScene::lightIndex(const SurfaceHit& hit) const {
     if (hit.mesh < 0 || hit.mesh >= int(impl_->triangleLights.size())) return -1;
@@ -436,7 +347,7 @@ int RenderScene::lightIndex(const SurfaceHit& hit) const {
 
 glm::vec3 RenderScene::emitted(const SurfaceHit& hit, const glm::vec3& w) const {
     const int light = lightIndex(hit);
-    return light >= 0 ? impl_->lights[light].L(hit.ng, w) : glm::vec3(0.0f);
+    return light >= 0 ? impl_->lights[light].L(hit.ng, w, hit.tex) : materials()[hit.material].unlitRadiance(hit.tex);
 }
 
 const std::vector<Light>& RenderScene::lights() const { return impl_->lights; }

@@ -1,6 +1,7 @@
 #pragma once
-// The scene as the integrators see it: one Embree 3 BVH over every triangle, materials ready to
-// shade, and the lights. Woven gaps that are see-through are skipped inside Embree's filter
+// The scene as the integrators see it: one Embree 3 BVH over every triangle, its hits, its
+// materials (SceneMaterials, which turn a hit into a BSDF) and its lights. Points a material lets
+// rays through (woven gaps, alpha cut-outs, blended alpha) are skipped inside Embree's filter
 // callbacks, so camera rays, bounces and shadow rays all pass through them the same way.
 #include <memory>
 #include <optional>
@@ -8,7 +9,7 @@
 
 #include "camera_model.h"
 #include "light.h"
-#include "surface_bsdf.h"
+#include "scene_materials.h"
 
 namespace woven {
 
@@ -31,10 +32,9 @@ public:
     // re-hit the same triangle (no acne, no leaks at shading-normal edges).
     Ray spawnRay(const SurfaceHit& from, const glm::vec3& d) const;
 
-    // The BSDF seen from direction wo (pointing away from the surface); nullopt for a surface
-    // that reflects nothing there.
-    std::optional<SurfaceBsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const;
-    // Radiance emitted by the hit surface towards w (zero unless it is an area light).
+    const SceneMaterials& materials() const;
+    // Radiance the hit surface shows towards w: an area light's emission, or an unlit material's
+    // colour (which is no light: lightIndex() is -1 there).
     glm::vec3 emitted(const SurfaceHit& hit, const glm::vec3& w) const;
 
     const std::vector<Light>& lights() const;

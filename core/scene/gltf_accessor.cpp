@@ -84,16 +84,24 @@ AccessorData readAccessor(const tinygltf::Model& model, int accessorIndex) {
     const tinygltf::Accessor& accessor = model.accessors[accessorIndex];
     const int size = componentSize(accessor.componentType);
     const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
-    if (size == 0 || components <= 0 || components > 4)
+    if (size == 0 || components <= 0 || components > 16)
         throw AccessorError(what + ": unsupported component type " + std::to_string(accessor.componentType) +
                             " or element type " + std::to_string(accessor.type));
+    // Matrices are stored column by column, each column padded to a multiple of 4 bytes
+    // (glTF 2.0, 3.6.2.4: MAT2 of bytes, MAT3 of bytes and shorts); vectors are one column.
+    const bool matrix = accessor.type == TINYGLTF_TYPE_MAT2 || accessor.type == TINYGLTF_TYPE_MAT3 ||
+                        accessor.type == TINYGLTF_TYPE_MAT4;
+    const int rows = matrix ? (accessor.type == TINYGLTF_TYPE_MAT2 ? 2 : accessor.type == TINYGLTF_TYPE_MAT3 ? 3 : 4)
+                            : components;
+    const size_t columnBytes = matrix ? (size_t(rows * size) + 3) / 4 * 4 : size_t(rows * size);
+    const auto componentOffset = [&](int c) { return size_t(c / rows) * columnBytes + size_t(c % rows) * size; };
 
     AccessorData data;
     data.components = components;
     data.count = accessor.count;
     data.values.assign(data.count * components, 0.0);  // an accessor without a view reads zeros
 
-    const size_t elementSize = size_t(size) * components;
+    const size_t elementSize = columnBytes * size_t(components / rows);
     if (accessor.bufferView >= 0) {
         if (size_t(accessor.bufferView) >= model.bufferViews.size())
             throw AccessorError(what + ": buffer view " + std::to_string(accessor.bufferView) + " does not exist");
@@ -106,7 +114,7 @@ AccessorData readAccessor(const tinygltf::Model& model, int accessorIndex) {
         for (size_t e = 0; e < data.count; ++e)
             for (int c = 0; c < components; ++c)
                 data.values[e * components + c] =
-                    readComponent(bytes + e * stride + size_t(c) * size, accessor.componentType, accessor.normalized);
+                    readComponent(bytes + e * stride + componentOffset(c), accessor.componentType, accessor.normalized);
     }
 
     if (accessor.sparse.isSparse) {
@@ -126,7 +134,7 @@ AccessorData readAccessor(const tinygltf::Model& model, int accessorIndex) {
                                     std::to_string(data.count) + ")");
             for (int c = 0; c < components; ++c)
                 data.values[target * components + c] =
-                    readComponent(values + s * elementSize + size_t(c) * size, accessor.componentType, accessor.normalized);
+                    readComponent(values + s * elementSize + componentOffset(c), accessor.componentType, accessor.normalized);
         }
     }
     return data;

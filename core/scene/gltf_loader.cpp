@@ -17,6 +17,7 @@
 
 #include "frame.h"
 #include "gltf_accessor.h"
+#include "gltf_material_reader.h"
 #include "image_io.h"
 #include "mesh_attributes.h"
 #include "scene_loader.h"
@@ -28,7 +29,13 @@ namespace {
 
 // Extensions whose content we read, or whose absence of support changes nothing visible.
 const std::set<std::string> kSupportedExtensions = {
-    "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "WOVEN_fabric",
+    "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
+    "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
+    "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "WOVEN_fabric",
+};
+// Supported with an approximation that the user is told about once.
+const std::map<std::string, std::string> kApproximatedExtensions = {
+    {"KHR_materials_volume", "rendered thin-walled: the attenuation applies, refraction does not"},
 };
 // Mesh compression we do not decode: named so the message can say what to do.
 const std::set<std::string> kCompressionExtensions = {
@@ -37,7 +44,6 @@ const std::set<std::string> kCompressionExtensions = {
 
 // tinygltf hands every image's encoded bytes to this callback; decoding waits until we know
 // how the image is used (sRGB colour or linear data) and whether it is used at all.
-using EncodedImages = std::map<int, std::vector<unsigned char>>;
 bool keepEncodedImage(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
                       const unsigned char* bytes, int size, void* user) {
     static_cast<EncodedImages*>(user)->operator[](index).assign(bytes, bytes + size);
@@ -69,6 +75,11 @@ std::string nameOr(const std::string& name, const char* kind, int index) {
     return name.empty() ? kind + std::to_string(index) : name;
 }
 
+// KHR_lights_punctual gives candela (point, spot) and lux (directional); woven's lights are
+// radiometric (W/sr, W/m^2). Blender's importer divides by 683 lm/W (its default "Standard"
+// lighting mode), and so does woven, so a file lights the same in both.
+constexpr float kLumensPerWatt = 683.0f;
+
 bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 class GltfLoader {
@@ -79,8 +90,9 @@ public:
         readModel();
         checkExtensions();
         scene_.source = path_;
-        loadMaterials();
-        for (int root : rootNodes()) visit(root, glm::mat4(1.0f), 0);
+        GltfMaterialReader(path_, document_, encodedImages_, [this](const std::string& m) { warn(m); }).read(scene_);
+        computeNodeMatrices();
+        for (int root : rootNodes()) visit(root, 0);
         return std::move(scene_);
     }
 
@@ -107,7 +119,8 @@ private:
     void readModel() {
         if (!std::filesystem::is_regular_file(path_)) fail("no such file");
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
-        const nlohmann::json document = jsonPart();
+        document_ = jsonPart();
+        const nlohmann::json& document = document_;
         if (document.is_object() && document.contains("extensionsRequired") && document["extensionsRequired"].is_array())
             for (const auto& name : document["extensionsRequired"])
                 if (name.is_string() && kCompressionExtensions.count(name.get<std::string>()))
@@ -143,9 +156,12 @@ private:
             if (kCompressionExtensions.count(name)) failCompressed(name);
             fail("requires the extension " + name + ", which woven does not support");
         }
-        for (const std::string& name : model_.extensionsUsed)
+        for (const std::string& name : model_.extensionsUsed) {
             if (!kSupportedExtensions.count(name) && !kCompressionExtensions.count(name))
                 warn("ignores the optional extension " + name);
+            if (const auto it = kApproximatedExtensions.find(name); it != kApproximatedExtensions.end())
+                warn(name + ": " + it->second);
+        }
     }
 
     std::vector<int> rootNodes() const {
@@ -162,102 +178,48 @@ private:
         return roots;
     }
 
-    // --- materials and textures -------------------------------------------------------------
-
-    void loadMaterials() {
-        for (size_t m = 0; m < model_.materials.size(); ++m) {
-            const tinygltf::Material& source = model_.materials[m];
-            Material material;
-            material.name = nameOr(source.name, "material", int(m));
-            const auto& pbr = source.pbrMetallicRoughness;
-            material.baseColor = color3(pbr.baseColorFactor, glm::vec3(1.0f));
-            material.roughness = float(pbr.roughnessFactor);
-            material.metallic = float(pbr.metallicFactor);
-            material.doubleSided = source.doubleSided;
-            if (pbr.baseColorTexture.index >= 0)
-                material.baseColorTexture = texture(pbr.baseColorTexture.index, material.name + " baseColorTexture");
-
-            const nlohmann::json extensions = parseJson(source.extensions_json_string, material.name);
-            const nlohmann::json extras = parseJson(source.extras_json_string, material.name);
-            float strength = 1.0f;
-            if (extensions.contains("KHR_materials_emissive_strength")) {
-                const auto& e = extensions["KHR_materials_emissive_strength"];
-                if (e.contains("emissiveStrength")) {
-                    if (!e["emissiveStrength"].is_number() || e["emissiveStrength"].get<double>() < 0.0)
-                        fail("material '" + material.name + "': emissiveStrength must be a number >= 0");
-                    strength = e["emissiveStrength"].get<float>();
-                }
-            }
-            material.emission = color3(source.emissiveFactor, glm::vec3(0.0f)) * strength;
-            if (source.emissiveTexture.index >= 0 && material.emission != glm::vec3(0.0f)) {
-                const Image& image = scene_.textures[texture(source.emissiveTexture.index, material.name + " emissiveTexture")];
-                glm::dvec3 sum(0.0);
-                for (const glm::vec3& p : image.pixels) sum += glm::dvec3(p);
-                material.emission *= glm::vec3(sum / double(std::max<size_t>(image.pixels.size(), 1)));
-                warn("material '" + material.name + "': emissive texture replaced by its average colour");
-            }
-
-            const nlohmann::json* woven = nullptr;
-            std::string where;
-            if (extensions.contains("WOVEN_fabric")) woven = &extensions["WOVEN_fabric"], where = "WOVEN_fabric";
-            else if (extras.is_object() && extras.contains("woven")) woven = &extras["woven"], where = "extras.woven";
-            if (woven) {
-                try {
-                    material.woven = paramsFromJson(*woven);
-                } catch (const std::exception& e) {
-                    fail("material '" + material.name + "', " + where + ": " + e.what());
-                }
-            }
-            scene_.materials.push_back(std::move(material));
-        }
-    }
-
-    nlohmann::json parseJson(const std::string& text, const std::string& materialName) const {
-        if (text.empty()) return nlohmann::json::object();
-        try {
-            return nlohmann::json::parse(text);
-        } catch (const std::exception& e) {
-            fail("material '" + materialName + "': " + e.what());
-        }
-    }
-
-    // Index into scene_.textures of glTF texture `index`, decoded as sRGB colour.
-    int texture(int index, const std::string& use) {
-        if (index < 0 || size_t(index) >= model_.textures.size())
-            fail(use + ": texture " + std::to_string(index) + " does not exist");
-        const int source = model_.textures[index].source;
-        if (source < 0 || size_t(source) >= model_.images.size())
-            fail(use + ": texture " + std::to_string(index) + " has no image woven can read");
-        if (auto it = textureOfImage_.find(source); it != textureOfImage_.end()) return it->second;
-        const tinygltf::Image& image = model_.images[source];
-        const std::string label = image.uri.empty() ? "image " + std::to_string(source) : "image '" + image.uri + "'";
-        const auto bytes = encodedImages_.find(source);
-        if (bytes == encodedImages_.end()) {
-            const std::string dir = std::filesystem::path(path_).parent_path().string();
-            fail(use + ": cannot read texture file '" + image.uri + "' (looked in '" + (dir.empty() ? "." : dir) + "')");
-        }
-        try {
-            scene_.textures.push_back(decodeImage(bytes->second.data(), bytes->second.size(), ChannelEncoding::Srgb, label));
-        } catch (const ImageError& e) {
-            fail(use + ": " + e.what());
-        }
-        return textureOfImage_[source] = int(scene_.textures.size()) - 1;
-    }
-
     // --- the node hierarchy -----------------------------------------------------------------
 
-    void visit(int nodeIndex, const glm::mat4& parent, size_t depth) {
+    // The world matrix of every node, also of nodes outside the default scene (a skin's joints
+    // may be there). A node with two parents or a cycle is an error.
+    void computeNodeMatrices() {
+        const size_t n = model_.nodes.size();
+        std::vector<int> parent(n, -1);
+        for (size_t i = 0; i < n; ++i)
+            for (int child : model_.nodes[i].children) {
+                if (child < 0 || size_t(child) >= n) fail("node " + std::to_string(child) + " does not exist");
+                if (parent[size_t(child)] >= 0) fail("node " + std::to_string(child) + " is the child of two nodes");
+                parent[size_t(child)] = int(i);
+            }
+        nodeWorld_.assign(n, glm::mat4(1.0f));
+        std::vector<char> done(n, 0);
+        for (size_t i = 0; i < n; ++i) {
+            // Walk up to a finished ancestor, then down again.
+            std::vector<size_t> chain;
+            for (int k = int(i); k >= 0 && !done[size_t(k)]; k = parent[size_t(k)]) {
+                if (chain.size() > n) fail("the node hierarchy has a cycle (through node " + std::to_string(k) + ")");
+                chain.push_back(size_t(k));
+            }
+            for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+                const int p = parent[*it];
+                nodeWorld_[*it] = (p >= 0 ? nodeWorld_[size_t(p)] : glm::mat4(1.0f)) * localMatrix(model_.nodes[*it]);
+                done[*it] = 1;
+            }
+        }
+    }
+
+    void visit(int nodeIndex, size_t depth) {
         if (nodeIndex < 0 || size_t(nodeIndex) >= model_.nodes.size())
             fail("node " + std::to_string(nodeIndex) + " does not exist");
         if (depth > model_.nodes.size()) fail("the node hierarchy has a cycle (through node " + std::to_string(nodeIndex) + ")");
         const tinygltf::Node& node = model_.nodes[nodeIndex];
-        const glm::mat4 world = parent * localMatrix(node);
+        const glm::mat4& world = nodeWorld_[size_t(nodeIndex)];
         const std::string nodeName = nameOr(node.name, "node", nodeIndex);
         if (node.mesh >= 0) addMesh(node, world, nodeName);
         if (node.camera >= 0) addCamera(node, world, nodeName);
         if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
             addLight(it->second.Get("light"), world, nodeName);
-        for (int child : node.children) visit(child, world, depth + 1);
+        for (int child : node.children) visit(child, depth + 1);
     }
 
     void addCamera(const tinygltf::Node& node, const glm::mat4& world, const std::string& nodeName) {
@@ -291,7 +253,7 @@ private:
         else fail("light '" + nameOr(source.name, "light", lightIndex) + "': unknown type '" + source.type + "'");
         light.position = glm::vec3(world[3]);
         light.direction = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f));
-        light.intensity = color3(source.color, glm::vec3(1.0f)) * float(source.intensity);
+        light.intensity = color3(source.color, glm::vec3(1.0f)) * float(source.intensity) / kLumensPerWatt;
         light.innerConeAngle = float(source.spot.innerConeAngle);
         light.outerConeAngle = float(source.spot.outerConeAngle);
         if (!allFinite(light.direction) || !allFinite(light.position) || !allFinite(light.intensity))
@@ -304,24 +266,55 @@ private:
     void addMesh(const tinygltf::Node& node, const glm::mat4& world, const std::string& nodeName) {
         if (size_t(node.mesh) >= model_.meshes.size()) fail("node '" + nodeName + "': mesh " + std::to_string(node.mesh) + " does not exist");
         const tinygltf::Mesh& mesh = model_.meshes[node.mesh];
+        // A node's weights override its mesh's; missing ones are 0.
+        const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string name = nodeName + "/" + nameOr(mesh.name, "mesh", node.mesh) + "/" + std::to_string(p);
             try {
-                addPrimitive(mesh.primitives[p], world, name);
+                addPrimitive(mesh.primitives[p], node.skin >= 0 ? skinMatrices(node.skin, nodeName) : std::vector<glm::mat4>{},
+                             world, weights, name);
             } catch (const AccessorError& e) {
                 fail("mesh '" + name + "': " + e.what());
             }
         }
     }
 
-    AccessorData attribute(const tinygltf::Primitive& primitive, const char* semantic, int components,
-                           size_t vertexCount, const std::string& name) {
-        const auto it = primitive.attributes.find(semantic);
-        if (it == primitive.attributes.end()) return {};
+    // Each joint's matrix in the default pose: its node's world matrix times its inverse bind
+    // matrix. A skinned mesh ignores its own node's transform (glTF 2.0, 3.7.3).
+    std::vector<glm::mat4> skinMatrices(int skinIndex, const std::string& nodeName) {
+        if (size_t(skinIndex) >= model_.skins.size()) fail("node '" + nodeName + "': skin " + std::to_string(skinIndex) + " does not exist");
+        const tinygltf::Skin& skin = model_.skins[size_t(skinIndex)];
+        AccessorData inverseBind;
+        if (skin.inverseBindMatrices >= 0) {
+            try {
+                inverseBind = readAccessor(model_, skin.inverseBindMatrices);
+            } catch (const AccessorError& e) {
+                fail("skin " + std::to_string(skinIndex) + ": " + e.what());
+            }
+            if (inverseBind.components != 16 || inverseBind.count < skin.joints.size())
+                fail("skin " + std::to_string(skinIndex) + ": inverseBindMatrices must hold one MAT4 per joint");
+        }
+        std::vector<glm::mat4> matrices;
+        for (size_t j = 0; j < skin.joints.size(); ++j) {
+            const int joint = skin.joints[j];
+            if (joint < 0 || size_t(joint) >= nodeWorld_.size())
+                fail("skin " + std::to_string(skinIndex) + ": joint node " + std::to_string(joint) + " does not exist");
+            glm::mat4 bind(1.0f);
+            if (inverseBind.count)
+                for (int k = 0; k < 16; ++k) bind[k / 4][k % 4] = float(inverseBind.at(j, k));
+            matrices.push_back(nodeWorld_[size_t(joint)] * bind);
+        }
+        return matrices;
+    }
+
+    AccessorData attribute(const std::map<std::string, int>& attributes, const std::string& semantic,
+                           std::initializer_list<int> components, size_t vertexCount, const std::string& name) {
+        const auto it = attributes.find(semantic);
+        if (it == attributes.end()) return {};
         AccessorData data = readAccessor(model_, it->second);
-        if (data.components != components)
-            fail("mesh '" + name + "': " + semantic + " has " + std::to_string(data.components) +
-                 " components, expected " + std::to_string(components));
+        if (std::find(components.begin(), components.end(), data.components) == components.end())
+            fail("mesh '" + name + "': " + semantic + " has " + std::to_string(data.components) + " components, expected " +
+                 std::to_string(*components.begin()) + (components.size() > 1 ? " or " + std::to_string(*(components.end() - 1)) : ""));
         if (vertexCount != size_t(-1) && data.count != vertexCount)
             fail("mesh '" + name + "': " + semantic + " has " + std::to_string(data.count) +
                  " elements but POSITION has " + std::to_string(vertexCount));
@@ -361,7 +354,72 @@ private:
         return result;
     }
 
-    void addPrimitive(const tinygltf::Primitive& primitive, const glm::mat4& world, const std::string& name) {
+    // Object-space POSITION, NORMAL and TANGENT (xyz) with the morph targets' displacements at
+    // their default weights.
+    struct MorphedVertices {
+        std::vector<glm::vec3> positions, normals, tangents;
+    };
+    MorphedVertices morph(const tinygltf::Primitive& primitive, const AccessorData& positions, const AccessorData& normals,
+                          const AccessorData& tangents, const std::vector<double>& weights, const std::string& name) {
+        const size_t n = positions.count;
+        MorphedVertices v;
+        v.positions.resize(n);
+        for (size_t i = 0; i < n; ++i) v.positions[i] = glm::vec3(positions.at(i, 0), positions.at(i, 1), positions.at(i, 2));
+        if (normals.count) {
+            v.normals.resize(n);
+            for (size_t i = 0; i < n; ++i) v.normals[i] = glm::vec3(normals.at(i, 0), normals.at(i, 1), normals.at(i, 2));
+        }
+        if (tangents.count) {
+            v.tangents.resize(n);
+            for (size_t i = 0; i < n; ++i) v.tangents[i] = glm::vec3(tangents.at(i, 0), tangents.at(i, 1), tangents.at(i, 2));
+        }
+        for (size_t t = 0; t < primitive.targets.size(); ++t) {
+            const float w = t < weights.size() ? float(weights[t]) : 0.0f;
+            if (w == 0.0f) continue;
+            const auto add = [&](const char* semantic, std::vector<glm::vec3>& out) {
+                const AccessorData d = attribute(primitive.targets[t], semantic, {3}, n, name + " morph target " + std::to_string(t));
+                if (out.empty()) return;
+                for (size_t i = 0; i < d.count; ++i) out[i] += w * glm::vec3(d.at(i, 0), d.at(i, 1), d.at(i, 2));
+            };
+            add("POSITION", v.positions);
+            add("NORMAL", v.normals);
+            add("TANGENT", v.tangents);
+        }
+        return v;
+    }
+
+    // Per-vertex skinning matrices: the weighted sum of the joints' matrices over every
+    // JOINTS_n / WEIGHTS_n pair.
+    std::vector<glm::mat4> vertexSkin(const tinygltf::Primitive& primitive, const std::vector<glm::mat4>& joints,
+                                      size_t n, const std::string& name) {
+        std::vector<glm::mat4> sum(n, glm::mat4(0.0f));
+        std::vector<float> total(n, 0.0f);
+        for (int set = 0;; ++set) {
+            const std::string jointsName = "JOINTS_" + std::to_string(set), weightsName = "WEIGHTS_" + std::to_string(set);
+            if (!primitive.attributes.count(jointsName) || !primitive.attributes.count(weightsName)) break;
+            const AccessorData j = attribute(primitive.attributes, jointsName, {4}, n, name);
+            const AccessorData w = attribute(primitive.attributes, weightsName, {4}, n, name);
+            for (size_t i = 0; i < n; ++i)
+                for (int k = 0; k < 4; ++k) {
+                    const float weight = float(w.at(i, k));
+                    if (weight == 0.0f) continue;
+                    const double joint = j.at(i, k);
+                    if (!(joint >= 0.0 && joint < double(joints.size())))
+                        fail("mesh '" + name + "': " + jointsName + " names joint " + std::to_string(int64_t(joint)) +
+                             " of a skin with " + std::to_string(joints.size()));
+                    sum[i] += weight * joints[size_t(joint)];
+                    total[i] += weight;
+                }
+        }
+        for (size_t i = 0; i < n; ++i) {
+            if (!(total[i] > 0.0f)) fail("mesh '" + name + "': skinned vertex " + std::to_string(i) + " has no joint weight");
+            sum[i] /= total[i];
+        }
+        return sum;
+    }
+
+    void addPrimitive(const tinygltf::Primitive& primitive, const std::vector<glm::mat4>& joints, const glm::mat4& world,
+                      const std::vector<double>& weights, const std::string& name) {
         const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             warn("mesh '" + name + "': point or line primitive skipped (mode " + std::to_string(mode) + ")");
@@ -371,22 +429,27 @@ private:
         if (primitive.material >= int(model_.materials.size()))
             fail("mesh '" + name + "': material " + std::to_string(primitive.material) + " does not exist");
 
-        const AccessorData positions = attribute(primitive, "POSITION", 3, size_t(-1), name);
+        const AccessorData positions = attribute(primitive.attributes, "POSITION", {3}, size_t(-1), name);
         const size_t n = positions.count;
-        const AccessorData normals = attribute(primitive, "NORMAL", 3, n, name);
-        const AccessorData uvs = attribute(primitive, "TEXCOORD_0", 2, n, name);
-        const AccessorData tangents = attribute(primitive, "TANGENT", 4, n, name);
+        const AccessorData normals = attribute(primitive.attributes, "NORMAL", {3}, n, name);
+        const AccessorData uvs = attribute(primitive.attributes, "TEXCOORD_0", {2}, n, name);
+        const AccessorData uvs1 = attribute(primitive.attributes, "TEXCOORD_1", {2}, n, name);
+        const AccessorData colors = attribute(primitive.attributes, "COLOR_0", {3, 4}, n, name);
+        const AccessorData tangents = attribute(primitive.attributes, "TANGENT", {4}, n, name);
+        const MorphedVertices object = morph(primitive, positions, normals, tangents, weights, name);
+        const std::vector<glm::mat4> skin = joints.empty() ? std::vector<glm::mat4>{} : vertexSkin(primitive, joints, n, name);
+        const auto transformOf = [&](size_t v) -> const glm::mat4& { return skin.empty() ? world : skin[v]; };
 
         Mesh mesh;
         mesh.name = name;
         mesh.material = primitive.material;
         mesh.triangles = triangles(primitive, n, name);
-        const glm::mat3 linear(world);
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
-        const float handedness = glm::determinant(linear) < 0.0f ? -1.0f : 1.0f;
+        // The winding follows the transform of the first vertex: a mirroring skin or node turns
+        // counter-clockwise into clockwise, so swap to keep the front.
+        const float handedness = n && glm::determinant(glm::mat3(transformOf(0))) < 0.0f ? -1.0f : 1.0f;
         mesh.positions.resize(n);
         for (size_t v = 0; v < n; ++v) {
-            mesh.positions[v] = glm::vec3(world * glm::vec4(positions.at(v, 0), positions.at(v, 1), positions.at(v, 2), 1.0f));
+            mesh.positions[v] = glm::vec3(transformOf(v) * glm::vec4(object.positions[v], 1.0f));
             if (!allFinite(mesh.positions[v]))
                 fail("mesh '" + name + "': vertex " + std::to_string(v) + " has a non-finite world position");
         }
@@ -394,7 +457,15 @@ private:
             mesh.uvs.resize(n);
             for (size_t v = 0; v < n; ++v) mesh.uvs[v] = glm::vec2(uvs.at(v, 0), uvs.at(v, 1));
         }
-        // A mirroring transform turns counter-clockwise into clockwise: swap to keep the front.
+        if (uvs1.count) {
+            mesh.uvs1.resize(n);
+            for (size_t v = 0; v < n; ++v) mesh.uvs1[v] = glm::vec2(uvs1.at(v, 0), uvs1.at(v, 1));
+        }
+        if (colors.count) {
+            mesh.colors.resize(n);
+            for (size_t v = 0; v < n; ++v)
+                mesh.colors[v] = glm::vec4(colors.at(v, 0), colors.at(v, 1), colors.at(v, 2), colors.components == 4 ? colors.at(v, 3) : 1.0);
+        }
         if (handedness < 0.0f)
             for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
 
@@ -405,11 +476,12 @@ private:
             return;
         }
 
-        bool normalsUsable = normals.count > 0;
+        bool normalsUsable = !object.normals.empty();
         if (normalsUsable) {
             mesh.normals.resize(n);
             for (size_t v = 0; v < n && normalsUsable; ++v) {
-                const glm::vec3 normal = normalMatrix * glm::vec3(normals.at(v, 0), normals.at(v, 1), normals.at(v, 2));
+                const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transformOf(v))));
+                const glm::vec3 normal = normalMatrix * object.normals[v];
                 const float length = glm::length(normal);
                 normalsUsable = length > 0.0f && std::isfinite(length);
                 mesh.normals[v] = normal / length;
@@ -418,23 +490,30 @@ private:
         }
         if (!normalsUsable) computeVertexNormals(mesh);
 
-        if (tangents.count && normalsUsable) {
+        // Tangents serve the normal map, along its texture coordinates; woven cloth follows TEXCOORD_0.
+        const int tangentSet = primitive.material >= 0 ? tangentTexCoord(scene_.materials[size_t(primitive.material)]) : 0;
+        if (!object.tangents.empty() && normalsUsable) {
             mesh.tangents.resize(n);
             for (size_t v = 0; v < n; ++v) {
-                const glm::vec3 t = linear * glm::vec3(tangents.at(v, 0), tangents.at(v, 1), tangents.at(v, 2));
+                const glm::vec3 t = glm::mat3(transformOf(v)) * object.tangents[v];
                 const glm::vec3 axis = Frame::fromNormalAndAxis(mesh.normals[v], t).x;
                 mesh.tangents[v] = glm::vec4(axis, (tangents.at(v, 3) < 0.0 ? -1.0f : 1.0f) * handedness);
             }
-        } else if (!mesh.uvs.empty()) {
-            computeTangents(mesh);
+        } else if (!(tangentSet == 0 ? mesh.uvs : mesh.uvs1).empty()) {
+            computeTangents(mesh, tangentSet);
         }
         scene_.meshes.push_back(std::move(mesh));
     }
 
+    static int tangentTexCoord(const Material& m) {
+        return m.normalTexture ? m.normalTexture.texCoord : (m.clearcoat.normalTexture ? m.clearcoat.normalTexture.texCoord : 0);
+    }
+
     std::string path_;
+    nlohmann::json document_;
     tinygltf::Model model_;
     EncodedImages encodedImages_;
-    std::map<int, int> textureOfImage_;
+    std::vector<glm::mat4> nodeWorld_;
     SceneDescription scene_;
 };
 

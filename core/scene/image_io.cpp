@@ -148,6 +148,41 @@ Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encodi
     return image;
 }
 
+TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name) {
+    const int length = static_cast<int>(size);
+    TextureImage texture;
+    texture.name = name;
+    int channels = 0;
+    const auto failDecode = [&]() {
+        const char* reason = stbi_failure_reason();
+        fail(name, std::string("cannot decode the image: ") + (reason ? reason : "unknown format"));
+    };
+    if (stbi_is_hdr_from_memory(data, length) || stbi_is_16_bit_from_memory(data, length)) {
+        const bool hdr = stbi_is_hdr_from_memory(data, length);
+        float* pixels = nullptr;
+        if (hdr) {
+            pixels = stbi_loadf_from_memory(data, length, &texture.width, &texture.height, &channels, 4);
+        } else if (stbi_us* wide = stbi_load_16_from_memory(data, length, &texture.width, &texture.height, &channels, 4)) {
+            const size_t n = size_t(texture.width) * texture.height * 4;
+            texture.floats.resize(n / 4);
+            for (size_t i = 0; i < n; ++i) texture.floats[i / 4][int(i % 4)] = wide[i] / 65535.0f;
+            stbi_image_free(wide);
+            return texture;
+        }
+        if (!pixels) failDecode();
+        texture.floats.resize(size_t(texture.width) * texture.height);
+        std::memcpy(texture.floats.data(), pixels, texture.floats.size() * sizeof(glm::vec4));
+        stbi_image_free(pixels);
+        return texture;
+    }
+    stbi_uc* pixels = stbi_load_from_memory(data, length, &texture.width, &texture.height, &channels, 4);
+    if (!pixels) failDecode();
+    texture.bytes.resize(size_t(texture.width) * texture.height);
+    std::memcpy(texture.bytes.data(), pixels, texture.bytes.size() * sizeof(glm::u8vec4));
+    stbi_image_free(pixels);
+    return texture;
+}
+
 ExrImage readExr(const std::string& path) {
     requireReadable(path);
     EXRVersion version;

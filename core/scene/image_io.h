@@ -31,6 +31,10 @@ Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncod
 Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
                   const std::string& name);
 
+// A texture (PNG, JPEG, or a float format) as stored, without colour decoding: RGBA, 8-bit
+// sources kept as bytes (see TextureImage). `name` identifies it in error messages.
+TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name);
+
 // Linear radiance to 8-bit display colour: scale by 2^exposure, tone-map, then sRGB-encode.
 // PNG output, the previewer's window (and shaders/display.frag) all go through this.
 enum class ToneMap {

@@ -1,6 +1,7 @@
 #include "mesh_attributes.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "frame.h"
 
@@ -35,14 +36,53 @@ void computeVertexNormals(Mesh& mesh) {
     }
 }
 
-void computeTangents(Mesh& mesh) {
+namespace {
+// Appends a copy of vertex v with every per-vertex attribute; returns its index.
+uint32_t duplicateVertex(Mesh& mesh, uint32_t v) {
+    mesh.positions.push_back(mesh.positions[v]);
+    if (!mesh.normals.empty()) mesh.normals.push_back(mesh.normals[v]);
+    if (!mesh.uvs.empty()) mesh.uvs.push_back(mesh.uvs[v]);
+    if (!mesh.uvs1.empty()) mesh.uvs1.push_back(mesh.uvs1[v]);
+    if (!mesh.colors.empty()) mesh.colors.push_back(mesh.colors[v]);
+    if (!mesh.tangents.empty()) mesh.tangents.push_back(mesh.tangents[v]);
+    return uint32_t(mesh.positions.size() - 1);
+}
+
+// The sign of a triangle's UV orientation against its winding: negative where the UVs are mirrored.
+float uvOrientation(const Mesh& mesh, const std::vector<glm::vec2>& uv, const glm::uvec3& t) {
+    const glm::vec2 d1 = uv[t.y] - uv[t.x], d2 = uv[t.z] - uv[t.x];
+    return d1.x * d2.y - d1.y * d2.x < 0.0f ? -1.0f : 1.0f;
+}
+}  // namespace
+
+void computeTangents(Mesh& mesh, int uvSet) {
+    // Split vertices used with both UV orientations: the mirrored side gets its own copy.
+    {
+        const std::vector<glm::vec2>& uv = uvSet == 1 ? mesh.uvs1 : mesh.uvs;
+        std::vector<signed char> orientation(mesh.positions.size(), 0);
+        std::vector<uint32_t> mirrorCopy(mesh.positions.size(), UINT32_MAX);
+        std::vector<float> triangleSign(mesh.triangles.size());
+        for (size_t i = 0; i < mesh.triangles.size(); ++i) triangleSign[i] = uvOrientation(mesh, uv, mesh.triangles[i]);
+        for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+            glm::uvec3& t = mesh.triangles[i];
+            const signed char sign = triangleSign[i] < 0.0f ? -1 : 1;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = t[k];
+                if (orientation[v] == 0) orientation[v] = sign;
+                if (orientation[v] == sign) continue;
+                if (mirrorCopy[v] == UINT32_MAX) mirrorCopy[v] = duplicateVertex(mesh, v);
+                t[k] = mirrorCopy[v];
+            }
+        }
+    }
+    const std::vector<glm::vec2>& uv = uvSet == 1 ? mesh.uvs1 : mesh.uvs;
     const size_t n = mesh.positions.size();
     std::vector<glm::vec3> dpdu(n, glm::vec3(0.0f)), dpdv(n, glm::vec3(0.0f));
     for (const glm::uvec3& t : mesh.triangles) {
         const glm::vec3 e1 = mesh.positions[t.y] - mesh.positions[t.x];
         const glm::vec3 e2 = mesh.positions[t.z] - mesh.positions[t.x];
-        const glm::vec2 d1 = mesh.uvs[t.y] - mesh.uvs[t.x];
-        const glm::vec2 d2 = mesh.uvs[t.z] - mesh.uvs[t.x];
+        const glm::vec2 d1 = uv[t.y] - uv[t.x];
+        const glm::vec2 d2 = uv[t.z] - uv[t.x];
         const float det = d1.x * d2.y - d1.y * d2.x;
         if (!(std::abs(det) > 0.0f)) continue;
         // Solve [e1 e2] = [dp/du dp/dv] [d1 d2]; weighting each triangle by its area in

@@ -14,10 +14,12 @@ size_t removeDegenerateTriangles(Mesh& mesh);
 // A vertex no triangle uses gets +z.
 void computeVertexNormals(Mesh& mesh);
 
-// Fills mesh.tangents from the UV parameterisation (dp/du per triangle, accumulated per vertex,
-// made orthogonal to the normal; w = +1 when (n x t) points along dp/dv, -1 when it points
-// against it). Where the UV mapping is degenerate (dp/du = 0) any unit vector orthogonal to the
-// normal is used. Requires normals and uvs.
-void computeTangents(Mesh& mesh);
+// Fills mesh.tangents from texture coordinate set `uvSet` (0: uvs, 1: uvs1), as MikkTSpace
+// does in what matters for normal maps: dp/du per triangle, accumulated per vertex, made
+// orthogonal to the normal; w = +1 when (n x t) points along dp/dv, -1 when against it. A vertex
+// shared by triangles of opposite UV orientation (a mirrored half of a model) is split in two,
+// so neither side's tangents cancel the other's. Where the UV mapping is degenerate (dp/du = 0)
+// any unit vector orthogonal to the normal is used. Requires normals and that uv set.
+void computeTangents(Mesh& mesh, int uvSet = 0);
 
 }  // namespace woven

@@ -3,6 +3,7 @@
 // an environment and a camera. Loaders (glTF, scene files) produce it; the Embree scene, the
 // integrators and the previewer consume it. Plain data, no behaviour.
 #include <glm/glm.hpp>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,7 +16,7 @@ namespace woven {
 // Luminance of linear Rec. 709 RGB.
 inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-// Linear RGB float image, row 0 at the top.
+// Linear RGB float image, row 0 at the top (frames and environment maps).
 struct Image {
     int width = 0, height = 0;
     std::vector<glm::vec3> pixels;
@@ -23,27 +24,106 @@ struct Image {
     const glm::vec3& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
-struct Material {
-    std::string name;
-    // Woven when set; otherwise the standard fallback: diffuse base colour (factor x texture)
-    // plus a glossy lobe derived from roughness.
-    std::optional<WovenParams> woven;
-    glm::vec3 baseColor{0.8f};
-    int baseColorTexture = -1;  // index into SceneDescription::textures (sRGB decoded to linear)
-    float roughness = 1.0f;
-    float metallic = 0.0f;
-    glm::vec3 emission{0.0f};  // emissiveFactor x emissive_strength, radiance of the front side
-    bool doubleSided = true;
+// A texture image as decoded, before any colour decoding: every channel normalised to [0, 1]
+// (or, for float formats, as stored), always RGBA (grey and grey-alpha expanded, alpha 1 where
+// the file has none). 8-bit files keep their bytes, so a 2048^2 texture takes 16 MiB; wider
+// formats keep floats. How the values are decoded (sRGB colour or linear data) is a property of
+// each use (TextureRef::srgb), not of the image: glTF lets one image serve both.
+struct TextureImage {
+    std::string name;  // for messages: the file, or "image N"
+    int width = 0, height = 0;
+    std::vector<glm::u8vec4> bytes;  // 8-bit sources
+    std::vector<glm::vec4> floats;   // 16-bit and float sources
+    bool isFloat() const { return bytes.empty(); }
 };
 
-// One primitive in world space. normals, uvs and tangents are per vertex and either empty
-// (missing in the file and not derivable) or the size of positions.
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// One use of a texture by a material (glTF's textureInfo with its sampler and
+// KHR_texture_transform): which image, which texture coordinates, how they are transformed and
+// wrapped, and how the texels are decoded.
+struct TextureRef {
+    int image = -1;    // index into SceneDescription::textures; -1: no texture
+    int texCoord = 0;  // TEXCOORD_0 or TEXCOORD_1
+    glm::mat3 uvTransform{1.0f};  // KHR_texture_transform: uv' = (T * (u, v, 1)).xy
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    bool nearest = false;  // magnification filter NEAREST (pixel art); else bilinear
+    bool mipmaps = true;   // the preview's minification filter uses mip levels
+    bool srgb = false;     // RGB holds sRGB-encoded colour (alpha is always linear)
+    float scale = 1.0f;    // normalTexture.scale, occlusionTexture.strength
+    explicit operator bool() const { return image >= 0; }
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// KHR_materials_sheen: the Charlie sheen layer of cloth.
+struct SheenParams {
+    glm::vec3 color{0.0f};
+    TextureRef colorTexture;  // RGB, sRGB
+    float roughness = 0.0f;
+    TextureRef roughnessTexture;  // A
+};
+
+// KHR_materials_clearcoat: a GGX dielectric coat (IOR 1.5) over the material.
+struct ClearcoatParams {
+    float factor = 0.0f;
+    TextureRef texture;  // R
+    float roughness = 0.0f;
+    TextureRef roughnessTexture;  // G
+    TextureRef normalTexture;     // with its scale
+};
+
+// KHR_materials_transmission and KHR_materials_volume, rendered thin-walled (no refraction): the
+// attenuation of `thickness` is split between the two crossings of a closed surface.
+struct TransmissionParams {
+    float factor = 0.0f;
+    TextureRef texture;  // R
+    float thickness = 0.0f;
+    TextureRef thicknessTexture;  // G
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = std::numeric_limits<float>::infinity();
+};
+
+// A glTF 2.0 material (metallic-roughness, the KHR extensions woven reads), or a woven one.
+// Defaults are woven's default material for primitives without one: a grey dielectric, as
+// Blender gives them; the glTF loader sets every field from the file, whose defaults differ.
+struct Material {
+    std::string name;
+    // Woven when set: the weave replaces the glTF BSDF; emission and doubleSided still apply.
+    std::optional<WovenParams> woven;
+    glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};  // linear RGB and alpha
+    TextureRef baseColorTexture;
+    float metallic = 0.0f, roughness = 0.5f;
+    TextureRef metallicRoughnessTexture;  // B = metallic, G = roughness
+    TextureRef normalTexture;
+    TextureRef occlusionTexture;          // R; used by the preview only
+    glm::vec3 emission{0.0f};  // emissiveFactor x emissive_strength: radiance of the front side
+    TextureRef emissiveTexture;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = true;
+    bool unlit = false;        // KHR_materials_unlit: shows its base colour, reflects nothing
+    float ior = 1.5f;          // KHR_materials_ior
+    float specular = 1.0f;     // KHR_materials_specular: strength of the dielectric reflection
+    TextureRef specularTexture;  // A
+    glm::vec3 specularColor{1.0f};
+    TextureRef specularColorTexture;  // RGB, sRGB
+    SheenParams sheen;
+    ClearcoatParams clearcoat;
+    TransmissionParams transmission;
+};
+
+// One primitive in world space. Per-vertex arrays are either empty (missing in the file and not
+// derivable) or the size of positions.
 struct Mesh {
     std::string name;  // "node/mesh/primitive" for messages
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> uvs;
-    std::vector<glm::vec4> tangents;  // xyz along dp/du, w = handedness of dp/dv
+    std::vector<glm::vec2> uvs;   // TEXCOORD_0
+    std::vector<glm::vec2> uvs1;  // TEXCOORD_1
+    std::vector<glm::vec4> colors;  // COLOR_0, linear RGBA
+    // xyz along dp/du of the normal map's texture coordinates, w = handedness of dp/dv
+    std::vector<glm::vec4> tangents;
     std::vector<glm::uvec3> triangles;
     int material = -1;  // index into SceneDescription::materials; -1 = default material
 };
@@ -82,7 +162,7 @@ struct SceneDescription {
     std::string source;  // the file it came from, for messages
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
-    std::vector<Image> textures;
+    std::vector<TextureImage> textures;
     std::vector<PunctualLight> lights;
     Environment environment;
     Camera camera;

@@ -2,25 +2,30 @@
 
 #include <cmath>
 
-#include "woven_material.h"
+#include "scene_materials.h"
 
 namespace woven::test {
 
 SceneDescription flatClothScene(const WovenParams& material) {
+    Material cloth;
+    cloth.woven = material;
+    return flatScene(cloth);
+}
+
+SceneDescription flatScene(const Material& material) {
     Mesh m;
     m.name = "flat cloth";
     m.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
     m.normals.assign(4, glm::vec3(0, 1, 0));
     m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    m.tangents.assign(4, glm::vec4(1, 0, 0, 1));  // along +u; n x t = -z runs along +v
     m.triangles = {{0, 1, 2}, {0, 2, 3}};
     m.material = 0;
 
     SceneDescription scene;
     scene.source = "flat cloth";
     scene.meshes.push_back(m);
-    Material cloth;
-    cloth.woven = material;
-    scene.materials.push_back(cloth);
+    scene.materials.push_back(material);
 
     PunctualLight point;
     point.type = PunctualLight::Type::Point;
@@ -44,7 +49,7 @@ SceneDescription flatClothScene(const WovenParams& material) {
 
 namespace {
 
-glm::vec3 directLight(const SceneDescription& scene, const SurfaceBsdf& bsdf, const glm::vec3& p, const glm::vec3& ng,
+glm::vec3 directLight(const SceneDescription& scene, const Bsdf& bsdf, const glm::vec3& p, const glm::vec3& ng,
                       const glm::vec3& wo) {
     glm::vec3 sum(0.0f);
     for (const PunctualLight& light : scene.lights) {
@@ -72,7 +77,7 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
 }
 
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask) {
-    const WovenMaterial material(*scene.materials[0].woven);
+    const SceneMaterials materials(scene);
     const Camera& cam = scene.camera;
     const glm::vec3 eye(cam.cameraToWorld[3]);
     const glm::vec3 dpdu(2, 0, 0), dpdv(0, 0, -2), up(0, 1, 0);
@@ -94,15 +99,17 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
                     glm::vec3 L = scene.environment.color;
                     bool onYarn = false;
                     if (t > 0.0f && std::fabs(p.x) <= 1.0f && std::fabs(p.z) <= 1.0f) {
-                        ShadingInput in;
-                        in.uv = glm::dvec2((p.x + 1.0) / 2.0, (1.0 - p.z) / 2.0);
-                        in.ns = up;
-                        in.dpdu = dpdu;
-                        in.dpdv = dpdv;
+                        SurfaceHit hit;
+                        hit.p = p;
+                        hit.ng = hit.ns = up;
+                        hit.dpdu = dpdu;
+                        hit.dpdv = dpdv;
+                        hit.tex.uv[0] = glm::vec2((p.x + 1.0f) / 2.0f, (1.0f - p.z) / 2.0f);
+                        hit.tex.hasUv = true;
+                        hit.material = 0;
                         const glm::vec3 wo = -d;
-                        in.backSide = glm::dot(wo, up) < 0.0f;
-                        if (auto s = material.shade(in)) {
-                            L = directLight(scene, s->bsdf, p, in.backSide ? -up : up, wo);
+                        if (auto bsdf = materials.bsdf(hit, wo)) {
+                            L = directLight(scene, *bsdf, p, glm::dot(wo, up) < 0.0f ? -up : up, wo);
                             onYarn = true;
                         }
                     }

@@ -1,8 +1,8 @@
 #pragma once
-// The test scene of the GLSL-versus-core comparisons: a flat square of cloth on y = 0,
-// x and z in [-1, 1], uv = ((x + 1) / 2, (1 - z) / 2), seen from above at an angle, lit by a
-// point and a directional light and nothing else, so every pixel's hit point and direct
-// lighting can be computed analytically on the CPU.
+// The test scene of the GLSL-versus-core comparisons: a flat square on y = 0, x and z in
+// [-1, 1], uv = ((x + 1) / 2, (1 - z) / 2), in a woven or any other material, seen from above at
+// an angle, lit by a point and a directional light and nothing else, so every pixel's hit point
+// and direct lighting can be computed analytically on the CPU.
 #include <cstdint>
 #include <vector>
 
@@ -11,15 +11,17 @@
 namespace woven::test {
 
 SceneDescription flatClothScene(const WovenParams& material);
+SceneDescription flatScene(const Material& material);
 
 // The direction (unit length) of `camera`'s ray through image position (x, y) in pixels of a
 // width x height image, row 0 at the top: the preview's projection.
 glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, int height);
 
-// Core's direct-lighting image of flatClothScene: per pixel the mean over n x n stratified
-// sub-pixel positions of WovenMaterial::shade + SurfaceBsdf::eval times each light's incident
-// radiance and cosine; rays that miss (or pass through a see-through gap) see the environment.
-// `hitMask` (optional) receives 1 where every sub-pixel position hits yarn, else 0.
+// Core's direct-lighting image of flatScene: per pixel the mean over n x n stratified sub-pixel
+// positions of SceneMaterials::bsdf + Bsdf::eval (the renderer's own path from hit to BSDF)
+// times each light's incident radiance and cosine; rays that miss (or pass where the material
+// reflects nothing, a see-through gap) see the environment. `hitMask` (optional) receives 1
+// where every sub-pixel position hits a reflecting point, else 0.
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n,
                          std::vector<uint8_t>* hitMask = nullptr);
 

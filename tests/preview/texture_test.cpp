@@ -1,4 +1,4 @@
-// A standard material's base colour texture in the preview: sampled where glTF puts it (v = 0 at
+// A glTF material's base colour texture in the preview: sampled where glTF puts it (v = 0 at
 // the image's top row) and multiplying the diffuse reflectance, as core's renderer does.
 #include <gtest/gtest.h>
 
@@ -18,15 +18,15 @@ SceneDescription texturedFloor(bool textured, glm::vec3 baseColor) {
     SceneDescription scene = flatClothScene(WovenParams{});
     Material standard;
     standard.roughness = 0.5f;
-    standard.baseColor = baseColor;
+    standard.baseColor = glm::vec4(baseColor, 1.0f);
     if (textured) {
-        Image image;
+        TextureImage image;  // float texels: taken as linear, exactly
         image.width = image.height = 8;
-        image.pixels.resize(64);
+        image.floats.resize(64);
         for (int y = 0; y < 8; ++y)
-            for (int x = 0; x < 8; ++x) image.at(x, y) = kBlock[y / 4][x / 4];
+            for (int x = 0; x < 8; ++x) image.floats[size_t(y) * 8 + x] = glm::vec4(kBlock[y / 4][x / 4], 1.0f);
         scene.textures.push_back(image);
-        standard.baseColorTexture = 0;
+        standard.baseColorTexture.image = 0;
     }
     scene.materials[0] = standard;
     return scene;

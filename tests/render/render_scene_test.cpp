@@ -52,7 +52,7 @@ TEST(RenderSceneIntersect, KnownQuadGivesDistancePointNormalsUvAndDerivatives) {
     EXPECT_NEAR(dist(hit->p, {0.5f, 0.1f, 0.0f}), 0.0f, 1e-6f);
     EXPECT_NEAR(dist(hit->ng, {0, 0, 1}), 0.0f, 1e-6f);
     EXPECT_NEAR(dist(hit->ns, {0, 0, 1}), 0.0f, 1e-6f);  // no normals: ns = ng
-    EXPECT_NEAR(glm::distance(hit->uv, glm::vec2(0.25f, 0.1f)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(hit->tex.uv[0], glm::vec2(0.25f, 0.1f)), 0.0f, 1e-6f);
     EXPECT_NEAR(dist(hit->dpdu, {2, 0, 0}), 0.0f, 1e-5f);
     EXPECT_NEAR(dist(hit->dpdv, {0, 1, 0}), 0.0f, 1e-5f);
     EXPECT_EQ(hit->mesh, 0);
@@ -107,7 +107,7 @@ TEST(RenderSceneIntersect, MissingOrDegenerateUvsFallBackAsDocumented) {
     RenderScene noUv(sceneWith({unitTriangle()}));
     const auto a = noUv.intersect(rayDown(0.2f, 0.3f));
     ASSERT_TRUE(a);
-    EXPECT_EQ(a->uv, glm::vec2(0.0f));
+    EXPECT_EQ(a->tex.uv[0], glm::vec2(0.0f));
     EXPECT_NEAR(glm::length(a->dpdu), 1.0f, 1e-6f);
     EXPECT_NEAR(glm::length(a->dpdv), 1.0f, 1e-6f);
     EXPECT_NEAR(glm::dot(a->dpdu, a->dpdv), 0.0f, 1e-6f);
@@ -119,7 +119,7 @@ TEST(RenderSceneIntersect, MissingOrDegenerateUvsFallBackAsDocumented) {
     RenderScene degenerate(sceneWith({m}));
     const auto b = degenerate.intersect(rayDown(0.2f, 0.3f));
     ASSERT_TRUE(b);
-    EXPECT_NEAR(glm::distance(b->uv, glm::vec2(0.3f, 0.7f)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(b->tex.uv[0], glm::vec2(0.3f, 0.7f)), 0.0f, 1e-6f);
     EXPECT_EQ(b->dpdu, glm::vec3(0.0f));
     EXPECT_EQ(b->dpdv, glm::vec3(0.0f));
 }
@@ -247,7 +247,7 @@ TEST(RenderSceneGaps, RaysAndShadowRaysPassThroughGapsOnly) {
     const auto solidHit = noUv.intersect(rayDown(0.1f, 0.1f));
     ASSERT_TRUE(solidHit);
     EXPECT_EQ(solidHit->mesh, 0);
-    EXPECT_TRUE(noUv.bsdf(*solidHit, {0, 0, 1}));
+    EXPECT_TRUE(noUv.materials().bsdf(*solidHit, {0, 0, 1}));
 }
 
 TEST(RenderSceneGaps, IntersectionAndOcclusionAgreeWithTheWeaveEverywhere) {
@@ -282,77 +282,35 @@ TEST(RenderSceneGaps, IntersectionAndOcclusionAgreeWithTheWeaveEverywhere) {
 // ---------------------------------------------------------------------------------------------
 // Materials
 
-TEST(RenderSceneBsdf, StandardMaterialMapsRoughnessMetallicAndColour) {
-    const glm::vec3 base{0.6f, 0.3f, 0.2f};
-    const float lum = 0.2126f * 0.6f + 0.7152f * 0.3f + 0.0722f * 0.2f;
-    struct Case {
-        float roughness, metallic;
-        AshikhminShirley expected;
-    };
-    // alpha = roughness^2, e = 2 / alpha^2 - 2 (clamped to [0, 1e4]), rs = mix(0.04, lum, metallic),
-    // rd = base (1 - metallic).
-    const Case cases[] = {
-        {0.5f, 0.0f, AshikhminShirley(30.0f, 30.0f, 0.04f, base)},
-        {1.0f, 0.0f, AshikhminShirley(0.0f, 0.0f, 0.04f, base)},
-        {0.0f, 0.0f, AshikhminShirley(1e4f, 1e4f, 0.04f, base)},
-        {0.5f, 1.0f, AshikhminShirley(30.0f, 30.0f, lum, glm::vec3(0.0f))},
-        {0.5f, 0.25f, AshikhminShirley(30.0f, 30.0f, 0.04f + 0.25f * (lum - 0.04f), 0.75f * base)},
-    };
+TEST(RenderSceneBsdf, GltfMaterialIsTheGltfBsdfAroundTheShadingNormalOnTheViewersSide) {
+    Material m;
+    m.baseColor = glm::vec4(0.6f, 0.3f, 0.2f, 1.0f);
+    m.roughness = 0.4f;
+    m.metallic = 0.25f;
+    GltfBxdfInputs in;
+    in.baseColor = glm::vec3(m.baseColor);
+    in.roughness = m.roughness;
+    in.metallic = m.metallic;
+    in.specularF0 = glm::vec3(0.04f);
+    const GltfBxdf expectedLobe(in);
     const glm::vec3 n = glm::normalize(glm::vec3(0.2f, -0.1f, 1.0f));
     const glm::vec3 wo = glm::normalize(glm::vec3(0.5f, 0.2f, 1.0f)), wi = glm::normalize(glm::vec3(-0.4f, -0.1f, 1.0f));
-    for (const Case& c : cases) {
-        Material m;
-        m.baseColor = base;
-        m.roughness = c.roughness;
-        m.metallic = c.metallic;
-        RenderScene scene(sceneWith({unitTriangle()}, {m}));
-        SurfaceHit hit;
-        hit.ng = glm::vec3(0, 0, 1);
-        hit.ns = n;
-        hit.material = 0;
-        const auto bsdf = scene.bsdf(hit, wo);
-        ASSERT_TRUE(bsdf);
-        const Frame f = Frame::fromNormal(n);
-        const glm::vec3 expected = c.expected.eval(f.toLocal(wo), f.toLocal(wi));
-        EXPECT_NEAR(dist(bsdf->eval(wo, wi), expected), 0.0f, 1e-4f * glm::length(expected))
-            << "roughness " << c.roughness << " metallic " << c.metallic;
-        // Seen from below, the lobe turns over to the back face.
-        const auto back = scene.bsdf(hit, -wo);
-        ASSERT_TRUE(back);
-        EXPECT_NEAR(dist(back->eval(-wo, -wi), expected), 0.0f, 1e-4f * glm::length(expected));
-        EXPECT_EQ(back->eval(-wo, wi), glm::vec3(0.0f));
-    }
-}
-
-TEST(RenderSceneBsdf, BaseColourTextureIsBilinearAndRepeats) {
-    Image tex;
-    tex.width = 2;
-    tex.height = 2;
-    tex.pixels = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};  // row 0 (top): red, green
-    Material m;
-    m.baseColor = glm::vec3(0.5f);
-    m.baseColorTexture = 0;
-    auto desc = sceneWith({unitTriangle()}, {m});
-    desc->textures = {tex};
-    RenderScene scene(desc);
-    const glm::vec3 w{0, 0, 1};
-    auto diffuseAt = [&](glm::vec2 uv) {
-        SurfaceHit hit;
-        hit.material = 0;
-        hit.uv = uv;
-        // Diffuse albedo from the BRDF at normal incidence, divided by the Ashikhmin-Shirley
-        // factors and the specular term of a unit-diffuse lobe.
-        const AshikhminShirley unit(0.0f, 0.0f, 0.04f, glm::vec3(1.0f)), black(0.0f, 0.0f, 0.04f, glm::vec3(0.0f));
-        const glm::vec3 spec = black.eval(w, w);
-        return (scene.bsdf(hit, w)->eval(w, w) - spec) / (unit.eval(w, w) - spec);
-    };
-    const glm::vec3 red{0.5f, 0, 0}, green{0, 0.5f, 0}, blue{0, 0, 0.5f};
-    EXPECT_NEAR(dist(diffuseAt({0.25f, 0.25f}), red), 0.0f, 1e-5f);   // texel centres
-    EXPECT_NEAR(dist(diffuseAt({0.75f, 0.25f}), green), 0.0f, 1e-5f);
-    EXPECT_NEAR(dist(diffuseAt({0.25f, 0.75f}), blue), 0.0f, 1e-5f);
-    EXPECT_NEAR(dist(diffuseAt({0.5f, 0.25f}), 0.5f * (red + green)), 0.0f, 1e-5f);  // between two
-    EXPECT_NEAR(dist(diffuseAt({3.25f, -1.75f}), red), 0.0f, 1e-5f);                 // repeat
-    EXPECT_NEAR(dist(diffuseAt({0.0f, 0.25f}), 0.5f * (red + green)), 0.0f, 1e-5f);  // wraps across the edge
+    RenderScene scene(sceneWith({unitTriangle()}, {m}));
+    SurfaceHit hit;
+    hit.ng = glm::vec3(0, 0, 1);
+    hit.ns = n;
+    hit.material = 0;
+    const auto bsdf = scene.materials().bsdf(hit, wo);
+    ASSERT_TRUE(bsdf);
+    const Frame f = Frame::fromNormal(n);
+    const glm::vec3 expected = expectedLobe.eval(f.toLocal(wo), f.toLocal(wi));
+    ASSERT_GT(glm::length(expected), 0.0f);
+    EXPECT_NEAR(dist(bsdf->eval(wo, wi), expected), 0.0f, 1e-5f * glm::length(expected));
+    // Seen from below, the lobe turns over to the back face.
+    const auto back = scene.materials().bsdf(hit, -wo);
+    ASSERT_TRUE(back);
+    EXPECT_NEAR(dist(back->eval(-wo, -wi), expected), 0.0f, 1e-5f * glm::length(expected));
+    EXPECT_EQ(back->eval(-wo, wi), glm::vec3(0.0f));
 }
 
 TEST(RenderSceneBsdf, WovenMaterialShadesTheSideTheViewerIsOn) {
@@ -367,7 +325,7 @@ TEST(RenderSceneBsdf, WovenMaterialShadesTheSideTheViewerIsOn) {
     const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.1f, 1.0f)), wi = glm::normalize(glm::vec3(-0.5f, 0.2f, 1.0f));
     for (bool backSide : {false, true}) {
         ShadingInput in;
-        in.uv = glm::dvec2(hit->uv);
+        in.uv = glm::dvec2(hit->tex.uv[0]);
         in.ns = hit->ns;
         in.dpdu = hit->dpdu;
         in.dpdv = hit->dpdv;
@@ -375,7 +333,7 @@ TEST(RenderSceneBsdf, WovenMaterialShadesTheSideTheViewerIsOn) {
         const auto expected = weave.shade(in);
         ASSERT_TRUE(expected);
         const glm::vec3 o = backSide ? -wo : wo, i = backSide ? -wi : wi;
-        const auto bsdf = scene.bsdf(*hit, o);
+        const auto bsdf = scene.materials().bsdf(*hit, o);
         ASSERT_TRUE(bsdf);
         EXPECT_EQ(bsdf->eval(o, i), expected->bsdf.eval(o, i));
         EXPECT_GT(glm::length(bsdf->eval(o, i)), 0.0f);

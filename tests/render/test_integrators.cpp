@@ -264,10 +264,10 @@ Mesh coarseSphere(const glm::vec3& centre, float radius, int material) {
 std::shared_ptr<SceneDescription> clothInBoxScene() {
     Material walls;
     walls.name = "walls";
-    walls.baseColor = glm::vec3(0.6f, 0.6f, 0.55f);
+    walls.baseColor = glm::vec4(glm::vec3(0.6f, 0.6f, 0.55f), 1.0f);
     Material lamp;
     lamp.name = "lamp";
-    lamp.baseColor = glm::vec3(0.0f);
+    lamp.baseColor = glm::vec4(glm::vec3(0.0f), 1.0f);
     lamp.emission = glm::vec3(12.0f, 10.0f, 8.0f);
     lamp.doubleSided = false;
     Material cloth;
@@ -302,7 +302,7 @@ std::shared_ptr<SceneDescription> clothInBoxScene() {
 std::shared_ptr<SceneDescription> clothUnderSkyScene() {
     Material ground;
     ground.name = "ground";
-    ground.baseColor = glm::vec3(0.5f, 0.5f, 0.45f);
+    ground.baseColor = glm::vec4(glm::vec3(0.5f, 0.5f, 0.45f), 1.0f);
     Material cloth;
     cloth.name = "cloth";
     WovenParams p;  // satin (9,1,3) with long glossy floats, see-through gaps
@@ -495,9 +495,9 @@ TEST(RenderJob, AutoResolvesToAnIntegratorAndRecordsIt) {
 // scheduling noise on a loaded machine can reverse.
 TEST(RenderJob, AutoPicksBdptWhenAllLightArrivesAfterABounce) {
     Material walls;
-    walls.baseColor = glm::vec3(0.6f);
+    walls.baseColor = glm::vec4(glm::vec3(0.6f), 1.0f);
     Material lamp;
-    lamp.baseColor = glm::vec3(0.0f);
+    lamp.baseColor = glm::vec4(glm::vec3(0.0f), 1.0f);
     lamp.emission = glm::vec3(50.0f);
     lamp.doubleSided = false;
     std::vector<Mesh> meshes = test::boxInside({-1, 0, -1}, {1, 2, 1}, 0);

@@ -131,11 +131,50 @@ TEST(RenderCommand, MissingSceneFileIsAnErrorNamingIt) {
     expectFailure(r, "nothere.gltf", "", dir);
 }
 
-TEST(RenderCommand, SceneWithoutLightsIsAnErrorNamingIt) {
+TEST(RenderCommand, SceneWithoutLightsIsLitByTheStudioEnvironmentAndSaysSo) {
     test::TempDir dir;
     writeScene(dir.file("dark.gltf"), false);
-    const Result r = runWoven({"render", dir.file("dark.gltf"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
-    expectFailure(r, "dark.gltf", "scene has no lights", dir);
+    const Result r = runWoven({"render", dir.file("dark.gltf"), "--spp", "2", "--width", "32", "--height", "24",
+                               "--out", dir.file("lit.exr")}, dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("dark.gltf has no light source (punctual light or environment): lit by woven's studio environment"), std::string::npos) << r.err;
+    double sum = 0.0;
+    for (const glm::vec3& p : readExr(dir.file("lit.exr")).image.pixels) sum += p.r + p.g + p.b;
+    EXPECT_GT(sum, 0.0);
+}
+
+TEST(RenderCommand, EnvironmentOptionLightsAnyScene) {
+    test::TempDir dir;
+    writeScene(dir.file("dark.gltf"), false);
+    // A uniform grey of 0.5 on the floor of a scene with no light: nothing is said about defaults.
+    const Result grey = runWoven({"render", dir.file("dark.gltf"), "--spp", "1", "--width", "8", "--height", "6",
+                                  "--environment", "0.5", "--out", dir.file("grey.exr")}, dir);
+    ASSERT_EQ(grey.exitCode, 0) << grey.err;
+    EXPECT_EQ(grey.err.find("studio"), std::string::npos) << grey.err;
+    // A black environment leaves the scene dark: the render refuses, naming the file.
+    const Result black = runWoven({"render", dir.file("dark.gltf"), "--spp", "1", "--environment", "0",
+                                   "--out", dir.file("out.exr")}, dir);
+    expectFailure(black, "dark.gltf", "scene has no lights", dir);
+    const Result missing = runWoven({"render", dir.file("dark.gltf"), "--spp", "1", "--environment", dir.file("sky.hdr"),
+                                     "--out", dir.file("out.exr")}, dir);
+    expectFailure(missing, "sky.hdr", "--environment", dir);
+}
+
+TEST(RenderCommand, PreviewRefusesWhatRenderRefusesAndLightsAsRenderDoes) {
+    test::TempDir dir;
+    test::GltfBuilder empty;
+    empty.setScene({empty.addNode(nlohmann::json::object())});
+    empty.writeGltf(dir.file("empty.gltf"));
+    const Result render = runWoven({"render", dir.file("empty.gltf"), "--out", dir.file("out.png")}, dir);
+    expectFailure(render, "empty.gltf", "no triangles", dir);
+    const Result preview = runWoven({"preview", dir.file("empty.gltf"), "--headless", "--screenshot", dir.file("out.png")}, dir);
+    expectFailure(preview, "empty.gltf", "no triangles", dir);
+
+    writeScene(dir.file("dark.gltf"), false);
+    const Result lit = runWoven({"preview", dir.file("dark.gltf"), "--headless", "--width", "32", "--height", "24",
+                                 "--screenshot", dir.file("lit.png")}, dir);
+    ASSERT_EQ(lit.exitCode, 0) << lit.err;
+    EXPECT_NE(lit.err.find("lit by woven's studio environment"), std::string::npos) << lit.err;
 }
 
 TEST(RenderCommand, NanVertexIsAnErrorNamingTheFile) {

@@ -311,16 +311,18 @@ TEST(GltfScene, PunctualLights) {
     const PunctualLight& point = scene.lights[0];
     EXPECT_EQ(point.type, PunctualLight::Type::Point);
     expectNear(point.position, {1, 2, 3});
-    expectNear(point.intensity, {4, 2, 1});  // colour x intensity
+    // colour x intensity in candela (lux for the sun), / 683 lm/W as Blender's importer converts
+    expectNear(point.intensity, glm::vec3(4, 2, 1) / 683.0f);
     const PunctualLight& spot = scene.lights[1];
     EXPECT_EQ(spot.type, PunctualLight::Type::Spot);
     expectNear(spot.direction, {0, -1, 0});  // -90 degrees about x turns -z into -y
-    expectNear(spot.intensity, {10, 10, 10});
+    expectNear(spot.intensity, glm::vec3(10.0f / 683.0f));
     EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.1f);
     EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.3f);
     const PunctualLight& sun = scene.lights[2];
     EXPECT_EQ(sun.type, PunctualLight::Type::Directional);
     expectNear(sun.direction, {0, 0, 1});  // the parent's half turn about y
+    expectNear(sun.intensity, glm::vec3(2.0f / 683.0f));
 }
 
 TEST(GltfMaterials, StandardFallbackAndEmissiveStrength) {
@@ -339,12 +341,12 @@ TEST(GltfMaterials, StandardFallbackAndEmissiveStrength) {
     ASSERT_EQ(scene.materials.size(), 2u);
     const Material& m = scene.materials[0];
     EXPECT_EQ(m.name, "Plain");
-    expectNear(m.baseColor, {0.5f, 0.6f, 0.7f});
+    expectNear(glm::vec3(m.baseColor), {0.5f, 0.6f, 0.7f});
     EXPECT_FLOAT_EQ(m.roughness, 0.3f);
     EXPECT_FLOAT_EQ(m.metallic, 0.2f);
     EXPECT_FALSE(m.doubleSided);
     EXPECT_FALSE(m.woven.has_value());
-    EXPECT_EQ(m.baseColorTexture, -1);
+    EXPECT_FALSE(m.baseColorTexture);
     EXPECT_EQ(m.emission, glm::vec3(0.0f));
     expectNear(scene.materials[1].emission, {4, 2, 1});
     EXPECT_FLOAT_EQ(scene.materials[1].metallic, 1.0f);  // glTF's default metallicFactor
@@ -394,13 +396,15 @@ TEST(GltfMaterials, BaseColorTextureFromAFileAndEmbedded) {
     b.writeGltf(dir.file("tex.gltf"));
     const SceneDescription scene = loadScene(dir.file("tex.gltf"));
     ASSERT_EQ(scene.textures.size(), 1u);  // one image used twice is decoded once
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
-    EXPECT_EQ(scene.materials[1].baseColorTexture, 0);
-    expectNear(scene.materials[0].baseColor, {0.5f, 1, 1});
-    const Image& t = scene.textures[0];
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, 0);
+    EXPECT_EQ(scene.materials[1].baseColorTexture.image, 0);
+    EXPECT_TRUE(scene.materials[0].baseColorTexture.srgb);  // colour: decoded from sRGB when sampled
+    expectNear(glm::vec3(scene.materials[0].baseColor), {0.5f, 1, 1});
+    const TextureImage& t = scene.textures[0];
     ASSERT_EQ(t.width, 2);
-    expectNear(t.at(0, 0), {1, 0, 0});
-    expectNear(t.at(1, 0), {0, 0.2158605f, 1});  // sRGB 128 decoded to linear
+    ASSERT_EQ(t.bytes.size(), 2u);  // kept as bytes, RGBA with alpha 1
+    EXPECT_EQ(t.bytes[0], glm::u8vec4(255, 0, 0, 255));
+    EXPECT_EQ(t.bytes[1], glm::u8vec4(0, 128, 255, 255));
 
     // The same PNG inside a .glb, through a buffer view.
     std::ifstream in(dir.file("albedo.png"), std::ios::binary);
@@ -410,7 +414,7 @@ TEST(GltfMaterials, BaseColorTextureFromAFileAndEmbedded) {
     std::filesystem::remove(dir.file("albedo.png"));
     const SceneDescription embedded = loadScene(dir.file("tex.glb"));
     ASSERT_EQ(embedded.textures.size(), 1u);
-    EXPECT_EQ(embedded.textures[0].pixels, t.pixels);
+    EXPECT_EQ(embedded.textures[0].bytes, t.bytes);
 }
 
 TEST(GltfMeshes, PointsAndLinesAreSkippedWithAWarning) {
@@ -510,7 +514,7 @@ TEST_F(BrokenGltf, MissingTexture) {
         g.addMaterial({{"name", "M"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
     });
     const std::string message = loadError(path);
-    EXPECT_THAT(message, HasSubstr(path + ": M baseColorTexture: cannot read texture file 'gone.png'"));
+    EXPECT_THAT(message, HasSubstr(path + ": material 'M'.pbrMetallicRoughness.baseColorTexture: cannot read texture file 'gone.png'"));
 }
 
 TEST_F(BrokenGltf, CorruptTexture) {

@@ -3,6 +3,8 @@
 #include <glm/glm.hpp>
 #include <limits>
 
+#include "tex_coords.h"
+
 namespace woven {
 
 struct Ray {
@@ -15,7 +17,8 @@ struct SurfaceHit {
     glm::vec3 p{0.0f};
     glm::vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal of the front face (winding order)
     glm::vec3 ns{0.0f, 0.0f, 1.0f};  // unit interpolated shading normal, on ng's side
-    glm::vec2 uv{0.0f};
+    bool nsFlipped = false;          // the file's normal points against ng (ns is its negation)
+    TexCoords tex;
     // Along the mesh's interpolated tangents where it has them, else from the triangle's UVs (zero
     // when degenerate; an arbitrary tangent frame around ng when the mesh has no UVs).
     glm::vec3 dpdu{0.0f}, dpdv{0.0f};

@@ -1,0 +1,29 @@
+#pragma once
+// A glTF material on the GPU (shaders/gltf.frag, the twin of core's GltfMaterial): the textures
+// it uses as MAP_<NAME> defines in maps[] order, and the upload of every factor and texture.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu_textures.h"
+#include "shader_program.h"
+
+namespace woven {
+
+// One texture the material uses: its GLSL define and the reference.
+struct MapUse {
+    const char* define;
+    const TextureRef* ref;
+};
+std::vector<MapUse> gltfMaps(const Material& material);
+
+// MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, and
+// PREVIEW_SHADOWS when `shadows`.
+std::string gltfProgramPreamble(const Material& material, bool shadows);
+// shaders/mesh.vert + the gltf.frag chain, compiled with `preamble`.
+std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble);
+
+// Sets every factor and binds each map to a texture unit from `firstUnit` on.
+void uploadGltfMaterial(const ShaderProgram& program, const Material& material, GpuTextures& textures, int firstUnit);
+
+}  // namespace woven

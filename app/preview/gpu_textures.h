@@ -1,0 +1,38 @@
+#pragma once
+// A scene's texture images on the GPU, as the preview samples them: one GL texture per image
+// and decoding (sRGB colour is an SRGB8_ALPHA8 texture, so the GPU decodes before filtering, as
+// core's TextureSampler does), with mip levels, made on first use; and one sampler object per
+// wrap and filter state.
+#include <epoxy/gl.h>
+
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+class GpuTextures {
+public:
+    GpuTextures() = default;
+    ~GpuTextures();
+    GpuTextures(const GpuTextures&) = delete;
+    GpuTextures& operator=(const GpuTextures&) = delete;
+
+    // Forgets every texture; the next bind() uploads from `images`, which must outlive this.
+    void reset(const std::vector<TextureImage>* images);
+    // Binds the texture and sampler of `ref` to texture unit `unit`. Throws GlError for an
+    // image that does not exist.
+    void bind(const TextureRef& ref, int unit);
+
+private:
+    GLuint texture(int image, bool srgb);
+    GLuint sampler(const TextureRef& ref);
+
+    const std::vector<TextureImage>* images_ = nullptr;
+    std::map<std::pair<int, bool>, GLuint> textures_;
+    std::map<std::tuple<int, int, bool, bool>, GLuint> samplers_;
+};
+
+}  // namespace woven

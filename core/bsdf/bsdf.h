@@ -1,0 +1,38 @@
+#pragma once
+// The BSDF at a hit as the integrators use it: any of woven's lobes in its shading frame. A
+// value type (a variant, no allocation per hit), so a path keeps its vertices' BSDFs by value.
+#include <variant>
+
+#include "gltf_bxdf.h"
+#include "surface_bsdf.h"
+
+namespace woven {
+
+class Bxdf {
+public:
+    Bxdf(const AshikhminShirley& lobe) : lobe_(lobe) {}
+    Bxdf(const GltfBxdf& lobe) : lobe_(lobe) {}
+
+    glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
+        return std::visit([&](const auto& l) { return l.eval(wo, wi); }, lobe_);
+    }
+    float pdf(const glm::vec3& wo, const glm::vec3& wi) const {
+        return std::visit([&](const auto& l) { return l.pdf(wo, wi); }, lobe_);
+    }
+    std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
+        return std::visit([&](const auto& l) { return l.sample(wo, u, uc); }, lobe_);
+    }
+    bool transmits() const {
+        return std::visit([](const auto& l) { return l.transmits(); }, lobe_);
+    }
+
+private:
+    std::variant<AshikhminShirley, GltfBxdf> lobe_;
+};
+
+using Bsdf = FramedLobe<Bxdf>;
+
+// The woven model's per-yarn BSDF as a Bsdf.
+inline Bsdf toBsdf(const SurfaceBsdf& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
+
+}  // namespace woven

@@ -1,0 +1,126 @@
+#include "gltf_bxdf.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sampling.h"
+
+namespace woven {
+
+namespace {
+constexpr float kPi = 3.14159265358979f;
+constexpr float kInvPi = 1.0f / kPi;
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
+float clamp01(float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 0.0f; }
+glm::vec3 mirrorThroughSurface(const glm::vec3& w) { return {w.x, w.y, -w.z}; }
+}  // namespace
+
+GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
+    : baseColor_(clamp01(in.baseColor)),
+      metallic_(clamp01(in.metallic)),
+      ggx_(clamp01(in.roughness) * clamp01(in.roughness)),
+      f0_(clamp01(in.specularF0)),
+      f90_(clamp01(in.specularF90)),
+      transmission_(clamp01(in.transmission)),
+      transmittance_(clamp01(in.transmittance)),
+      sheen_(in.sheenColor, in.sheenRoughness),
+      clearcoat_(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal) {}
+
+glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
+    if (wo.z <= 0.0f || wi.z == 0.0f) return glm::vec3(0.0f);
+    const bool reflection = wi.z > 0.0f;
+    if (!reflection && !transmits()) return glm::vec3(0.0f);
+    // Thin-walled transmission is the reflection lobe mirrored through the surface.
+    const glm::vec3 w = reflection ? wi : mirrorThroughSurface(wi);
+    const glm::vec3 H = wo + w;
+    const float len = glm::length(H);
+    if (!(len > 1e-12f)) return glm::vec3(0.0f);
+    const glm::vec3 h = H / len;
+    const float fresnel = schlickWeight(0.5f * len);  // wo.h = |wo + w| / 2 for unit vectors
+    const float specular = ggx_.D(h) * ggx_.visibility(wo, w);
+    const glm::vec3 dielectricF = f0_ + (glm::vec3(f90_) - f0_) * fresnel;
+
+    glm::vec3 f;
+    if (reflection) {
+        const glm::vec3 dielectric = (1.0f - dielectricF) * (1.0f - transmission_) * baseColor_ * kInvPi +
+                                     dielectricF * specular;
+        const glm::vec3 metal = (baseColor_ + (1.0f - baseColor_) * fresnel) * specular;
+        f = (1.0f - metallic_) * dielectric + metallic_ * metal;
+    } else {
+        f = (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * baseColor_ * transmittance_ * specular;
+    }
+    if (sheen_.active()) {
+        f *= std::min(sheen_.baseScale(wo.z), sheen_.baseScale(w.z));
+        if (reflection) f += sheen_.eval(wo, wi);
+    }
+    if (clearcoat_.active()) {
+        f *= clearcoat_.baseScale(wo, w);
+        if (reflection) f += clearcoat_.eval(wo, wi);
+    }
+    return f;
+}
+
+GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
+    const float fresnel = schlickWeight(wo.z);
+    const float dielectricF = luminance(f0_ + (glm::vec3(f90_) - f0_) * fresnel);
+    const float metalF = luminance(baseColor_ + (1.0f - baseColor_) * fresnel);
+    const float below = sheen_.baseScale(wo.z) * (1.0f - clearcoat_.reflectance(wo));
+    const float base = luminance(baseColor_);
+    LobeChoice c;
+    c.specular = below * ((1.0f - metallic_) * dielectricF + metallic_ * metalF);
+    c.diffuse = below * (1.0f - metallic_) * (1.0f - transmission_) * (1.0f - dielectricF) * base;
+    c.transmission = below * (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * luminance(baseColor_ * transmittance_);
+    c.sheen = sheen_.active() ? (1.0f - clearcoat_.reflectance(wo)) * sheen_.maxColor() * sheen_.albedo(wo.z) : 0.0f;
+    c.clearcoat = clearcoat_.reflectance(wo);
+    // Each lobe whose f can be non-zero keeps some probability, so pdf() never vanishes where
+    // f does not (a black base colour still reflects through its Fresnel term, and so on).
+    c.specular = std::max(c.specular, 0.02f);
+    if (transmits()) c.transmission = std::max(c.transmission, 0.02f);
+    if (metallic_ < 1.0f && transmission_ < 1.0f) c.diffuse = std::max(c.diffuse, 0.02f);
+    const float sum = c.specular + c.diffuse + c.transmission + c.sheen + c.clearcoat;
+    c.specular /= sum;
+    c.diffuse /= sum;
+    c.transmission /= sum;
+    c.sheen /= sum;
+    c.clearcoat /= sum;
+    return c;
+}
+
+float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
+    if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
+    const LobeChoice c = choose(wo);
+    if (wi.z < 0.0f) return transmits() ? c.transmission * ggx_.reflectionPdf(wo, mirrorThroughSurface(wi)) : 0.0f;
+    float p = c.specular * ggx_.reflectionPdf(wo, wi) + (c.diffuse + c.sheen) * wi.z * kInvPi;
+    if (c.clearcoat > 0.0f) p += c.clearcoat * clearcoat_.pdf(wo, wi);
+    return p;
+}
+
+std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
+    if (wo.z <= 0.0f) return std::nullopt;
+    const LobeChoice c = choose(wo);
+    glm::vec3 wi;
+    if (uc < c.specular + c.transmission) {
+        const glm::vec3 h = ggx_.sampleVisibleNormal(wo, u);
+        wi = 2.0f * glm::dot(wo, h) * h - wo;
+        if (wi.z <= 0.0f) return std::nullopt;
+        if (uc >= c.specular) wi = mirrorThroughSurface(wi);
+    } else if (uc < c.specular + c.transmission + c.diffuse + c.sheen) {
+        wi = sampleCosineHemisphere(u);
+    } else {
+        const auto coat = clearcoat_.sample(wo, u);
+        if (!coat) return std::nullopt;
+        wi = *coat;
+    }
+    if (wi.z == 0.0f) return std::nullopt;
+    BsdfSample s;
+    s.wi = wi;
+    s.pdf = pdf(wo, wi);
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return std::nullopt;
+    s.f = eval(wo, wi);
+    s.weight = s.f * (std::abs(wi.z) / s.pdf);
+    return s;
+}
+
+}  // namespace woven

@@ -1,0 +1,66 @@
+#pragma once
+// The glTF 2.0 metallic-roughness BSDF (the specification's appendix B) with the KHR material
+// extensions woven renders, at one shading point, in a local frame with z = the shading normal
+// on the viewer's side:
+//   base  = mix(dielectric, metal, metallic)
+//   dielectric = fresnel_mix(F0, F90; (1 - T) Lambert(baseColor) + T thinBtdf, GGX)
+//   metal = conductor_fresnel(baseColor; GGX)
+//   f = clearcoat over (sheen over base), each layer scaling the one below by what it reflects.
+// F0 and F90 come from KHR_materials_ior and KHR_materials_specular. Transmission is thin-walled
+// (KHR_materials_transmission without refraction): the GGX lobe mirrored through the surface,
+// tinted by the base colour and by KHR_materials_volume's attenuation. GGX's energy loss to
+// multiple scattering at high roughness is not compensated, as in the specification's
+// reference; docs/MATERIALS.md gives its size.
+// Sampling picks one lobe by its estimated reflectance towards wo (GGX by its visible normals,
+// diffuse and sheen by the cosine), and pdf() is the mixture density of all of them.
+#include <optional>
+
+#include "bsdf_sample.h"
+#include "clearcoat_lobe.h"
+#include "ggx.h"
+#include "sheen_lobe.h"
+
+namespace woven {
+
+// Every input of the BSDF after texture lookups.
+struct GltfBxdfInputs {
+    glm::vec3 baseColor{1.0f};
+    float metallic = 1.0f, roughness = 1.0f;
+    glm::vec3 specularF0{0.04f};  // dielectric reflectance at normal incidence
+    float specularF90 = 1.0f;
+    float transmission = 0.0f;
+    glm::vec3 transmittance{1.0f};  // volume attenuation of one crossing
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
+    float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
+    glm::vec3 clearcoatNormal{0.0f, 0.0f, 1.0f};  // in the local frame
+};
+
+class GltfBxdf {
+public:
+    explicit GltfBxdf(const GltfBxdfInputs& in);
+
+    glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
+    float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
+    std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
+    bool transmits() const { return transmission_ > 0.0f && metallic_ < 1.0f; }
+
+private:
+    // Probabilities of sampling each lobe towards wo; they sum to 1.
+    struct LobeChoice {
+        float specular = 1.0f, diffuse = 0.0f, transmission = 0.0f, sheen = 0.0f, clearcoat = 0.0f;
+    };
+    LobeChoice choose(const glm::vec3& wo) const;
+
+    glm::vec3 baseColor_;
+    float metallic_;
+    TrowbridgeReitz ggx_;
+    glm::vec3 f0_;
+    float f90_;
+    float transmission_;
+    glm::vec3 transmittance_;
+    SheenLobe sheen_;
+    ClearcoatLobe clearcoat_;
+};
+
+}  // namespace woven

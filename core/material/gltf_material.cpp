@@ -1,0 +1,126 @@
+#include "gltf_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace woven {
+
+namespace {
+
+glm::vec3 projectOut(const glm::vec3& v, const glm::vec3& n) { return v - glm::dot(v, n) * n; }
+
+bool usableLength(float length) { return length > 1e-12f && std::isfinite(length); }
+
+// The attenuation of one crossing of a thin wall: half of the volume's thickness.
+glm::vec3 crossingTransmittance(const TransmissionParams& t, float thickness) {
+    if (!(thickness > 0.0f) || !std::isfinite(t.attenuationDistance) || !(t.attenuationDistance > 0.0f))
+        return glm::vec3(1.0f);
+    const glm::vec3 c = glm::clamp(t.attenuationColor, glm::vec3(1e-6f), glm::vec3(1.0f));
+    return glm::pow(c, glm::vec3(0.5f * thickness / t.attenuationDistance));
+}
+
+}  // namespace
+
+GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureImage>& textures)
+    : SurfaceMaterial(material, textures),
+      m_(material),
+      baseColorTexture_(material.baseColorTexture, textures),
+      metallicRoughnessTexture_(material.metallicRoughnessTexture, textures),
+      normalTexture_(material.normalTexture, textures),
+      specularTexture_(material.specularTexture, textures),
+      specularColorTexture_(material.specularColorTexture, textures),
+      sheenColorTexture_(material.sheen.colorTexture, textures),
+      sheenRoughnessTexture_(material.sheen.roughnessTexture, textures),
+      clearcoatTexture_(material.clearcoat.texture, textures),
+      clearcoatRoughnessTexture_(material.clearcoat.roughnessTexture, textures),
+      clearcoatNormalTexture_(material.clearcoat.normalTexture, textures),
+      transmissionTexture_(material.transmission.texture, textures),
+      thicknessTexture_(material.transmission.thicknessTexture, textures) {
+    // KHR_materials_ior: an IOR of 0 stands for an infinite one (a perfect mirror's F0 of 1).
+    const float ior = material.ior;
+    dielectricF0_ = ior == 0.0f ? 1.0f : ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
+}
+
+glm::vec4 GltfMaterial::baseColor(const TexCoords& tc) const {
+    return m_.baseColor * baseColorTexture_.eval(tc) * tc.color;
+}
+
+GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
+    GltfBxdfInputs in;
+    in.baseColor = glm::vec3(baseColor(tc));
+    const glm::vec4 mr = metallicRoughnessTexture_.eval(tc);
+    in.metallic = m_.metallic * mr.b;
+    in.roughness = m_.roughness * mr.g;
+    const float specular = m_.specular * specularTexture_.eval(tc).a;
+    const glm::vec3 specularColor = m_.specularColor * glm::vec3(specularColorTexture_.eval(tc));
+    in.specularF0 = glm::min(dielectricF0_ * specularColor, glm::vec3(1.0f)) * specular;
+    in.specularF90 = specular;
+    const TransmissionParams& t = m_.transmission;
+    if (t.factor > 0.0f) {
+        in.transmission = t.factor * transmissionTexture_.eval(tc).r;
+        in.transmittance = crossingTransmittance(t, t.thickness * thicknessTexture_.eval(tc).g);
+    }
+    if (m_.sheen.color != glm::vec3(0.0f)) {
+        in.sheenColor = m_.sheen.color * glm::vec3(sheenColorTexture_.eval(tc));
+        in.sheenRoughness = m_.sheen.roughness * sheenRoughnessTexture_.eval(tc).a;
+    }
+    if (m_.clearcoat.factor > 0.0f) {
+        in.clearcoat = m_.clearcoat.factor * clearcoatTexture_.eval(tc).r;
+        in.clearcoatRoughness = m_.clearcoat.roughness * clearcoatRoughnessTexture_.eval(tc).g;
+    }
+    return in;
+}
+
+glm::vec3 GltfMaterial::perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const {
+    // The tangent frame of the file's normal (before ns was turned to ng's side): the tangents'
+    // handedness is defined against it.
+    const glm::vec3 n = hit.nsFlipped ? -hit.ns : hit.ns;
+    const glm::vec3 t = projectOut(hit.dpdu, n), b = projectOut(hit.dpdv, n);
+    const float tl = glm::length(t), bl = glm::length(b);
+    if (!usableLength(tl) || !usableLength(bl)) return hit.ns;
+    glm::vec3 m = glm::vec3(map.eval(hit.tex)) * 2.0f - 1.0f;
+    m.x *= map.scale();
+    m.y *= map.scale();
+    const glm::vec3 perturbed = m.x * (t / tl) + m.y * (b / bl) + m.z * n;
+    const float length = glm::length(perturbed);
+    if (!usableLength(length)) return hit.ns;
+    return (hit.nsFlipped ? -perturbed : perturbed) / length;
+}
+
+glm::vec3 GltfMaterial::shadingNormal(const SurfaceHit& hit) const {
+    return normalTexture_ ? perturbedNormal(normalTexture_, hit) : hit.ns;
+}
+
+std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
+    if (m_.unlit) return std::nullopt;
+    const float side = glm::dot(wo, hit.ng) < 0.0f ? -1.0f : 1.0f;
+    const Frame frame = Frame::fromNormal(side * shadingNormal(hit));
+    GltfBxdfInputs in = inputs(hit.tex);
+    if (in.clearcoat > 0.0f) {
+        // The coat follows the geometry's normal unless it has a normal map of its own.
+        const glm::vec3 coat = clearcoatNormalTexture_ ? perturbedNormal(clearcoatNormalTexture_, hit) : hit.ns;
+        in.clearcoatNormal = frame.toLocal(side * coat);
+    }
+    return Bsdf(frame, Bxdf(GltfBxdf(in)));
+}
+
+bool GltfMaterial::mayPassThrough(const Mesh& mesh) const {
+    if (m_.alphaMode == AlphaMode::Opaque) return false;
+    return m_.baseColor.a < 1.0f || bool(baseColorTexture_) || !mesh.colors.empty() ||
+           (m_.alphaMode == AlphaMode::Mask && m_.alphaCutoff > 1.0f);
+}
+
+bool GltfMaterial::passesThrough(const TexCoords& tc, float u) const {
+    switch (m_.alphaMode) {
+        case AlphaMode::Opaque: return false;
+        case AlphaMode::Mask: return baseColor(tc).a < m_.alphaCutoff;
+        case AlphaMode::Blend: return u >= baseColor(tc).a;
+    }
+    return false;
+}
+
+glm::vec3 GltfMaterial::unlitRadiance(const TexCoords& tc) const {
+    return m_.unlit ? glm::max(glm::vec3(baseColor(tc)), glm::vec3(0.0f)) : glm::vec3(0.0f);
+}
+
+}  // namespace woven

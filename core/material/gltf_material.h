@@ -1,0 +1,40 @@
+#pragma once
+// The glTF 2.0 metallic-roughness material with the extensions woven renders (docs/MATERIALS.md):
+// every texture looked up at the hit, the normal map applied, and the result handed to GltfBxdf.
+// Alpha: MASK cuts out below alphaCutoff, BLEND lets a ray through with probability 1 - alpha
+// (stochastic transparency, unbiased for any number of layers). KHR_materials_unlit shows the
+// base colour and reflects nothing. The occlusion texture is ignored: a path tracer computes
+// the occlusion it stands for.
+#include "surface_material.h"
+
+namespace woven {
+
+class GltfMaterial final : public SurfaceMaterial {
+public:
+    GltfMaterial(const Material& material, const std::vector<TextureImage>& textures);
+
+    std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
+    bool mayPassThrough(const Mesh& mesh) const override;
+    bool passesThrough(const TexCoords& tc, float u) const override;
+    glm::vec3 unlitRadiance(const TexCoords& tc) const override;
+
+    // The BSDF's inputs at a point, textures applied (the preview's tests compare with them).
+    GltfBxdfInputs inputs(const TexCoords& tc) const;
+    // The shading normal at a hit after the normal map, on the side of hit.ns.
+    glm::vec3 shadingNormal(const SurfaceHit& hit) const;
+
+private:
+    glm::vec4 baseColor(const TexCoords& tc) const;  // linear RGB and alpha, vertex colour included
+    // A tangent-space normal texture applied to the hit's interpolated normal.
+    glm::vec3 perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const;
+
+    Material m_;
+    TextureSampler baseColorTexture_, metallicRoughnessTexture_, normalTexture_;
+    TextureSampler specularTexture_, specularColorTexture_;
+    TextureSampler sheenColorTexture_, sheenRoughnessTexture_;
+    TextureSampler clearcoatTexture_, clearcoatRoughnessTexture_, clearcoatNormalTexture_;
+    TextureSampler transmissionTexture_, thicknessTexture_;
+    float dielectricF0_;  // from the IOR
+};
+
+}  // namespace woven

@@ -1,0 +1,25 @@
+#pragma once
+// The woven model (core/model, MODEL.md) as a scene material: the yarn's BSDF at the hit's uv,
+// its see-through gaps as points rays pass through. A mesh without texture coordinates shows
+// solid cloth: every point takes the middle of the first weave element, which is on a yarn.
+#include "surface_material.h"
+#include "woven_material.h"
+
+namespace woven {
+
+class WovenSurfaceMaterial final : public SurfaceMaterial {
+public:
+    // Throws std::invalid_argument for parameters the model rejects.
+    WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures);
+
+    std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
+    bool mayPassThrough(const Mesh& mesh) const override;
+    bool passesThrough(const TexCoords& tc, float u) const override;
+
+    const WovenMaterial& model() const { return model_; }
+
+private:
+    WovenMaterial model_;
+};
+
+}  // namespace woven

@@ -1,0 +1,103 @@
+#include "scene_lighting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#include "environment_mapping.h"
+#include "image_io.h"
+#include "scene_loader.h"
+
+namespace woven {
+
+namespace {
+
+bool anyPositive(const glm::vec3& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
+
+// A rectangular soft box seen from the scene: `centre` its direction, `halfWidth` and
+// `halfHeight` its angular half sizes (radians), edges fading over `soft` radians.
+struct SoftBox {
+    glm::vec3 centre;
+    float halfWidth, halfHeight, soft, radiance;
+
+    float at(const glm::vec3& d) const {
+        const glm::vec3 c = glm::normalize(centre);
+        const glm::vec3 right = glm::normalize(glm::cross(c, glm::vec3(0.0f, 1.0f, 0.0f)));
+        const glm::vec3 up = glm::cross(right, c);
+        const float forward = glm::dot(d, c);
+        if (forward <= 0.0f) return 0.0f;
+        const float x = std::atan2(glm::dot(d, right), forward), y = std::atan2(glm::dot(d, up), forward);
+        const auto edge = [&](float a, float half) {
+            return std::clamp((half - std::abs(a)) / soft + 0.5f, 0.0f, 1.0f);
+        };
+        return radiance * edge(x, halfWidth) * edge(y, halfHeight);
+    }
+};
+
+}  // namespace
+
+bool hasLightSources(const SceneDescription& scene) {
+    for (const PunctualLight& l : scene.lights)
+        if (anyPositive(l.intensity)) return true;
+    const Environment& env = scene.environment;
+    if (!anyPositive(env.color)) return false;
+    if (!env.image) return true;
+    return std::any_of(env.image->pixels.begin(), env.image->pixels.end(), anyPositive);
+}
+
+Environment studioEnvironment() {
+    // The default camera looks at a scene from +z: the key comes from the front left and above,
+    // the fill from the right, the rim from behind.
+    const SoftBox boxes[] = {
+        {{-0.6f, 0.65f, 0.55f}, 0.30f, 0.22f, 0.08f, 9.0f},
+        {{0.85f, 0.2f, 0.35f}, 0.40f, 0.30f, 0.15f, 1.8f},
+        {{0.25f, 0.55f, -0.85f}, 0.25f, 0.12f, 0.06f, 5.0f},
+    };
+    auto image = std::make_shared<Image>();
+    image->width = 512;
+    image->height = 256;
+    image->pixels.resize(size_t(image->width) * image->height);
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x) {
+            const glm::vec3 d = equirectDirection({(x + 0.5f) / image->width, (y + 0.5f) / image->height});
+            // A dome brighter at the zenith, a darker floor, blended across the horizon.
+            const float dome = 0.32f + 0.18f * std::max(d.y, 0.0f);
+            const float floorRadiance = 0.16f;
+            const float t = std::clamp(d.y / 0.05f * 0.5f + 0.5f, 0.0f, 1.0f);
+            float L = floorRadiance + (dome - floorRadiance) * t;
+            for (const SoftBox& box : boxes) L += box.at(d);
+            image->at(x, y) = glm::vec3(L);
+        }
+    Environment env;
+    env.color = glm::vec3(1.0f);
+    env.image = std::move(image);
+    return env;
+}
+
+bool lightByDefault(SceneDescription& scene) {
+    if (hasLightSources(scene)) return false;
+    scene.environment = studioEnvironment();
+    return true;
+}
+
+Environment environmentFromOption(const std::string& value) {
+    char* end = nullptr;
+    const float grey = std::strtof(value.c_str(), &end);
+    Environment env;
+    if (!value.empty() && end == value.c_str() + value.size()) {
+        if (!std::isfinite(grey) || grey < 0.0f || grey > 1e6f)
+            throw SceneError("--environment " + value + ": a grey radiance must be a number from 0 to 1e6");
+        env.color = glm::vec3(grey);
+        return env;
+    }
+    try {
+        env.image = std::make_shared<Image>(readImage(value, ChannelEncoding::Srgb));
+    } catch (const ImageError& e) {
+        throw SceneError(std::string("--environment: ") + e.what());
+    }
+    env.color = glm::vec3(1.0f);
+    return env;
+}
+
+}  // namespace woven

@@ -1,0 +1,27 @@
+#pragma once
+// What lights a scene when its file brings no light, as glTF viewers do: a neutral studio
+// environment built into woven (a soft grey dome over a darker floor, a key, a fill and a rim
+// soft box); and the command line's --environment, which replaces a scene's environment with an
+// image or a uniform grey.
+#include <string>
+
+#include "scene_description.h"
+
+namespace woven {
+
+// Whether the scene brings a light source: a punctual light of non-zero intensity or an
+// environment brighter than black. Emissive materials do not count: in glTF files they are
+// screens, LEDs and signs far more often than the light a scene is meant to be seen by.
+bool hasLightSources(const SceneDescription& scene);
+
+// The built-in studio environment (an equirectangular image, 512 x 256).
+Environment studioEnvironment();
+
+// Lights a scene without light sources with studioEnvironment(); returns whether it did.
+bool lightByDefault(SceneDescription& scene);
+
+// --environment's value: an image file (.hdr, .exr; .png/.jpg decoded from sRGB) or a number,
+// the radiance of a uniform grey environment. Throws SceneError naming the option and the file.
+Environment environmentFromOption(const std::string& value);
+
+}  // namespace woven

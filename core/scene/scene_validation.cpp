@@ -1,0 +1,45 @@
+#include "scene_validation.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "scene_loader.h"
+
+namespace woven {
+
+namespace {
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+void validateScene(const SceneDescription& s) {
+    const auto fail = [&](const std::string& what) { throw SceneError(s.source + ": " + what); };
+    size_t triangles = 0;
+    for (const Mesh& mesh : s.meshes) {
+        const std::string name = "mesh '" + mesh.name + "': ";
+        const size_t n = mesh.positions.size();
+        for (size_t v = 0; v < n; ++v) {
+            if (!finite(mesh.positions[v])) {
+                std::ostringstream msg;
+                msg << name << "vertex " << v << " is not finite (" << mesh.positions[v].x << ", "
+                    << mesh.positions[v].y << ", " << mesh.positions[v].z << ")";
+                fail(msg.str());
+            }
+        }
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const glm::uvec3 tri = mesh.triangles[t];
+            if (tri.x >= n || tri.y >= n || tri.z >= n)
+                fail(name + "triangle " + std::to_string(t) + " refers to a vertex past the " + std::to_string(n) + " it has");
+        }
+        if (!mesh.normals.empty() && mesh.normals.size() != n) fail(name + "normal count differs from vertex count");
+        if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail(name + "uv count differs from vertex count");
+        if (!mesh.uvs1.empty() && mesh.uvs1.size() != n) fail(name + "TEXCOORD_1 count differs from vertex count");
+        if (!mesh.colors.empty() && mesh.colors.size() != n) fail(name + "colour count differs from vertex count");
+        if (!mesh.tangents.empty() && mesh.tangents.size() != n) fail(name + "tangent count differs from vertex count");
+        if (mesh.material < -1 || mesh.material >= int(s.materials.size()))
+            fail(name + "material " + std::to_string(mesh.material) + " does not exist");
+        triangles += mesh.triangles.size();
+    }
+    if (triangles == 0) fail("no triangles to render");
+}
+
+}  // namespace woven

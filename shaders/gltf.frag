@@ -1,0 +1,146 @@
+// The glTF material's surface shader: core's GltfMaterial (every texture looked up, the normal
+// map applied) and gltf_bxdf.glsl lit by lighting.glsl, plus the occlusion texture, which only
+// the preview uses. The C++ side (gltf_gl_material.cpp) defines MAP_<NAME> as the index into
+// maps[] of each texture the material has, MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT and
+// PREVIEW_SHADOWS. BLEND alpha and transmission become screen-door coverage (screen_door.glsl).
+in vec3 vPosition;
+in vec3 vNormal;
+in vec2 vUv;
+in vec2 vUv1;
+in vec4 vColor;
+in vec4 vTangent;
+
+layout(location = 0) out vec4 outRadiance;
+
+uniform vec3 cameraPosition;
+uniform vec3 emission;  // emissive factor x strength, radiance of the front face
+uniform vec4 baseColorFactor;
+uniform float metallicFactor, roughnessFactor;
+uniform float normalScale, occlusionStrength;
+uniform float alphaCutoff;
+uniform float iorF0;  // ((ior - 1) / (ior + 1))^2
+uniform float specularFactor;
+uniform vec3 specularColorFactor;
+uniform vec3 sheenColorFactor;
+uniform float sheenRoughnessFactor;
+uniform float clearcoatFactor, clearcoatRoughnessFactor;
+uniform float transmissionFactor;
+
+#if MAP_COUNT > 0
+// One texture use as core's TextureSampler: its set of texture coordinates and its
+// KHR_texture_transform; sRGB decoding and wrap modes are the GL texture's and sampler's.
+uniform sampler2D maps[MAP_COUNT];
+uniform int mapTexCoord[MAP_COUNT];
+uniform mat3 mapTransform[MAP_COUNT];
+
+vec4 lookup(int i) {
+    vec2 uv = mapTexCoord[i] == 1 ? vUv1 : vUv;
+    return texture(maps[i], (mapTransform[i] * vec3(uv, 1.0)).xy);
+}
+#endif
+
+void main() {
+    vec3 p = vPosition;
+    vec3 wo = normalize(cameraPosition - p);
+    vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
+    if (dot(ng, wo) < 0.0) ng = -ng;
+    vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
+    bool backSide = dot(wo, ns) < 0.0;
+
+    vec4 base = baseColorFactor * vColor;
+#ifdef MAP_BASE_COLOR
+    base *= lookup(MAP_BASE_COLOR);
+#endif
+#if defined(ALPHA_MASK)
+    if (base.a < alphaCutoff) discard;
+#elif defined(ALPHA_BLEND)
+    if (base.a < ditherThreshold()) discard;
+#endif
+#ifdef UNLIT
+    outRadiance = vec4(max(base.rgb, vec3(0.0)), 1.0);
+    return;
+#endif
+
+    GltfInputs g;
+    g.baseColor = clamp(base.rgb, 0.0, 1.0);
+    float metallic = metallicFactor, roughness = roughnessFactor;
+#ifdef MAP_METALLIC_ROUGHNESS
+    vec4 mr = lookup(MAP_METALLIC_ROUGHNESS);
+    metallic *= mr.b;
+    roughness *= mr.g;
+#endif
+    g.metallic = clamp(metallic, 0.0, 1.0);
+    g.alpha = clamp(roughness * roughness, 1e-3, 1.0);
+    float specular = specularFactor;
+    vec3 specularColor = specularColorFactor;
+#ifdef MAP_SPECULAR
+    specular *= lookup(MAP_SPECULAR).a;
+#endif
+#ifdef MAP_SPECULAR_COLOR
+    specularColor *= lookup(MAP_SPECULAR_COLOR).rgb;
+#endif
+    g.f0 = min(iorF0 * specularColor, vec3(1.0)) * specular;
+    g.f90 = specular;
+    g.transmission = transmissionFactor;
+#ifdef MAP_TRANSMISSION
+    g.transmission *= lookup(MAP_TRANSMISSION).r;
+#endif
+    g.sheenColor = sheenColorFactor;
+    float sheenRoughness = sheenRoughnessFactor;
+#ifdef MAP_SHEEN_COLOR
+    g.sheenColor *= lookup(MAP_SHEEN_COLOR).rgb;
+#endif
+#ifdef MAP_SHEEN_ROUGHNESS
+    sheenRoughness *= lookup(MAP_SHEEN_ROUGHNESS).a;
+#endif
+    g.sheenRoughness = clamp(sheenRoughness, 0.07, 1.0);
+    g.clearcoat = clearcoatFactor;
+    float clearcoatRoughness = clearcoatRoughnessFactor;
+#ifdef MAP_CLEARCOAT
+    g.clearcoat *= lookup(MAP_CLEARCOAT).r;
+#endif
+#ifdef MAP_CLEARCOAT_ROUGHNESS
+    clearcoatRoughness *= lookup(MAP_CLEARCOAT_ROUGHNESS).g;
+#endif
+    g.clearcoatAlpha = clamp(clearcoatRoughness * clearcoatRoughness, 1e-3, 1.0);
+
+    // Thin-walled transmission lets light through where the surface neither reflects nor
+    // absorbs it: drawn as partial coverage.
+    float through = g.transmission * (1.0 - g.metallic);
+    if (through > 0.0 && 1.0 - through < ditherThreshold()) discard;
+
+    vec3 n = ns;
+#ifdef MAP_NORMAL
+    // The tangent frame of the file's normal; handedness from the tangent's w, as core.
+    vec3 t = vTangent.xyz - dot(vTangent.xyz, ns) * ns;
+    if (dot(t, t) > 1e-20) {
+        t = normalize(t);
+        vec3 b = (vTangent.w < 0.0 ? -1.0 : 1.0) * cross(ns, t);
+        vec3 m = lookup(MAP_NORMAL).xyz * 2.0 - 1.0;
+        vec3 perturbed = m.x * normalScale * t + m.y * normalScale * b + m.z * ns;
+        if (dot(perturbed, perturbed) > 1e-20) n = normalize(perturbed);
+    }
+#endif
+    Frame f = frameFromNormal(backSide ? -n : n);
+    vec3 woLocal = toLocal(f, wo);
+    float occlusion = 1.0;
+#ifdef MAP_OCCLUSION
+    occlusion = 1.0 + occlusionStrength * (lookup(MAP_OCCLUSION).r - 1.0);
+#endif
+    vec3 radiance = ambientRadiance * gltfAlbedo(g, woLocal.z) * occlusion;
+    for (int i = 0; i < lightCount; ++i) {
+        vec3 wi;
+        vec3 L = incidentLight(i, p, ng, wi);
+        if (L == vec3(0.0)) continue;
+        vec3 wiLocal = toLocal(f, wi);
+        radiance += gltfBsdf(g, woLocal, wiLocal) * L * max(wiLocal.z, 0.0);
+    }
+    if (!backSide) {
+        vec3 e = emission;
+#ifdef MAP_EMISSIVE
+        e *= lookup(MAP_EMISSIVE).rgb;
+#endif
+        radiance += e;
+    }
+    outRadiance = vec4(radiance, 1.0);
+}

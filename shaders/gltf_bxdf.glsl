@@ -1,0 +1,108 @@
+// core/bsdf/gltf_bxdf.cpp's eval() in GLSL (reflection; the preview draws transmission as
+// partial coverage): Lambert + GGX with the height-correlated Smith term, dielectric and metal
+// Fresnel, the Charlie sheen layer with its albedo scaling (the albedo table is core's, uploaded
+// as a texture) and the clearcoat layer. Local frame: z = the shading normal.
+struct GltfInputs {
+    vec3 baseColor;
+    float metallic, alpha;     // alpha = roughness^2, clamped as core clamps it
+    vec3 f0;                   // dielectric F0 (KHR_materials_ior, KHR_materials_specular)
+    float f90;
+    float transmission;
+    vec3 sheenColor;
+    float sheenRoughness;      // clamped to [0.07, 1] as core's SheenLobe
+    float clearcoat, clearcoatAlpha;
+};
+
+uniform sampler2D sheenAlbedoTable;  // SheenLobe::albedoTable(): x = cos theta, y = roughness
+
+float ggxD(float alpha, vec3 h) {
+    if (h.z <= 0.0) return 0.0;
+    float a2 = alpha * alpha;
+    float d = a2 * h.z * h.z + (h.x * h.x + h.y * h.y);
+    return a2 / (PI * d * d);
+}
+
+float ggxVisibility(float alpha, float no, float ni) {
+    if (!(no > 0.0) || !(ni > 0.0)) return 0.0;
+    float a2 = alpha * alpha;
+    return 0.5 / (ni * sqrt(no * no * (1.0 - a2) + a2) + no * sqrt(ni * ni * (1.0 - a2) + a2));
+}
+
+float sheenFitL(float x, float alpha) {
+    float t = (1.0 - alpha) * (1.0 - alpha);
+    float a = mix(21.5473, 25.3245, t), b = mix(3.82987, 3.32435, t), c = mix(0.19823, 0.16801, t);
+    float d = mix(-1.97760, -1.27393, t), e = mix(-4.32054, -4.85967, t);
+    return a / (1.0 + b * pow(x, c)) + d * x + e;
+}
+
+float sheenLambda(float cosTheta, float alpha) {
+    float c = abs(cosTheta);
+    return c < 0.5 ? exp(sheenFitL(c, alpha)) : exp(2.0 * sheenFitL(0.5, alpha) - sheenFitL(1.0 - c, alpha));
+}
+
+float sheenAlbedo(float cosTheta, float roughness) {
+    const float N = 32.0;
+    vec2 at = (vec2(clamp(cosTheta, 0.0, 1.0), roughness) * (N - 1.0) + 0.5) / N;
+    return texture(sheenAlbedoTable, at).r;
+}
+
+float coatFresnel(float cosTheta) { return 0.04 + 0.96 * pow5(clamp(1.0 - cosTheta, 0.0, 1.0)); }
+
+vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
+    vec3 H = wo + wi;
+    float len = length(H);
+    if (!(len > 1e-12)) return vec3(0.0);
+    vec3 h = H / len;
+    float fresnel = pow5(clamp(1.0 - 0.5 * len, 0.0, 1.0));
+    float specular = ggxD(g.alpha, h) * ggxVisibility(g.alpha, wo.z, wi.z);
+    vec3 dielectricF = g.f0 + (vec3(g.f90) - g.f0) * fresnel;
+    vec3 dielectric = (1.0 - dielectricF) * (1.0 - g.transmission) * g.baseColor / PI + dielectricF * specular;
+    vec3 metal = (g.baseColor + (1.0 - g.baseColor) * fresnel) * specular;
+    vec3 f = mix(dielectric, metal, g.metallic);
+    float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
+    if (sheenMax > 0.0) {
+        float sheenAlpha = g.sheenRoughness * g.sheenRoughness;
+        float scaleO = clamp(1.0 - sheenMax * sheenAlbedo(wo.z, g.sheenRoughness), 0.0, 1.0);
+        float scaleI = clamp(1.0 - sheenMax * sheenAlbedo(wi.z, g.sheenRoughness), 0.0, 1.0);
+        float sin2 = min(h.x * h.x + h.y * h.y, 1.0);
+        float D = (2.0 + 1.0 / sheenAlpha) * pow(sin2, 0.5 / sheenAlpha) / (2.0 * PI);
+        float V = 1.0 / ((1.0 + sheenLambda(wo.z, sheenAlpha) + sheenLambda(wi.z, sheenAlpha)) * (4.0 * wo.z * wi.z));
+        f = f * min(scaleO, scaleI) + g.sheenColor * D * V;
+    }
+    if (g.clearcoat > 0.0) {
+        float coat = g.clearcoat * coatFresnel(0.5 * len) * ggxD(g.clearcoatAlpha, h) * ggxVisibility(g.clearcoatAlpha, wo.z, wi.z);
+        f = f * (1.0 - g.clearcoat * max(coatFresnel(wo.z), coatFresnel(wi.z))) + vec3(coat);
+    }
+    return f;
+}
+
+// Karis's fit of GGX's split-sum environment terms: reflectance = F0 * x + F90 * y.
+vec2 ggxAlbedoTerms(float roughness, float cosO) {
+    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+    vec4 r = roughness * c0 + c1;
+    float a004 = min(r.x * r.x, exp2(-9.28 * cosO)) * r.x + r.y;
+    return vec2(-1.04, 1.04) * a004 + r.zw;
+}
+
+// The BSDF's reflectance towards wo under uniform light (the preview's ambient term), with the
+// same layering as gltfBsdf().
+vec3 gltfAlbedo(GltfInputs g, float cosO) {
+    if (cosO <= 0.0) return vec3(0.0);
+    vec2 terms = ggxAlbedoTerms(sqrt(g.alpha), cosO);
+    vec3 dielectricSpec = g.f0 * terms.x + g.f90 * terms.y;
+    vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * g.baseColor + dielectricSpec;
+    vec3 metal = g.baseColor * terms.x + terms.y;
+    vec3 albedo = mix(dielectric, metal, g.metallic);
+    float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
+    if (sheenMax > 0.0) {
+        float e = sheenAlbedo(cosO, g.sheenRoughness);
+        albedo = albedo * clamp(1.0 - sheenMax * e, 0.0, 1.0) + g.sheenColor * e;
+    }
+    if (g.clearcoat > 0.0) {
+        vec2 coat = ggxAlbedoTerms(sqrt(g.clearcoatAlpha), cosO);
+        albedo = albedo * (1.0 - g.clearcoat * coatFresnel(cosO)) + g.clearcoat * (0.04 * coat.x + coat.y);
+    }
+    return albedo;
+}

@@ -1,0 +1,85 @@
+// The drafts in assets/drafts (written by tools/make_drafts): they read without a warning,
+// hold the weave and colours their names promise, and are exactly what woven's writer writes.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <tuple>
+
+#include "image_io.h"
+#include "wif_reader.h"
+#include "wif_test_files.h"
+#include "wif_writer.h"
+
+namespace woven {
+namespace {
+
+Draft readAsset(const std::string& name, std::string* text = nullptr) {
+    const std::string path = std::string(WOVEN_ASSETS_DIR) + "/drafts/" + name;
+    std::vector<std::string> warnings;
+    const Draft draft = readWif(path, warnings);
+    EXPECT_TRUE(warnings.empty()) << name << ": " << (warnings.empty() ? "" : warnings.front());
+    if (text) {
+        std::ifstream in(path, std::ios::binary);
+        *text = std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return draft;
+}
+
+size_t distinctColours(const std::vector<glm::vec3>& colours) {
+    std::set<std::tuple<float, float, float>> distinct;
+    for (const glm::vec3& c : colours) distinct.insert({c.x, c.y, c.z});
+    return distinct.size();
+}
+
+// Warp and weft on top alternately in 2 x 2 blocks shifting by one each pick: 2/2 twill.
+bool isTwoTwoTwill(const std::vector<std::string>& map) {
+    for (size_t V = 0; V < map.size(); ++V)
+        for (size_t U = 0; U < map[V].size(); ++U)
+            if ((map[V][U] == '|') != ((U + 4 - V % 4) % 4 < 2)) return false;
+    return true;
+}
+
+TEST(DraftAssets, HoundstoothIsATwoTwoTwillWithFourAndFourColours) {
+    std::string text;
+    const Draft d = readAsset("houndstooth.wif", &text);
+    EXPECT_EQ(formatWif(d, "houndstooth"), text);
+    EXPECT_EQ(d.shafts, 4);
+    EXPECT_TRUE(d.usesTieup());
+    EXPECT_TRUE(isTwoTwoTwill(test::mapOf(d)));
+    ASSERT_EQ(d.warp.colors.size(), 8u);
+    EXPECT_EQ(distinctColours(d.warp.colors), 2u);
+    for (int e = 0; e < 8; ++e) EXPECT_EQ(d.warp.colors[size_t(e)], d.warp.colors[size_t(e / 4 * 4)]);
+    EXPECT_NE(d.warp.colors[0], d.warp.colors[4]);
+    EXPECT_EQ(d.weft.colors, d.warp.colors);
+}
+
+TEST(DraftAssets, GinghamIsAPlainWeaveInStripesByLiftPlan) {
+    std::string text;
+    const Draft d = readAsset("gingham.wif", &text);
+    EXPECT_EQ(formatWif(d, "gingham"), text);
+    EXPECT_FALSE(d.usesTieup());
+    EXPECT_EQ(d.treadles, 0);
+    const std::vector<std::string> map = test::mapOf(d);
+    for (size_t V = 0; V < map.size(); ++V)
+        for (size_t U = 0; U < map[V].size(); ++U) EXPECT_EQ(map[V][U] == '|', (U + V) % 2 == 0);
+    EXPECT_EQ(distinctColours(d.warp.colors), 2u);
+    EXPECT_EQ(d.weft.colors, d.warp.colors);
+}
+
+TEST(DraftAssets, TwillWithStripesHasThickerStripeThreads) {
+    std::string text;
+    const Draft d = readAsset("twill_stripes.wif", &text);
+    EXPECT_EQ(formatWif(d, "twill_stripes"), text);
+    EXPECT_TRUE(isTwoTwoTwill(test::mapOf(d)));
+    EXPECT_EQ(d.warp.units, LengthUnit::Inches);
+    EXPECT_EQ(distinctColours(d.warp.colors), 3u);
+    EXPECT_EQ(distinctColours(d.weft.colors), 1u);
+    ASSERT_EQ(d.warp.thickness.size(), size_t(d.ends()));
+    for (int e = 0; e < d.ends(); ++e)
+        EXPECT_EQ(d.warp.thickness[size_t(e)] > d.warp.thickness[0], d.warp.colors[size_t(e)] != d.warp.colors[0]) << e;
+}
+
+}  // namespace
+}  // namespace woven
