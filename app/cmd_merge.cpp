@@ -1,7 +1,11 @@
 // `woven merge`: combine EXR renders of disjoint sample ranges of one frame (for example the
-// tasks of a Slurm job array) into the render of their union, weighting each pixel's mean by
-// its sample count N.
+// tasks of a Slurm job array, see `woven submit`) into the render of their union. Each part
+// keeps the exact sums of its samples and its sample range (image_io.h), so the merge is the
+// frame one render of the union gives, bit for bit, and overlaps and gaps are seen.
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "commands.h"
@@ -11,29 +15,101 @@ namespace woven {
 
 namespace {
 
-void runMerge(const std::vector<std::string>& inputs, const std::string& out) {
+struct Part {
+    std::string path;
+    SampleRange samples;
+};
+
+ExrImage readPart(const std::string& path) {
+    ExrImage part = readExr(path);
+    const auto missing = [&](const std::string& what) {
+        return std::invalid_argument(path + ": has no " + what +
+                                     ": merge takes the EXR files of woven render (-o FILE.exr)");
+    };
+    if (part.sampleCount.empty()) throw missing("sample-count channel N");
+    if (part.sampleSums.empty()) throw missing("sample sums (channels sum.R0-sum.B3)");
+    if (!part.samples) throw missing("sample range (attributes wovenFirstSample, wovenSampleCount)");
+    return part;
+}
+
+// Throws when parts (sorted by their first sample) overlap, or fall outside [0, expected).
+void checkDisjoint(const std::vector<Part>& sorted, std::optional<int> expected) {
+    for (size_t i = 1; i < sorted.size(); ++i) {
+        const Part &a = sorted[i - 1], &b = sorted[i];
+        if (b.samples.first < a.samples.end())
+            throw std::invalid_argument(a.path + " (" + describe(a.samples) + ") and " + b.path + " (" +
+                                        describe(b.samples) + ") overlap: samples would count twice");
+    }
+    for (const Part& p : sorted)
+        if (expected && p.samples.end() > *expected)
+            throw std::invalid_argument(p.path + " holds " + describe(p.samples) + ", beyond the " +
+                                        std::to_string(*expected) + " expected");
+}
+
+// The runs of samples that disjoint parts, sorted by their first sample, hold together.
+std::vector<SampleRange> heldRuns(const std::vector<Part>& sorted) {
+    std::vector<SampleRange> runs;
+    for (const Part& p : sorted) {
+        if (!runs.empty() && runs.back().end() == p.samples.first) runs.back().count += p.samples.count;
+        else runs.push_back(p.samples);
+    }
+    return runs;
+}
+
+// The runs of [0, expected) that none of `held` (sorted, disjoint) covers.
+std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int expected) {
+    std::vector<SampleRange> missing;
+    int next = 0;
+    for (const SampleRange& r : held) {
+        if (r.first > next) missing.push_back({next, r.first - next});
+        next = r.end();
+    }
+    if (next < expected) missing.push_back({next, expected - next});
+    return missing;
+}
+
+void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int> expected) {
+    // One part in memory at a time: the sum is added up as they are read, and the ranges are
+    // checked once all are known (a merge with overlapping parts writes nothing).
     ExrImage sum;
+    std::vector<Part> parts;
     for (const std::string& path : inputs) {
-        const ExrImage part = readExr(path);
-        if (part.sampleCount.empty())
-            throw std::invalid_argument(path + ": has no sample-count channel N (render with -o FILE.exr)");
-        if (sum.sampleCount.empty()) {
+        const ExrImage part = readPart(path);
+        if (parts.empty()) {
             sum.image.width = part.image.width;
             sum.image.height = part.image.height;
-            sum.image.pixels.assign(part.image.pixels.size(), glm::vec3(0.0f));
             sum.sampleCount.assign(part.sampleCount.size(), 0.0f);
+            sum.sampleSums.assign(part.sampleSums.size(), ExactSum());
         } else if (part.image.width != sum.image.width || part.image.height != sum.image.height) {
             throw std::invalid_argument(path + ": size differs from " + inputs.front());
         }
-        for (size_t i = 0; i < sum.sampleCount.size(); ++i) {
-            sum.image.pixels[i] += part.image.pixels[i] * part.sampleCount[i];
-            sum.sampleCount[i] += part.sampleCount[i];
-        }
+        for (size_t i = 0; i < sum.sampleCount.size(); ++i) sum.sampleCount[i] += part.sampleCount[i];
+        for (size_t i = 0; i < sum.sampleSums.size(); ++i) sum.sampleSums[i] += part.sampleSums[i];
+        parts.push_back({path, *part.samples});
     }
+    if (parts.empty())
+        throw std::invalid_argument(out + " not written: no part files" +
+                                    (expected ? ", " + describe(SampleRange{0, *expected}) + " missing" : ""));
+    std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.samples.first < b.samples.first; });
+    checkDisjoint(parts, expected);
+    const std::vector<SampleRange> held = heldRuns(parts);
+    const std::vector<SampleRange> missing = expected ? gaps(held, *expected) : std::vector<SampleRange>();
+
+    sum.image.pixels.resize(sum.sampleCount.size());
     for (size_t i = 0; i < sum.sampleCount.size(); ++i)
-        if (sum.sampleCount[i] > 0.0f) sum.image.pixels[i] /= sum.sampleCount[i];
+        for (int c = 0; c < 3; ++c) sum.image.pixels[i][c] = sum.sampleSums[3 * i + size_t(c)].mean(sum.sampleCount[i]);
+    if (held.size() == 1) sum.samples = held.front();
+
+    const std::string partial = partialFrameName(out);
+    if (!missing.empty()) {
+        writeExr(partial, sum, ExrPrecision::Float);
+        throw std::runtime_error(out + " not written: " + describe(missing) + " missing (no part holds them); wrote " +
+                                 partial + " from " + describe(held));
+    }
     writeExr(out, sum, ExrPrecision::Float);
-    std::cerr << "wrote " << out << " (" << inputs.size() << " parts)\n";
+    // A partial frame left by an earlier merge that found parts missing is out of date now.
+    std::filesystem::remove(partial);
+    std::cerr << "wrote " << out << " (" << describe(held) << " from " << parts.size() << " parts)\n";
 }
 
 }  // namespace
@@ -42,12 +118,19 @@ void addMergeCommand(CLI::App& app) {
     struct Options {
         std::vector<std::string> inputs;
         std::string out;
+        std::optional<int> expected;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("merge", "Merge EXR renders of disjoint sample ranges, weighted by sample count");
-    cmd->add_option("inputs", o->inputs, "EXR files written by woven render")->required()->check(CLI::ExistingFile);
+    CLI::App* cmd = app.add_subcommand(
+        "merge", "Merge EXR renders of disjoint sample ranges of one frame into the render of their union, exactly");
+    cmd->add_option("inputs", o->inputs, "EXR files written by woven render")->check(CLI::ExistingFile);
     cmd->add_option("-o,--out", o->out, "merged EXR")->required();
-    cmd->callback([o] { runMerge(o->inputs, o->out); });
+    cmd->add_option("--expect-samples", o->expected,
+                    "the parts must hold samples 0..N-1 of every pixel: when some are missing, OUT is not written, "
+                    "the missing samples are named, the parts there are go to OUT.partial.exr and the exit status "
+                    "is 1")
+        ->check(CLI::PositiveNumber);
+    cmd->callback([o] { runMerge(o->inputs, o->out, o->expected); });
 }
 
 }  // namespace woven

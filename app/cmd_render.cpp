@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "commands.h"
-#include "frame_options.h"
 #include "image_io.h"
 #include "progress_bar.h"
+#include "render_options.h"
 #include "render_job.h"
 #include "scene_loader.h"
 
@@ -17,11 +17,10 @@ namespace woven {
 
 namespace {
 
-struct RenderOptions {
+struct RenderCommand {
     std::string scene, out;
-    FrameOptions frame;
+    RenderOptions options;
     double time = 0.0;
-    int threads = 0;
     int firstSample = 0;
 };
 
@@ -47,12 +46,6 @@ private:
     struct sigaction previous_ {};
 };
 
-// "out.exr" -> "out.partial.exr": an interrupted render never takes the final name.
-std::string partialName(const std::string& path) {
-    const std::filesystem::path p(path);
-    return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
-}
-
 std::string formatSeconds(double seconds) {
     std::ostringstream s;
     s.precision(3);
@@ -70,19 +63,19 @@ std::string progressStatus(const RenderProgress& p, bool timeLimited) {
     return s.str();
 }
 
-int runRender(RenderOptions o) {
+int runRender(RenderCommand o) {
     if (o.out.empty()) o.out = std::filesystem::path(o.scene).stem().string() + ".exr";
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene));
-    applySceneOptions(*scene, o.frame);
+    applySceneOptions(*scene, o.options.frame);
 
-    RenderSettings settings = frameSettings(*scene, o.frame);
+    RenderSettings settings = frameSettings(*scene, o.options.frame);
     const bool timeLimited = o.time > 0.0;
-    const bool sppGiven = o.frame.spp > 0;
+    const bool sppGiven = o.options.frame.spp > 0;
     if (timeLimited && !sppGiven) settings.spp = std::numeric_limits<int>::max() - o.firstSample;
     settings.timeLimit = o.time;
-    settings.threads = o.threads;
+    settings.threads = o.options.threads;
     settings.firstSample = o.firstSample;
 
     RenderJob job(scene, settings);
@@ -103,9 +96,9 @@ int runRender(RenderOptions o) {
         std::cerr << "woven render: interrupted before the first pass finished; nothing written\n";
         return wasInterrupted ? 130 : 1;
     }
-    const std::string path = wasInterrupted ? partialName(o.out) : o.out;
+    const std::string path = wasInterrupted ? partialFrameName(o.out) : o.out;
     const FilmImage film = job.snapshot();
-    writeFrame(path, {film.radiance, film.sampleCount}, o.frame.display);
+    writeFrame(path, {film.radiance, film.sampleCount, film.sampleSums, film.samples}, o.options.frame.display);
     std::cerr << (wasInterrupted ? "interrupted: wrote " : "wrote ") << path << "\n";
     std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp, " << settings.width << "x"
               << settings.height << ", " << formatSeconds(last.elapsed) << ", "
@@ -116,17 +109,16 @@ int runRender(RenderOptions o) {
 }  // namespace
 
 void addRenderCommand(CLI::App& app) {
-    auto o = std::make_shared<RenderOptions>();
+    auto o = std::make_shared<RenderCommand>();
     CLI::App* cmd = app.add_subcommand("render", "Render a final frame of a scene (.gltf, .glb or a woven .json scene file)");
     cmd->add_option("scene", o->scene, "scene file")->required();
-    addFrameOptions(*cmd, o->frame);
+    addRenderOptions(*cmd, o->options);
     cmd->add_option("--time", o->time, "render for this many seconds (stops after the pass that crosses it; "
                                        "without --spp no sample limit)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("-o,--out", o->out,
-                    "output image: .exr (linear float RGB + sample count N) or .png (sRGB, tone-mapped); "
-                    "default: the scene's name with .exr");
-    cmd->add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+                    "output image: .exr (linear float RGB, sample count N, and the exact sample sums and range "
+                    "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
         ->check(CLI::NonNegativeNumber);

@@ -10,5 +10,6 @@ void addPreviewCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addConvergeCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
+void addSubmitCommand(CLI::App& app);  // docs/CLUSTER.md
 
 }  // namespace woven

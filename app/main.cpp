@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     woven::addRenderCommand(app);
     woven::addConvergeCommand(app);
     woven::addMergeCommand(app);
+    woven::addSubmitCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -7,6 +7,7 @@ packages=(
   libembree-dev libtinygltf-dev libtinyexr-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   libgtest-dev libbenchmark-dev xvfb xauth gnuplot-nox
+  slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

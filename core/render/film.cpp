@@ -21,18 +21,18 @@ std::vector<glm::vec3> PassImage::combined() const {
 }
 
 Film::Film(int width, int height)
-    : width_(width), height_(height), sum_(size_t(width) * height, glm::dvec3(0.0)),
-      splat_(size_t(width) * height, glm::dvec3(0.0)), count_(size_t(width) * height, 0.0f) {}
+    : width_(width), height_(height), sum_(3 * size_t(width) * height), count_(size_t(width) * height, 0.0f) {}
 
 void Film::addPass(const PassImage& pass) {
-    for (size_t i = 0; i < sum_.size(); ++i) {
-        sum_[i] += glm::dvec3(pass.radiance[i]);
+    for (size_t i = 0; i < count_.size(); ++i) {
+        for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
         count_[i] += 1.0f;
     }
     for (const auto& splats : pass.tileSplats)
         for (const Splat& s : splats) {
             const int i = pixelIndex(s.pRaster, width_, height_);
-            if (i >= 0) splat_[size_t(i)] += glm::dvec3(s.L);
+            if (i >= 0)
+                for (int c = 0; c < 3; ++c) sum_[3 * size_t(i) + size_t(c)].add(s.L[c]);
         }
     ++passes_;
 }
@@ -41,10 +41,11 @@ FilmImage Film::image() const {
     FilmImage out;
     out.radiance.width = width_;
     out.radiance.height = height_;
-    out.radiance.pixels.assign(sum_.size(), glm::vec3(0.0f));
+    out.radiance.pixels.resize(count_.size());
     out.sampleCount = count_;
-    for (size_t i = 0; i < sum_.size(); ++i)
-        if (count_[i] > 0.0f) out.radiance.pixels[i] = glm::vec3((sum_[i] + splat_[i]) / double(count_[i]));
+    out.sampleSums = sum_;
+    for (size_t i = 0; i < count_.size(); ++i)
+        for (int c = 0; c < 3; ++c) out.radiance.pixels[i][c] = sum_[3 * i + size_t(c)].mean(count_[i]);
     return out;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The film of a final frame: per pixel the sum of its camera samples and their count, plus the
-// splat buffer that BDPT's light paths seen by the camera (t = 1) land in. Filled one pass (one
-// sample per pixel) at a time, always in the same order, so the image is a pure function of the
-// passes it holds, whatever threads rendered them.
+// The film of a final frame: per pixel the sum of its camera samples and of the splats that
+// BDPT's light paths seen by the camera (t = 1) land in, and the count of passes (one sample per
+// pixel each). The sums are exact (ExactSum), so the image is a pure function of the samples it
+// holds: whatever threads rendered them, in whatever order, and the merge of renders of disjoint
+// sample ranges gives the same image bit for bit.
 #include <vector>
 
 #include "integrator.h"
@@ -28,15 +29,15 @@ public:
     Film(int width, int height);
 
     void addPass(const PassImage& pass);
-    // Mean radiance: sum / count plus the splats divided by the number of passes (pbrt-v3 scales
-    // its splat buffer by 1 / spp), which equals every pixel's count.
+    // Mean radiance: (samples + splats) / count. pbrt-v3 scales its splat buffer by 1 / spp, which
+    // is the same: every pixel's count is the number of passes. `samples` is left empty: the film
+    // does not know which sample indices its passes were.
     FilmImage image() const;
     int passes() const { return passes_; }
 
 private:
     int width_, height_, passes_ = 0;
-    // Double sums: thousands of passes and merges of sample ranges stay exact to float precision.
-    std::vector<glm::dvec3> sum_, splat_;
+    std::vector<ExactSum> sum_;  // R, G, B per pixel
     std::vector<float> count_;
 };
 

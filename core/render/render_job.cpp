@@ -211,7 +211,9 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
 
 FilmImage RenderJob::snapshot() const {
     std::lock_guard<std::mutex> lock(impl_->filmMutex);
-    return impl_->film.image();
+    FilmImage image = impl_->film.image();
+    image.samples = {impl_->settings.firstSample, impl_->film.passes()};
+    return image;
 }
 
 const std::string& RenderJob::integratorName() const { return impl_->integratorName; }

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "exact_sum.h"
+#include "sample_range.h"
 #include "scene_description.h"
 
 namespace woven {
@@ -37,10 +39,13 @@ struct RenderProgress {
     double raysPerSecond = 0.0;
 };
 
-// Mean radiance and sample count per pixel: what an EXR keeps so renders can be merged.
+// Mean radiance and sample count per pixel, and what an EXR keeps so that renders of disjoint
+// sample ranges merge exactly (image_io.h): the exact sums and the sample range.
 struct FilmImage {
     Image radiance;          // linear RGB mean
     std::vector<float> sampleCount;  // per pixel
+    std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
+    SampleRange samples{};
 };
 
 class RenderJob {

@@ -49,6 +49,55 @@ std::string takeExrError(const char* err, int code) {
     return message;
 }
 
+// The sum channels' names, in the order ExactSum::words() gives them, R, G, B.
+std::string sumChannelName(int rgb, int word) {
+    return std::string("sum.") + "RGB"[rgb] + std::to_string(word);
+}
+
+// Fills `sums` from channels sum.R0-sum.B3 when the file has them; returns the problem, if any.
+template <typename PlaneLookup>
+std::string readSampleSums(const PlaneLookup& plane, size_t pixels, std::vector<ExactSum>* sums) {
+    const uint32_t* words[3][4];
+    int found = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int w = 0; w < 4; ++w) {
+            words[c][w] = reinterpret_cast<const uint32_t*>(plane(sumChannelName(c, w), TINYEXR_PIXELTYPE_UINT));
+            found += words[c][w] != nullptr;
+        }
+    if (found == 0) return "";
+    if (found != 12) return "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing";
+    sums->resize(3 * pixels);
+    for (size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 3; ++c)
+            (*sums)[3 * i + size_t(c)] =
+                ExactSum::fromWords({words[c][0][i], words[c][1][i], words[c][2][i], words[c][3][i]});
+    return "";
+}
+
+const char* const kFirstSampleAttribute = "wovenFirstSample";
+const char* const kSampleCountAttribute = "wovenSampleCount";
+
+std::string readSampleRange(const EXRHeader& header, std::optional<SampleRange>* samples) {
+    std::optional<int> first, count;
+    for (int a = 0; a < header.num_custom_attributes; ++a) {
+        const EXRAttribute& attribute = header.custom_attributes[a];
+        std::optional<int>* target = std::strcmp(attribute.name, kFirstSampleAttribute) == 0   ? &first
+                                     : std::strcmp(attribute.name, kSampleCountAttribute) == 0 ? &count
+                                                                                                : nullptr;
+        if (!target) continue;
+        if (std::strcmp(attribute.type, "int") != 0 || attribute.size != 4)
+            return std::string("attribute ") + attribute.name + " is not an int";
+        int32_t value;
+        std::memcpy(&value, attribute.value, 4);  // OpenEXR is little-endian, as are woven's targets
+        *target = value;
+    }
+    if (first.has_value() != count.has_value())
+        return std::string("has only one of the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute;
+    if (first && (*first < 0 || *count < 0)) return "has a negative sample range";
+    if (first) *samples = SampleRange{*first, *count};
+    return "";
+}
+
 float toneMap(float c, ToneMap curve) {
     switch (curve) {
         case ToneMap::Clamp: return c;
@@ -161,12 +210,13 @@ ExrImage readExr(const std::string& path) {
     ExrImage result;
     std::string problem;
     if (!loaded.images) problem = "tiled OpenEXR files are not supported";
-    const auto channel = [&](const char* name) -> const float* {
+    const auto plane = [&](const std::string& name, int type) -> const unsigned char* {
         for (int c = 0; c < header.num_channels; ++c)
-            if (std::strcmp(header.channels[c].name, name) == 0 &&
-                header.requested_pixel_types[c] == TINYEXR_PIXELTYPE_FLOAT)
-                return reinterpret_cast<const float*>(loaded.images[c]);
+            if (header.channels[c].name == name && header.requested_pixel_types[c] == type) return loaded.images[c];
         return nullptr;
+    };
+    const auto channel = [&](const char* name) {
+        return reinterpret_cast<const float*>(plane(name, TINYEXR_PIXELTYPE_FLOAT));
     };
     if (problem.empty()) {
         const float* r = channel("R");
@@ -182,6 +232,8 @@ ExrImage readExr(const std::string& path) {
             image.pixels.resize(size_t(image.width) * image.height);
             for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = {r[i], g[i], b[i]};
             if (const float* n = channel("N")) result.sampleCount.assign(n, n + image.pixels.size());
+            problem = readSampleSums(plane, image.pixels.size(), &result.sampleSums);
+            if (problem.empty()) problem = readSampleRange(header, &result.samples);
         }
     }
     FreeEXRImage(&loaded);
@@ -243,12 +295,31 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         names.insert(names.begin() + 2, "N");
         requested.insert(requested.begin() + 2, TINYEXR_PIXELTYPE_FLOAT);
     }
-    const int channels = int(planes.size());
-    std::vector<unsigned char*> pointers(channels);
+    std::vector<int> inputTypes(planes.size(), TINYEXR_PIXELTYPE_FLOAT);
+    std::vector<unsigned char*> pointers;
+    for (std::vector<float>& p : planes) pointers.push_back(reinterpret_cast<unsigned char*>(p.data()));
+    // After R in the alphabet: sum.B0 ... sum.R3.
+    std::vector<std::vector<uint32_t>> sumPlanes;
+    if (!exr.sampleSums.empty()) {
+        if (exr.sampleSums.size() != 3 * count) fail(path, "the sample sums do not match the image size");
+        for (int c : {2, 1, 0}) {
+            std::vector<std::vector<uint32_t>> words(4, std::vector<uint32_t>(count));
+            for (size_t i = 0; i < count; ++i) {
+                const std::array<uint32_t, 4> w = exr.sampleSums[3 * i + size_t(c)].words();
+                for (size_t k = 0; k < 4; ++k) words[k][i] = w[k];
+            }
+            for (int k = 0; k < 4; ++k) {
+                sumPlanes.push_back(std::move(words[size_t(k)]));
+                names.push_back(sumChannelName(c, k));
+                requested.push_back(TINYEXR_PIXELTYPE_UINT);
+                inputTypes.push_back(TINYEXR_PIXELTYPE_UINT);
+            }
+        }
+        for (std::vector<uint32_t>& p : sumPlanes) pointers.push_back(reinterpret_cast<unsigned char*>(p.data()));
+    }
+    const int channels = int(pointers.size());
     std::vector<EXRChannelInfo> infos(channels);
-    std::vector<int> inputTypes(channels, TINYEXR_PIXELTYPE_FLOAT);
     for (int c = 0; c < channels; ++c) {
-        pointers[c] = reinterpret_cast<unsigned char*>(planes[c].data());
         std::memset(&infos[c], 0, sizeof(EXRChannelInfo));
         std::strncpy(infos[c].name, names[c].c_str(), sizeof(infos[c].name) - 1);
     }
@@ -267,6 +338,22 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     header.pixel_types = inputTypes.data();
     header.requested_pixel_types = requested.data();
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    int32_t rangeValues[2] = {0, 0};
+    EXRAttribute rangeAttributes[2];
+    if (exr.samples) {
+        rangeValues[0] = exr.samples->first;
+        rangeValues[1] = exr.samples->count;
+        const char* const attributeNames[2] = {kFirstSampleAttribute, kSampleCountAttribute};
+        for (int a = 0; a < 2; ++a) {
+            std::memset(&rangeAttributes[a], 0, sizeof(EXRAttribute));
+            std::strncpy(rangeAttributes[a].name, attributeNames[a], sizeof(rangeAttributes[a].name) - 1);
+            std::strncpy(rangeAttributes[a].type, "int", sizeof(rangeAttributes[a].type) - 1);
+            rangeAttributes[a].value = reinterpret_cast<unsigned char*>(&rangeValues[a]);
+            rangeAttributes[a].size = 4;
+        }
+        header.custom_attributes = rangeAttributes;
+        header.num_custom_attributes = 2;
+    }
 
     writeFileAtomically(path, [&](const std::string& tmp) {
         const char* err = nullptr;
@@ -287,6 +374,11 @@ void checkFrameFileName(const std::string& path) {
     const std::string extension = lowerExtension(path);
     if (extension != ".exr" && extension != ".png")
         fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
+}
+
+std::string partialFrameName(const std::string& path) {
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
 }
 
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png) {

@@ -2,10 +2,13 @@
 // Reading and writing woven::Image: PNG/JPEG/HDR/EXR in, PNG (display-ready) and EXR (linear,
 // with a per-pixel sample count so renders of disjoint sample ranges can be merged) out.
 // Every failure throws ImageError naming the file; every write is atomic (atomic_file.h).
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "exact_sum.h"
+#include "sample_range.h"
 #include "scene_description.h"
 
 namespace woven {
@@ -46,15 +49,22 @@ struct DisplayTransform {
 glm::u8vec3 displayColor(const glm::vec3& linear, const DisplayTransform& transform);
 void writePng(const std::string& path, const Image& image, const DisplayTransform& transform = {});
 
-// A linear image with, optionally, how many samples each pixel's value is the mean of.
+// A linear image with, optionally, how many samples each pixel's value is the mean of, and what
+// a render keeps so that renders of disjoint sample ranges merge exactly: the exact sums of the
+// samples and which samples they are.
 struct ExrImage {
     Image image;
-    std::vector<float> sampleCount;  // empty, or one per pixel (channel "N")
+    std::vector<float> sampleCount;        // empty, or one per pixel (channel "N")
+    std::vector<ExactSum> sampleSums{};    // empty, or three per pixel: R, G, B
+    std::optional<SampleRange> samples{};  // the same for every pixel
 };
 enum class ExrPrecision { Half, Float };
 
 // Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
-// float, exact for counts below 2^24), ZIP-compressed.
+// float, exact for counts below 2^24), ZIP-compressed. Sample sums go to 32-bit unsigned
+// channels sum.B0-sum.B3, sum.G0-sum.G3, sum.R0-sum.R3 (ExactSum::words(), least significant
+// first), the sample range to int attributes wovenFirstSample and wovenSampleCount; other tools
+// read R, G, B (and N) and ignore the rest.
 void writeExr(const std::string& path, const ExrImage& exr,
               ExrPrecision precision = ExrPrecision::Half);
 ExrImage readExr(const std::string& path);
@@ -64,6 +74,9 @@ ExrImage readExr(const std::string& path);
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
 // Throws the ImageError writeFrame would for `path`'s extension: check before a long render.
 void checkFrameFileName(const std::string& path);
+// "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
+// a finished one.
+std::string partialFrameName(const std::string& path);
 
 // The sRGB transfer functions (IEC 61966-2-1), on one channel.
 float srgbToLinear(float encoded);

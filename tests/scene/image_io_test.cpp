@@ -157,6 +157,36 @@ TEST(Exr, FloatRoundTripIsExactAndKeepsTheSampleCount) {
     EXPECT_EQ(back.sampleCount, exr.sampleCount);
 }
 
+TEST(Exr, KeepsExactSampleSumsAndTheSampleRange) {
+    TempDir dir;
+    ExrImage exr;
+    exr.image = gradient(6, 4);
+    exr.sampleCount.assign(24, 5.0f);
+    for (size_t i = 0; i < 3 * 24; ++i) {
+        ExactSum sum;
+        sum.add(float(i) * 0.37f - 3.0f);
+        sum.add(1e-9f * float(i));
+        exr.sampleSums.push_back(sum);
+    }
+    exr.samples = SampleRange{32, 5};
+    writeExr(dir.file("s.exr"), exr, ExrPrecision::Float);
+    const ExrImage back = readExr(dir.file("s.exr"));
+    EXPECT_EQ(back.image.pixels, exr.image.pixels);
+    EXPECT_EQ(back.sampleCount, exr.sampleCount);
+    EXPECT_EQ(back.sampleSums, exr.sampleSums);
+    ASSERT_TRUE(back.samples);
+    EXPECT_EQ(back.samples->first, 32);
+    EXPECT_EQ(back.samples->count, 5);
+
+    // Without them, a file reads back without them.
+    exr.sampleSums.clear();
+    exr.samples.reset();
+    writeExr(dir.file("plain.exr"), exr, ExrPrecision::Float);
+    const ExrImage plain = readExr(dir.file("plain.exr"));
+    EXPECT_TRUE(plain.sampleSums.empty());
+    EXPECT_FALSE(plain.samples);
+}
+
 TEST(Exr, HalfRoundTripIsWithinHalfPrecision) {
     TempDir dir;
     ExrImage exr;

@@ -1,0 +1,98 @@
+// ExactSum: the same samples give the same sum in any order and any grouping (what makes a
+// merge of sample ranges equal one render of their union), and its words round-trip.
+#include "exact_sum.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace woven {
+namespace {
+
+// Radiance-like samples over 20 orders of magnitude, where float and double sums depend on order.
+std::vector<float> wideSamples(int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> exponent(-12.0f, 8.0f), sign(0.0f, 1.0f);
+    std::vector<float> samples;
+    for (int i = 0; i < n; ++i) samples.push_back(std::pow(10.0f, exponent(rng)) * (sign(rng) < 0.05f ? -1.0f : 1.0f));
+    return samples;
+}
+
+ExactSum sumOf(const std::vector<float>& samples, size_t begin, size_t end) {
+    ExactSum sum;
+    for (size_t i = begin; i < end; ++i) sum.add(samples[i]);
+    return sum;
+}
+
+TEST(ExactSum, OrderAndGroupingDoNotMatter) {
+    std::vector<float> samples = wideSamples(5000, 1);
+    const ExactSum inOrder = sumOf(samples, 0, samples.size());
+    // The double sums in the two orders differ: what the old film and merge saw.
+    double forward = 0.0, backward = 0.0;
+    for (float s : samples) forward += s;
+    for (auto it = samples.rbegin(); it != samples.rend(); ++it) backward += *it;
+    EXPECT_NE(forward, backward);
+
+    ExactSum ranges = sumOf(samples, 2000, 5000);
+    ranges += sumOf(samples, 0, 700);
+    ranges += sumOf(samples, 700, 2000);
+    EXPECT_EQ(ranges, inOrder);
+
+    std::shuffle(samples.begin(), samples.end(), std::mt19937(2));
+    EXPECT_EQ(sumOf(samples, 0, samples.size()), inOrder);
+    EXPECT_EQ(sumOf(samples, 0, samples.size()).mean(5000.0f), inOrder.mean(5000.0f));
+}
+
+TEST(ExactSum, MeanIsTheSumOverTheCountToFloatPrecision) {
+    const std::vector<float> samples = wideSamples(1000, 3);
+    long double exact = 0.0L;
+    for (float s : samples) exact += s;
+    const float mean = sumOf(samples, 0, samples.size()).mean(1000.0f);
+    EXPECT_NEAR(mean, float(exact / 1000.0L), std::abs(float(exact / 1000.0L)) * 1e-6f);
+
+    ExactSum small;
+    for (int i = 0; i < 3; ++i) small.add(0.1f);
+    EXPECT_EQ(small.mean(3.0f), 0.1f);
+    EXPECT_EQ(ExactSum().mean(0.0f), 0.0f);
+    EXPECT_EQ(small.mean(0.0f), 0.0f);
+}
+
+TEST(ExactSum, NonFiniteSamplesAddNothingAndHugeOnesAreClamped) {
+    ExactSum sum;
+    sum.add(2.0f);
+    sum.add(std::numeric_limits<float>::quiet_NaN());
+    sum.add(std::numeric_limits<float>::infinity());
+    EXPECT_EQ(sum.mean(1.0f), 2.0f);
+
+    ExactSum huge;
+    huge.add(1e30f);
+    EXPECT_EQ(huge.mean(1.0f), 4294967296.0f);
+    // 2^35 samples of the clamped size still fit: 2^16 of them certainly add up exactly.
+    ExactSum many;
+    for (int i = 0; i < 65536; ++i) many.add(-1e30f);
+    EXPECT_EQ(many.mean(65536.0f), -4294967296.0f);
+}
+
+TEST(ExactSum, WordsRoundTripNegativeAndPositiveSums) {
+    for (float value : {0.0f, 1.0f, -1.0f, 3.5e-12f, -123456.789f, 4e9f}) {
+        ExactSum sum;
+        sum.add(value);
+        sum.add(value);
+        const ExactSum back = ExactSum::fromWords(sum.words());
+        EXPECT_EQ(back, sum) << value;
+        EXPECT_EQ(back.mean(2.0f), sum.mean(2.0f)) << value;
+    }
+    ExactSum one;
+    one.add(1.0f);  // 2^60 units: bit 28 of the second word
+    EXPECT_EQ(one.words(), (std::array<uint32_t, 4>{0u, 1u << 28, 0u, 0u}));
+    ExactSum minusOne;
+    minusOne.add(-1.0f);  // two's complement
+    EXPECT_EQ(minusOne.words(), (std::array<uint32_t, 4>{0u, 0xF0000000u, 0xFFFFFFFFu, 0xFFFFFFFFu}));
+}
+
+}  // namespace
+}  // namespace woven
