@@ -173,7 +173,7 @@ TEST(SubmitCommand, BadRequestsFailBeforeAnythingIsSubmitted) {
     fails({"submit", scene, "--frames", "1..3", "--tasks", "2", "-o", dir.file("f_%d.exr")}, "has no frame number field");
     fails({"submit", scene, "--frames", "3..1", "--tasks", "2", "-o", dir.file("f_%d.exr")}, "expected A..B");
     fails({"submit", dir.file("missing.json"), "--tasks", "2", "-o", out}, "missing.json: no such scene file");
-    fails({"submit", scene, "--tasks", "2", "--woven", "Nope={}", "-o", out}, "no material named 'Nope'");
+    fails({"submit", scene, "--tasks", "2", "--woven", "Nope={}", "-o", out}, "'Nope' names nothing");
     fails({"submit", scene, "--tasks", "2", "--first-sample", "3", "-o", out}, "--first-sample");
     // Without sbatch on PATH, nothing to submit with: a clear error.
     const Result noSlurm = shell("PATH=/nonexistent " + shellCommand({WOVEN_BINARY, "submit", scene, "--tasks", "2", "-o", out}));
