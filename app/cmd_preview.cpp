@@ -49,7 +49,7 @@ void runHeadless(const PreviewCommandOptions& o) {
         render.wait();
         if (!render.error().empty()) throw std::runtime_error(render.error());
         const FilmImage film = *render.latest();
-        writeFrame(o.screenshot, {film.radiance, film.sampleCount}, o.frame.display);
+        writeFrame(o.screenshot, film.exr(), o.frame.display);
         return;
     }
     auto gl = HeadlessGl::create();

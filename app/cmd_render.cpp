@@ -98,7 +98,7 @@ int runRender(RenderCommand o) {
     }
     const std::string path = wasInterrupted ? partialFrameName(o.out) : o.out;
     const FilmImage film = job.snapshot();
-    writeFrame(path, {film.radiance, film.sampleCount, film.sampleSums, film.samples}, o.options.frame.display);
+    writeFrame(path, film.exr(), o.options.frame.display);
     std::cerr << (wasInterrupted ? "interrupted: wrote " : "wrote ") << path << "\n";
     std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp, " << settings.width << "x"
               << settings.height << ", " << formatSeconds(last.elapsed) << ", "

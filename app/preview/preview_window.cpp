@@ -420,7 +420,7 @@ void PreviewWindow::drawRenderControls() {
         const size_t dot = path.find_last_of('.');
         path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
         try {
-            writeFrame(path, {finalImage_->radiance, finalImage_->sampleCount}, display_);
+            writeFrame(path, finalImage_->exr(), display_);
             status_ = "saved " + path;
         } catch (const std::exception& e) {
             status_ = e.what();

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "exact_sum.h"
+#include "image_io.h"
 #include "sample_range.h"
 #include "scene_description.h"
 
@@ -46,6 +47,9 @@ struct FilmImage {
     std::vector<float> sampleCount;  // per pixel
     std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
     SampleRange samples{};
+
+    // As a frame file keeps it (writeFrame): everything `woven merge` needs.
+    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples}; }
 };
 
 class RenderJob {
