@@ -9,26 +9,13 @@
 #include "temp_dir.h"
 #include "wif_test_files.h"
 
+#include "../common/run_woven.h"
+
 namespace woven {
 namespace {
 
-struct RunResult {
-    std::string out;
-    int exitCode;
-};
-
-// Runs `woven <args>`; `args` may redirect stderr.
-RunResult runWoven(const std::string& args) {
-    const std::string command = std::string("'") + WOVEN_EXECUTABLE + "' " + args;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {"", -1};
-    std::string out;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    const int status = pclose(pipe);
-    return {out, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
-}
+using test::RunResult;
+using test::runWoven;
 
 std::string joined(const std::vector<std::string>& rows) {
     std::string s;

@@ -16,25 +16,13 @@
 
 #include "reference_brdf.h"
 
+#include "../common/run_woven.h"
+
 namespace woven {
 namespace {
 
-struct RunResult {
-    std::string out;
-    int exitCode;
-};
-
-RunResult runWoven(const std::string& args) {
-    const std::string command = std::string("'") + WOVEN_EXECUTABLE + "' " + args;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {"", -1};
-    std::string out;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    const int status = pclose(pipe);
-    return {out, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
-}
+using test::RunResult;
+using test::runWoven;
 
 std::string tempPath(const std::string& name) {
     return ::testing::TempDir() + "woven_test_cli_" + std::to_string(::getpid()) + "_" + name;

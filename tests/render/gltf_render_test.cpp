@@ -17,6 +17,7 @@ namespace woven {
 namespace {
 
 using test::quad;
+using test::render;
 using test::sceneWith;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -51,13 +52,6 @@ Mesh uvSphere(float radius, int rings, int segments, int material) {
         }
     m.material = material;
     return m;
-}
-
-FilmImage render(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
-    RenderJob job(std::move(scene), settings);
-    std::atomic<bool> cancel{false};
-    job.run(cancel);
-    return job.snapshot();
 }
 
 Camera lookingDown(float height, float yfov) {

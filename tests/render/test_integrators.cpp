@@ -18,6 +18,7 @@ namespace woven {
 namespace {
 
 using test::quad;
+using test::render;
 using test::sceneWith;
 
 constexpr float kYfov = 0.8f;
@@ -104,13 +105,6 @@ Albedo referenceAlbedo(const test::ReferenceAS& lobe, double cosThetaO) {
     a.diffuse *= dOmega;
     a.specular *= dOmega;
     return a;
-}
-
-FilmImage render(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
-    RenderJob job(std::move(scene), settings);
-    std::atomic<bool> cancel{false};
-    job.run(cancel);
-    return job.snapshot();
 }
 
 // Compares a render with a known image block by block: the mean residual of each block must lie

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <atomic>
+
+#include "render_job.h"
 #include "scene_description.h"
 
 namespace woven::test {
@@ -44,6 +47,14 @@ inline std::shared_ptr<SceneDescription> sceneWith(std::vector<Mesh> meshes, std
     scene->meshes = std::move(meshes);
     scene->materials = std::move(materials);
     return scene;
+}
+
+// The film of a whole render of `scene` with `settings`.
+inline FilmImage render(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
+    RenderJob job(std::move(scene), settings);
+    std::atomic<bool> cancel{false};
+    job.run(cancel);
+    return job.snapshot();
 }
 
 }  // namespace woven::test
