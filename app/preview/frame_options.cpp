@@ -9,6 +9,18 @@
 
 namespace woven {
 
+namespace {
+// Below this the frame is nearly black at exposure 0: the studio environment gives about 3.
+constexpr float kDimIrradiance = 0.05f;
+
+// Emissive surfaces may light the scene (a room's lamp): then the note would be wrong.
+bool hasEmitters(const SceneDescription& scene) {
+    for (const Material& m : scene.materials)
+        if (!m.unlit && m.emission != glm::vec3(0.0f)) return true;
+    return false;
+}
+}  // namespace
+
 void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--width", o.width, "image width (default: the scene's, else 640)")->check(CLI::Range(1, 1 << 15));
     command.add_option("--height", o.height, "image height (default: the scene's, else 480)")->check(CLI::Range(1, 1 << 15));
@@ -38,10 +50,16 @@ void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
     for (const std::string& option : options.woven) assignments.push_back(parseWovenOption(scene, option));
     if (!assignments.empty()) assignWoven(scene, assignments);
     // An --environment given is the user's choice, even a black one.
-    if (options.environment.empty() && lightByDefault(scene))
+    if (options.environment.empty() && lightByDefault(scene)) {
         std::cerr << "note: " << scene.source
                   << " has no light source (punctual light or environment): lit by woven's studio environment "
                      "(--environment FILE|GREY to choose)\n";
+    } else if (const float E = punctualAndEnvironmentIrradiance(scene); E < kDimIrradiance && !hasEmitters(scene)) {
+        // glTF lights are photometric: a few lux or candela is far too dim to see (0.004 W/m^2 for
+        // 3 lux), as in Blender. Say so rather than leave a black frame unexplained.
+        std::cerr << "note: " << scene.source << " is lit dimly: its lights and environment give about " << E
+                  << " W/m^2 (" << E * 683.0f << " lux) at its centre; try --environment 1 or --exposure\n";
+    }
 }
 
 RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& o) {

@@ -172,6 +172,9 @@ struct SceneDescription {
     Camera camera;
     bool hasCamera = false;
     RenderHints render;
+    // A woven scene file sets the lighting on purpose (a room lit by its lamp alone): no default
+    // lighting is added to it (scene_lighting.h).
+    bool lightingFromSceneFile = false;
     // What the loader skipped or approximated (also printed on stderr), e.g. line primitives,
     // dropped degenerate triangles.
     std::vector<std::string> warnings;

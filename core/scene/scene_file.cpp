@@ -35,6 +35,7 @@ public:
             fail("gltf", e.what());
         }
         scene.source = path_;
+        scene.lightingFromSceneFile = true;
         if (root.contains("materials")) readMaterials(root["materials"], scene);
         if (root.contains("environment")) readEnvironment(root["environment"], scene.environment);
         if (root.contains("lights")) readLights(root["lights"], scene.lights);

@@ -7,6 +7,7 @@
 
 #include "environment_mapping.h"
 #include "image_io.h"
+#include "scene_camera.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -75,8 +76,28 @@ Environment studioEnvironment() {
     return env;
 }
 
+float punctualAndEnvironmentIrradiance(const SceneDescription& scene) {
+    const SceneBox box = sceneBounds(scene);
+    const glm::vec3 centre = box.centre();
+    float sum = 0.0f;
+    for (const PunctualLight& l : scene.lights) {
+        const float I = luminance(l.intensity);
+        if (l.type == PunctualLight::Type::Directional) sum += I;
+        else sum += I / std::max(glm::dot(l.position - centre, l.position - centre), 1e-6f);
+    }
+    // A uniform environment of radiance L gives pi L on a surface; an image, pi times its mean.
+    const Environment& env = scene.environment;
+    float mean = luminance(env.color);
+    if (env.image && !env.image->pixels.empty()) {
+        double total = 0.0;
+        for (const glm::vec3& p : env.image->pixels) total += luminance(p);
+        mean *= float(total / double(env.image->pixels.size()));
+    }
+    return sum + 3.14159265f * mean;
+}
+
 bool lightByDefault(SceneDescription& scene) {
-    if (hasLightSources(scene)) return false;
+    if (scene.lightingFromSceneFile || hasLightSources(scene)) return false;
     scene.environment = studioEnvironment();
     return true;
 }

@@ -14,10 +14,16 @@ namespace woven {
 // screens, LEDs and signs far more often than the light a scene is meant to be seen by.
 bool hasLightSources(const SceneDescription& scene);
 
+// The irradiance (W/m^2, luminance) the scene's punctual lights and environment give a surface
+// facing each at the centre of the scene's bounds, unoccluded: a scale for telling a scene lit
+// too dimly to see (glTF lights of a few lux or candela, read as the photometric units they are).
+float punctualAndEnvironmentIrradiance(const SceneDescription& scene);
+
 // The built-in studio environment (an equirectangular image, 512 x 256).
 Environment studioEnvironment();
 
-// Lights a scene without light sources with studioEnvironment(); returns whether it did.
+// Lights a scene without light sources with studioEnvironment(), unless a woven scene file set
+// its lighting; returns whether it did.
 bool lightByDefault(SceneDescription& scene);
 
 // --environment's value: an image file (.hdr, .exr; .png/.jpg decoded from sRGB) or a number,

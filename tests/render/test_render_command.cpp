@@ -143,6 +143,28 @@ TEST(RenderCommand, SceneWithoutLightsIsLitByTheStudioEnvironmentAndSaysSo) {
     EXPECT_GT(sum, 0.0);
 }
 
+TEST(RenderCommand, SceneFilesKeepTheirLightingAndDimLightsAreNamed) {
+    test::TempDir dir;
+    writeScene(dir.file("dark.gltf"), false);
+    // A scene file says how its scene is lit: no studio is added to it.
+    std::ofstream(dir.file("dark.json")) << "{\"gltf\": \"dark.gltf\"}";
+    const Result file = runWoven({"render", dir.file("dark.json"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
+    expectFailure(file, "dark.json", "scene has no lights", dir);
+    // A 3 lux sun, as glTF files from other tools often carry: rendered, and named as dim.
+    test::GltfBuilder b;
+    b.useExtension("KHR_lights_punctual");
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}, {"intensity", 3}}};
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}}})}}),
+                b.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}})});
+    b.writeGltf(dir.file("dim.gltf"));
+    const Result dim = runWoven({"render", dir.file("dim.gltf"), "--spp", "1", "--width", "8", "--height", "6",
+                                 "--out", dir.file("dim.exr")}, dir);
+    ASSERT_EQ(dim.exitCode, 0) << dim.err;
+    EXPECT_NE(dim.err.find("dim.gltf is lit dimly"), std::string::npos) << dim.err;
+    EXPECT_NE(dim.err.find("(3 lux)"), std::string::npos) << dim.err;
+}
+
 TEST(RenderCommand, EnvironmentOptionLightsAnyScene) {
     test::TempDir dir;
     writeScene(dir.file("dark.gltf"), false);
