@@ -56,7 +56,10 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
         if (reflection) f += sheen_.eval(wo, wi);
     }
     if (clearcoat_.active()) {
-        f *= clearcoat_.baseScale(wo, w);
+        // wi itself, not its mirror w: light from behind a thin wall crosses the coat on that
+        // side, whose normal is -n_c, at |n_c . wi|. With a tilted coat normal the mirror would
+        // make the transmission non-reciprocal.
+        f *= clearcoat_.baseScale(wo, wi);
         if (reflection) f += clearcoat_.eval(wo, wi);
     }
     return f;
