@@ -202,4 +202,26 @@ double compositeGauss(const G& g, double a, double b, int panels) {
     return sum * width;
 }
 
+// Gauss-Legendre of g over [a, b], halving panels until the halves agree with the whole to
+// `tolerance` (absolute): for integrands smooth but for a narrow feature, such as the GGX
+// visibility sqrt(alpha^2 + cos^2) near the horizon at small alpha.
+template <class G>
+double adaptiveGauss(const G& g, double a, double b, double tolerance, int depth = 40) {
+    const auto panel = [&](double lo, double hi) {
+        const GaussRule& rule = gaussRule8();
+        double sum = 0.0;
+        for (size_t i = 0; i < rule.nodes.size(); ++i) sum += rule.weights[i] * g(lo + rule.nodes[i] * (hi - lo));
+        return sum * (hi - lo);
+    };
+    struct Recurse {
+        const decltype(panel)& p;
+        double operator()(double lo, double hi, double whole, double tol, int d) const {
+            const double mid = 0.5 * (lo + hi), left = p(lo, mid), right = p(mid, hi);
+            if (d == 0 || std::abs(left + right - whole) <= tol) return left + right;
+            return (*this)(lo, mid, left, 0.5 * tol, d - 1) + (*this)(mid, hi, right, 0.5 * tol, d - 1);
+        }
+    };
+    return Recurse{panel}(a, b, panel(a, b), tolerance, depth);
+}
+
 }  // namespace woven::test
