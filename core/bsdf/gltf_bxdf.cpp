@@ -113,7 +113,10 @@ std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2&
         wi = sampleCosineHemisphere(u);
     } else {
         const auto coat = clearcoat_.sample(wo, u);
-        if (!coat) return std::nullopt;
+        // A tilted coat normal can reflect below the base's horizon: the coat only reflects,
+        // and pdf() counts it above the surface alone, so such a direction is no sample (it
+        // would pass for a transmitted one, weighted by the transmission's density).
+        if (!coat || coat->z <= 0.0f) return std::nullopt;
         wi = *coat;
     }
     if (wi.z == 0.0f) return std::nullopt;
