@@ -12,8 +12,9 @@
 //  - glTF's fresnel_mix (appendix B, and its own "Coupling Diffuse and Specular Reflection"
 //    says so) weights the diffuse base by 1 - F(V.H) per wi: towards grazing the specular lobe
 //    takes F(wo.n) -> 1 of the light while the diffuse loses only the cosine-weighted mean of
-//    F(V.H), a few percent. A white dielectric reflects up to 1.86 at 89 degrees (printed), and
-//    more than 1 from about 40 degrees on; below 30 degrees it stays <= 1.
+//    F(V.H), a few percent. A white dielectric reflects up to 1.86 at 89 degrees (roughness 0;
+//    1.7 at roughness 0.1, printed), and more than 1 from about 40 degrees on; below 30 degrees
+//    it stays <= 1.
 //  - KHR_materials_sheen's Charlie sheen with Conty-Kulla's visibility has E > 1 at grazing
 //    angles for sheen roughness below ~0.2 (SheenAlbedoTable), and the bilinear albedo lookup
 //    underestimates E by up to 0.06 below cos theta = 1/31, so the albedo scaling leaves a

@@ -76,6 +76,13 @@ std::vector<Case> cases() {
         m.clearcoatRoughness = 0.4;
         m.clearcoatNormal = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
     });
+    add("clearcoat (tilted normal) over transmission", [](Material& m) {
+        m.roughness = 0.6;
+        m.transmission = 0.7;
+        m.clearcoat = 1.0;
+        m.clearcoatRoughness = 0.3;
+        m.clearcoatNormal = glm::normalize(glm::dvec3(-0.2, 0.3, 1.0));
+    });
     add("transmission (rough)", [](Material& m) { m.transmission = 0.8; m.roughness = 0.4; m.transmittance = {0.9, 0.7, 0.5}; });
     add("transmission (smooth)", [](Material& m) { m.transmission = 1.0; m.roughness = 0.1; });
     add("everything", [](Material& m) {
