@@ -103,13 +103,19 @@ float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
 std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
     if (wo.z <= 0.0f) return std::nullopt;
     const LobeChoice c = choose(wo);
+    // The lobes' intervals of uc end at the running sums of their probabilities, which rounding
+    // can leave a hair under 1: a uc past the last of them belongs to the last lobe that can be
+    // chosen, not to the clearcoat's branch whatever its probability (an inactive coat then
+    // gave directions pdf() does not count).
+    const float toCosine = c.specular + c.transmission + c.diffuse + c.sheen;
+    uc = std::min(uc, std::nextafter(toCosine + c.clearcoat, 0.0f));
     glm::vec3 wi;
     if (uc < c.specular + c.transmission) {
         const glm::vec3 h = ggx_.sampleVisibleNormal(wo, u);
         wi = 2.0f * glm::dot(wo, h) * h - wo;
         if (wi.z <= 0.0f) return std::nullopt;
         if (uc >= c.specular) wi = mirrorThroughSurface(wi);
-    } else if (uc < c.specular + c.transmission + c.diffuse + c.sheen) {
+    } else if (uc < toCosine) {
         wi = sampleCosineHemisphere(u);
     } else {
         const auto coat = clearcoat_.sample(wo, u);
