@@ -25,8 +25,12 @@ glm::vec3 ClearcoatLobe::eval(const glm::vec3& woBase, const glm::vec3& wiBase) 
     return glm::vec3(weight_ * coatFresnel(glm::dot(wo, h)) * ggx_.D(h) * ggx_.visibility(wo, wi));
 }
 
-float ClearcoatLobe::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
-    return ggx_.reflectionPdf(frame_.toLocal(wo), frame_.toLocal(wi));
+float ClearcoatLobe::pdf(const glm::vec3& woBase, const glm::vec3& wiBase) const {
+    const glm::vec3 wi = frame_.toLocal(wiBase);
+    // sample() rejects the reflections below the coat's horizon: they have no density. With a
+    // tilted coat normal some of them are above the base's horizon, where GltfBxdf asks.
+    if (wi.z <= 0.0f) return 0.0f;
+    return ggx_.reflectionPdf(frame_.toLocal(woBase), wi);
 }
 
 std::optional<glm::vec3> ClearcoatLobe::sample(const glm::vec3& woBase, const glm::vec2& u) const {

@@ -56,7 +56,10 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
         if (reflection) f += sheen_.eval(wo, wi);
     }
     if (clearcoat_.active()) {
-        f *= clearcoat_.baseScale(wo, w);
+        // wi itself, not its mirror w: light from behind a thin wall crosses the coat on that
+        // side, whose normal is -n_c, at |n_c . wi|. With a tilted coat normal the mirror would
+        // make the transmission non-reciprocal.
+        f *= clearcoat_.baseScale(wo, wi);
         if (reflection) f += clearcoat_.eval(wo, wi);
     }
     return f;
@@ -100,17 +103,26 @@ float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
 std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
     if (wo.z <= 0.0f) return std::nullopt;
     const LobeChoice c = choose(wo);
+    // The lobes' intervals of uc end at the running sums of their probabilities, which rounding
+    // can leave a hair under 1: a uc past the last of them belongs to the last lobe that can be
+    // chosen, not to the clearcoat's branch whatever its probability (an inactive coat then
+    // gave directions pdf() does not count).
+    const float toCosine = c.specular + c.transmission + c.diffuse + c.sheen;
+    uc = std::min(uc, std::nextafter(toCosine + c.clearcoat, 0.0f));
     glm::vec3 wi;
     if (uc < c.specular + c.transmission) {
         const glm::vec3 h = ggx_.sampleVisibleNormal(wo, u);
         wi = 2.0f * glm::dot(wo, h) * h - wo;
         if (wi.z <= 0.0f) return std::nullopt;
         if (uc >= c.specular) wi = mirrorThroughSurface(wi);
-    } else if (uc < c.specular + c.transmission + c.diffuse + c.sheen) {
+    } else if (uc < toCosine) {
         wi = sampleCosineHemisphere(u);
     } else {
         const auto coat = clearcoat_.sample(wo, u);
-        if (!coat) return std::nullopt;
+        // A tilted coat normal can reflect below the base's horizon: the coat only reflects,
+        // and pdf() counts it above the surface alone, so such a direction is no sample (it
+        // would pass for a transmitted one, weighted by the transmission's density).
+        if (!coat || coat->z <= 0.0f) return std::nullopt;
         wi = *coat;
     }
     if (wi.z == 0.0f) return std::nullopt;
