@@ -22,7 +22,8 @@ glm::vec3 ClearcoatLobe::eval(const glm::vec3& woBase, const glm::vec3& wiBase) 
     const float len = glm::length(H);
     if (!(len > 1e-12f)) return glm::vec3(0.0f);
     const glm::vec3 h = H / len;
-    return glm::vec3(weight_ * coatFresnel(glm::dot(wo, h)) * ggx_.D(h) * ggx_.visibility(wo, wi));
+    // wo.h as |wo + wi| / 2, symmetric in the two directions: reciprocal to the last bit.
+    return glm::vec3(weight_ * coatFresnel(0.5f * len) * ggx_.D(h) * ggx_.visibility(wo, wi));
 }
 
 float ClearcoatLobe::pdf(const glm::vec3& woBase, const glm::vec3& wiBase) const {
