@@ -16,6 +16,7 @@ public:
     std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
     bool mayPassThrough(const Mesh& mesh) const override;
     bool passesThrough(const TexCoords& tc, float u) const override;
+    bool passesRandomly() const override { return m_.alphaMode == AlphaMode::Blend; }
     glm::vec3 unlitRadiance(const TexCoords& tc) const override;
 
     // The BSDF's inputs at a point, textures applied (the preview's tests compare with them).

@@ -26,8 +26,10 @@ public:
     // passesThrough() for every candidate hit.
     virtual bool mayPassThrough(const Mesh& mesh) const { return false; }
     // Whether a ray passes through the point; u is a uniform number for stochastic (blended)
-    // transparency, the same for every ray that reaches the point along the same path.
+    // transparency, the same for every ray that reaches the point along the same path, and 0
+    // unless passesRandomly().
     virtual bool passesThrough(const TexCoords& tc, float u) const { return false; }
+    virtual bool passesRandomly() const { return false; }
 
     // Emitted radiance of the front face (and of the back when twoSidedEmission()) at a point;
     // emits() says whether it can be non-zero anywhere, making the surface an area light.

@@ -35,6 +35,7 @@ constexpr float kShadowEpsilon = 1e-4f;
 struct HitFilter {
     const Mesh* mesh;
     const SurfaceMaterial* material;
+    bool random;  // the material's answer depends on a random number (blended alpha)
 };
 
 // A uniform number for stochastic transparency from the ray and the candidate hit: a pure
@@ -59,7 +60,9 @@ void rejectPassThrough(const RTCFilterFunctionNArguments* args) {
         if (args->valid[i] != -1) continue;
         const TexCoords tc = interpolateTexCoords(*filter->mesh, RTCHitN_primID(args->hit, args->N, i),
                                                   RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-        if (filter->material->passesThrough(tc, transparencyRandom(args, i))) args->valid[i] = 0;
+        // The hash costs more than most answers: only blended alpha asks for it.
+        const float u = filter->random ? transparencyRandom(args, i) : 0.0f;
+        if (filter->material->passesThrough(tc, u)) args->valid[i] = 0;
     }
 }
 
@@ -120,7 +123,7 @@ void RenderScene::Impl::buildGeometry() {
         // Only meshes whose material can let rays through pay for the filter.
         const SurfaceMaterial& material = (*materials)[mesh.material];
         if (material.mayPassThrough(mesh)) {
-            hitFilters[m] = HitFilter{&mesh, &material};
+            hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly()};
             rtcSetGeometryUserData(geom, &hitFilters[m]);
             rtcSetGeometryIntersectFilterFunction(geom, rejectPassThrough);
             rtcSetGeometryOccludedFilterFunction(geom, rejectPassThrough);
