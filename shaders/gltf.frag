@@ -39,6 +39,21 @@ vec4 lookup(int i) {
 }
 #endif
 
+// As core's keepReflectionAbove(): a normal map's normal tilted so far that the view's mirror
+// direction falls below the surface is tilted back until it stays `margin` above.
+vec3 keepReflectionAbove(vec3 ng, vec3 wo, vec3 n) {
+    float cosView = dot(wo, ng);
+    float margin = min(0.9 * cosView, 0.01);
+    vec3 r = 2.0 * dot(wo, n) * n - wo;
+    if (dot(r, ng) >= margin) return n;
+    vec3 tangential = r - dot(r, ng) * ng;
+    float len = length(tangential);
+    if (!(len > 1e-12) || !(cosView > 0.0)) return n;
+    vec3 half_ = wo + sqrt(1.0 - margin * margin) * (tangential / len) + margin * ng;
+    float halfLength = length(half_);
+    return halfLength > 1e-12 ? half_ / halfLength : n;
+}
+
 void main() {
     vec3 p = vPosition;
     vec3 wo = normalize(cameraPosition - p);
@@ -121,7 +136,11 @@ void main() {
         if (dot(perturbed, perturbed) > 1e-20) n = normalize(perturbed);
     }
 #endif
-    Frame f = frameFromNormal(backSide ? -n : n);
+    n = backSide ? -n : n;
+#ifdef MAP_NORMAL
+    n = keepReflectionAbove(ng, wo, n);  // ng faces the viewer already
+#endif
+    Frame f = frameFromNormal(n);
     vec3 woLocal = toLocal(f, wo);
     float occlusion = 1.0;
 #ifdef MAP_OCCLUSION

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+
 namespace woven {
 
 namespace {
@@ -10,6 +11,24 @@ namespace {
 glm::vec3 projectOut(const glm::vec3& v, const glm::vec3& n) { return v - glm::dot(v, n) * n; }
 
 bool usableLength(float length) { return length > 1e-12f && std::isfinite(length); }
+
+// A normal map can tilt the shading normal so far that the mirror direction of the view falls
+// below the surface, where no light can come from: the specular highlight turns black. As
+// Cycles does, tilt such a normal back just enough that the mirror direction stays `margin`
+// above the geometric surface (all unit vectors, ng and n on the viewer's side).
+glm::vec3 keepReflectionAbove(const glm::vec3& ng, const glm::vec3& wo, const glm::vec3& n) {
+    const float cosView = glm::dot(wo, ng);
+    const float margin = std::min(0.9f * cosView, 0.01f);
+    const glm::vec3 r = 2.0f * glm::dot(wo, n) * n - wo;
+    if (glm::dot(r, ng) >= margin) return n;
+    const glm::vec3 tangential = r - glm::dot(r, ng) * ng;
+    const float length = glm::length(tangential);
+    if (!usableLength(length) || !(cosView > 0.0f)) return n;
+    const glm::vec3 bent = std::sqrt(1.0f - margin * margin) * (tangential / length) + margin * ng;
+    const glm::vec3 half = wo + bent;
+    const float halfLength = glm::length(half);
+    return usableLength(halfLength) ? half / halfLength : n;
+}
 
 // The attenuation of one crossing of a thin wall: half of the volume's thickness.
 glm::vec3 crossingTransmittance(const TransmissionParams& t, float thickness) {
@@ -94,12 +113,16 @@ glm::vec3 GltfMaterial::shadingNormal(const SurfaceHit& hit) const {
 std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
     if (m_.unlit) return std::nullopt;
     const float side = glm::dot(wo, hit.ng) < 0.0f ? -1.0f : 1.0f;
-    const Frame frame = Frame::fromNormal(side * shadingNormal(hit));
+    const glm::vec3 ng = side * hit.ng;
+    glm::vec3 n = side * shadingNormal(hit);
+    if (normalTexture_) n = keepReflectionAbove(ng, wo, n);
+    const Frame frame = Frame::fromNormal(n);
     GltfBxdfInputs in = inputs(hit.tex);
     if (in.clearcoat > 0.0f) {
         // The coat follows the geometry's normal unless it has a normal map of its own.
-        const glm::vec3 coat = clearcoatNormalTexture_ ? perturbedNormal(clearcoatNormalTexture_, hit) : hit.ns;
-        in.clearcoatNormal = frame.toLocal(side * coat);
+        glm::vec3 coat = side * hit.ns;
+        if (clearcoatNormalTexture_) coat = keepReflectionAbove(ng, wo, side * perturbedNormal(clearcoatNormalTexture_, hit));
+        in.clearcoatNormal = frame.toLocal(coat);
     }
     return Bsdf(frame, Bxdf(GltfBxdf(in)));
 }

@@ -93,6 +93,30 @@ TEST(GltfMaterial, NormalMapTiltsTheNormalInTheTangentFrame) {
     EXPECT_NEAR(f.z, -0.8f, 5e-3f);
 }
 
+// A normal map tilted so far that the mirror direction of a grazing view falls below the
+// surface: the BSDF's normal is tilted back until the mirror direction stays just above it, so
+// the highlight does not turn black (as in Cycles).
+TEST(GltfMaterial, NormalMapNeverSendsTheMirrorDirectionBelowTheSurface) {
+    const auto encode = [](glm::vec3 v) { return glm::u8vec4(glm::round((v + 1.0f) * 0.5f * 255.0f), 255); };
+    Material m;
+    m.metallic = 1.0f;
+    m.roughness = 0.0f;
+    m.normalTexture.image = 0;
+    const std::vector<TextureImage> steep = {oneTexel(encode(glm::normalize(glm::vec3(0.8f, 0.0f, 0.6f))))};
+    const GltfMaterial g(m, steep);
+    // Seen from -x, against the tilt: the mirror about the map's normal would point into the plane.
+    const glm::vec3 wo = glm::normalize(glm::vec3(-0.2f, 0.0f, 1.0f));
+    const auto bsdf = g.bsdf(planeHit(1.0f), wo);
+    ASSERT_TRUE(bsdf);
+    const glm::vec3 n = bsdf->shadingNormal();
+    const glm::vec3 mirror = 2.0f * glm::dot(wo, n) * n - wo;
+    EXPECT_GE(mirror.z, 0.009f);
+    EXPECT_LT(mirror.z, 0.05f);  // tilted back only as far as needed
+    // A gentle view keeps the map's normal as it is.
+    const glm::vec3 above = glm::normalize(glm::vec3(0.5f, 0.0f, 1.0f));
+    EXPECT_NEAR(glm::dot(g.bsdf(planeHit(1.0f), above)->shadingNormal(), g.shadingNormal(planeHit(1.0f))), 1.0f, 1e-5f);
+}
+
 TEST(GltfMaterial, AlphaMaskCutsOutAndBlendPassesInProportion) {
     Material m;
     m.baseColor.a = 0.3f;
