@@ -53,6 +53,13 @@ WovenParams featuresOff() {
     return p;
 }
 
+// The plain weave (1,1,1) with every feature off: the reference a draft is measured against.
+WovenParams plainWeave() {
+    WovenParams p = featuresOff();
+    p.pattern = {1, 1, 1};
+    return p;
+}
+
 WovenParams featuresOn() {
     WovenParams p = featuresOff();
     p.cy = 0.75f;
@@ -102,6 +109,17 @@ void BM_WovenShadeEval(benchmark::State& state, const WovenParams& params) {
     }
 }
 
+// shade() alone: the weave lookup, yarn geometry and frame a shading point costs, without the lobe.
+void BM_WovenShade(benchmark::State& state, const WovenParams& params) {
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(material.shade(hitAt(q.uv[i])));
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
 void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
     const WovenMaterial material(params);
     const Queries& q = queries();
@@ -118,6 +136,8 @@ void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
 
 BENCHMARK(BM_BareEval);
 BENCHMARK(BM_BareSample);
+BENCHMARK_CAPTURE(BM_WovenShade, plain_111, plainWeave());
+BENCHMARK_CAPTURE(BM_WovenShadeEval, plain_111, plainWeave());
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_on, featuresOn());
