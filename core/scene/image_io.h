@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene_description.h"
+#include "srgb.h"  // PNG and JPEG are sRGB-encoded
 
 namespace woven {
 
@@ -64,9 +65,5 @@ ExrImage readExr(const std::string& path);
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
 // Throws the ImageError writeFrame would for `path`'s extension: check before a long render.
 void checkFrameFileName(const std::string& path);
-
-// The sRGB transfer functions (IEC 61966-2-1), on one channel.
-float srgbToLinear(float encoded);
-float linearToSrgb(float linear);
 
 }  // namespace woven

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "image_io.h"
+#include "srgb.h"
 #include "wif_writer.h"
 
 namespace {
