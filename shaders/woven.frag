@@ -1,7 +1,8 @@
 // The woven surface shader: core's WovenMaterial::shade lit by lighting.glsl (gltf.frag draws
 // every other material). Features a material does not use are compiled out by #defines that the
 // C++ side picks from its parameters (woven_gl_material.cpp): WOVEN_NOISE, WOVEN_CRIMP,
-// WOVEN_GAPS (both yarns narrower than their element) and WOVEN_FILTER (the far-field weave
+// WOVEN_GAPS (both yarns narrower than their element), WOVEN_THREADS (per-thread colours, yarns
+// or spacing), WOVEN_SPACING (threads of different widths) and WOVEN_FILTER (the far-field weave
 // filter); PREVIEW_SHADOWS (lighting.glsl).
 in vec3 vPosition;
 in vec3 vNormal;
@@ -54,15 +55,22 @@ vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
 vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
     if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
     bool weft = y.type == WEFT;
+    // The thread's colour and its yarn's lobe and noise (core's WovenMaterial::shade).
+#ifdef WOVEN_THREADS
+    vec3 color = threadTexel(weft ? 1 : 0, y.slot, 0).rgb;
+    vec4 yarn = yarnTexel(y.yarn, 0);
+    float ex = yarn.x, ey = yarn.y, rs = yarn.z, noise = yarnTexel(y.yarn, 1).y;
+#else
     vec3 color = weft ? material.weft_color : material.warp_color;
+    float ex = weft ? material.ex : material.warp_ex, ey = weft ? material.ey : material.warp_ey;
+    float rs = material.rs, noise = material.noise;
+#endif
 #ifdef WOVEN_NOISE
     uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
-    color = clamp(color * (1.0 + material.noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
+    if (noise > 0.0) color = clamp(color * (1.0 + noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
 #endif
     Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
-    Lobe lobe = weft ? Lobe(material.ex, material.ey, material.rs, color)
-                     : Lobe(material.warp_ex, material.warp_ey, material.rs, color);
-    return reflectedLight(f, lobe, p, ng, wo);
+    return reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
 }
 
 #ifdef WOVEN_FILTER
@@ -72,14 +80,22 @@ const int FILTER_SAMPLES = 8;
 // The reflectance averaged over the weave, for pixels that cover several elements: each yarn
 // type weighted by the area it covers, its cross-section sampled uniformly across (crimp and
 // noise average out and are left out). Returns radiance x coverage; `coverage` = the opaque
-// fraction (1 unless gaps are see-through).
+// fraction (1 unless gaps are see-through). Per-thread colours enter as each side's mean colour
+// (exact for the diffuse term); yarn types other than the material's own are not averaged: the
+// lobes are the material's warp and weft (an approximation for drafts whose yarns differ in
+// exponents or c_y; their widths are in the coverage).
 // The loop over lights is outermost, so each light's direction and falloff is computed once for
 // all 2 x FILTER_SAMPLES frames, not once per frame as reflectedLight() would: that halves the
 // default scene's frame time on llvmpipe, with the same result.
 vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out float coverage) {
     vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
-    Lobe weft = Lobe(material.ex, material.ey, material.rs, material.weft_color);
-    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, material.warp_color);
+#ifdef WOVEN_THREADS
+    vec3 weftColor = meanColors[2 * face], warpColor = meanColors[2 * face + 1];
+#else
+    vec3 weftColor = material.weft_color, warpColor = material.warp_color;
+#endif
+    Lobe weft = Lobe(material.ex, material.ey, material.rs, weftColor);
+    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, warpColor);
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     vec3 weftWo[FILTER_SAMPLES], warpWo[FILTER_SAMPLES];
     vec3 sum = vec3(0.0);

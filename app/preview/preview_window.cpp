@@ -245,6 +245,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         ImGui::EndCombo();
     }
     for (const ParamInfo& info : wovenParamTable()) {
+        if (!isNumeric(info.type)) continue;  // the tile and the per-thread lists: the draft view
         char* field = reinterpret_cast<char*>(&p) + info.offset;
         ImGui::PushID(info.name);
         const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
@@ -270,6 +271,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             }
             break;
         }
+        default: break;
         }
         ImGui::PopID();
     }
