@@ -143,6 +143,9 @@ WovenParams paramsFromJson(const nlohmann::json& j, const WovenParams& baseParam
     for (const auto& item : j.items()) {
         bool known = false;
         for (const ParamInfo& info : table) known |= item.key() == info.name;
+        if (!known && (item.key() == "wif" || item.key() == "scale"))
+            fail("'" + item.key() + "' is read where a file can be found: in scene files, --woven and material files"
+                 " (docs/DRAFTS.md)");
         if (!known) fail("unknown woven material field '" + item.key() + "'");
     }
     for (const ParamInfo& info : table) {

@@ -2,8 +2,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <iostream>
+
+#include "material_json.h"
 #include "scene_loader.h"
-#include "woven_params_json.h"
+#include "uv_scale.h"
 
 namespace woven {
 
@@ -16,6 +19,19 @@ std::vector<int> selectMaterials(const SceneDescription& scene, const std::strin
     for (const Material& material : scene.materials) names += (names.empty() ? "'" : ", '") + material.name + "'";
     throw SceneError(scene.source + ": no material named '" + materialName + "' (the scene has " +
                      (names.empty() ? std::string("no materials") : names) + ")");
+}
+
+WovenParams onMaterial(const SceneDescription& scene, int m, const MaterialJson& read) {
+    if (!read.threadsPerCm) return read.params;
+    WovenParams params = read.params;
+    params.repeat = repeatForThreadsPerCm(scene, m, *read.threadsPerCm);
+    try {
+        validate(params);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("'scale': \"draft\" on material '") + scene.materials[size_t(m)].name +
+                                    "' gives " + e.what());
+    }
+    return params;
 }
 
 void makeWoven(SceneDescription& scene, const std::string& materialName, const WovenParams& params) {
@@ -40,13 +56,19 @@ void applyWovenOption(SceneDescription& scene, const std::string& option) {
     } catch (const std::exception& e) {
         throw SceneError(where + ": not valid JSON: " + e.what());
     }
-    WovenParams params;
+    // Every selected material gets the first one's result, but for a draft's scale, which is
+    // measured on each material's own meshes.
+    std::vector<std::string> warnings;
     try {
-        params = paramsFromJson(j, first.woven.value_or(WovenParams{}));
-    } catch (const std::exception& e) {
+        const MaterialJson read = materialFromJson(j, first.woven.value_or(WovenParams{}), "", warnings);
+        for (int m : selectMaterials(scene, name)) scene.materials[size_t(m)].woven = onMaterial(scene, m, read);
+    } catch (const std::exception& e) {  // a bad key (invalid_argument), draft (DraftError) or mesh (SceneError)
         throw SceneError(where + ": " + e.what());
     }
-    makeWoven(scene, name, params);
+    for (const std::string& w : warnings) {
+        scene.warnings.push_back(where + ": " + w);
+        std::cerr << "warning: " << where << ": " << w << "\n";
+    }
 }
 
 }  // namespace woven

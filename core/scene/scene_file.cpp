@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "gltf_loader.h"
@@ -11,7 +12,7 @@
 #include "make_woven.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
-#include "woven_params_json.h"
+
 
 namespace woven {
 
@@ -36,6 +37,7 @@ public:
         }
         scene.source = path_;
         if (root.contains("materials")) readMaterials(root["materials"], scene);
+        scene.warnings.insert(scene.warnings.end(), warnings_.begin(), warnings_.end());
         if (root.contains("environment")) readEnvironment(root["environment"], scene.environment);
         if (root.contains("lights")) readLights(root["lights"], scene.lights);
         if (root.contains("camera")) readCamera(root["camera"], scene);
@@ -46,6 +48,12 @@ public:
 private:
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
         throw SceneError(path_ + ": " + (key.empty() ? "" : key + ": ") + problem);
+    }
+
+    void warn(const std::string& key, const std::string& message) const {
+        const std::string line = path_ + ": " + key + ": " + message;
+        warnings_.push_back(line);
+        std::cerr << "warning: " << line << "\n";
     }
 
     json parse() const {
@@ -125,14 +133,22 @@ private:
                 // selectMaterials names scene.source (= path_) first; say the key instead.
                 fail(where, std::string(e.what()).substr(path_.size() + 2));
             }
+            // Each selected material on top of its own parameters; a draft's warnings once.
+            std::vector<std::string> warnings;
             for (int m : selected) {
-                Material& material = scene.materials[m];
+                std::vector<std::string> materialWarnings;
                 try {
-                    material.woven = paramsFromJson(materials[name], material.woven.value_or(WovenParams{}));
-                } catch (const std::invalid_argument& e) {
+                    Material& material = scene.materials[m];
+                    const MaterialJson read = materialFromJson(materials[name], material.woven.value_or(WovenParams{}),
+                                                               fs::path(path_).parent_path().string(), materialWarnings);
+                    material.woven = onMaterial(scene, m, read);
+                } catch (const std::exception& e) {  // a bad key (invalid_argument), draft (DraftError) or mesh
                     fail(where, e.what());
                 }
+                for (const std::string& w : materialWarnings)
+                    if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
             }
+            for (const std::string& w : warnings) warn(where, w);
         }
     }
 
@@ -228,6 +244,7 @@ private:
     }
 
     std::string path_;
+    mutable std::vector<std::string> warnings_;
 };
 
 }  // namespace
