@@ -25,7 +25,8 @@ uniform ivec2 threadSpaced;  // 1 where that side's threads differ in width
 // face; the rest is gap. They weight the element-averaged reflectance of the weave filter.
 uniform vec4 yarnCoverage;
 #if defined(WOVEN_FILTER) && defined(WOVEN_THREADS)
-// The mean colour of the visible weft and warp, weighted by area: front weft, front warp, back
-// weft, back warp (core's weaveCoverage()).
-uniform vec3 meanColors[4];
+// Per thread slot of the warp and of the weft, mipmapped: (colour x cell width, cell width), so
+// a filtered lookup over a pixel's footprint gives the width-weighted mean colour of the
+// threads it covers.
+uniform sampler1D warpColorTexture, weftColorTexture;
 #endif

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -43,6 +45,38 @@ void uploadBuffer(GLuint buffer, GLuint texture, const std::vector<glm::vec4>& t
     glBindTexture(GL_TEXTURE_BUFFER, texture);
     glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, buffer);
     glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
+
+// The 1D colour track of one side for the weave filter, over one period in mean thread widths
+// (the shader's e / period): per bin (colour x the length of it in the bin, that length), so a
+// filtered lookup is the mean colour over what it covers. A bin per thread for even spacing;
+// for uneven spacing up to 8 bins per mean width, each the threads' colours by their overlap,
+// so wide and narrow threads keep their places. A period longer than the GPU's widest texture
+// gets several threads a bin.
+void uploadColorTrack(GLuint texture, const ThreadLayout& side) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const double period = side.period();
+    const int bins = side.spaced() ? int(std::min(8.0, std::max(1.0, std::floor(maxSize / period))) * period)
+                                   : int(std::min(period, double(maxSize)));
+    const double binsPerWidth = bins / period;
+    std::vector<glm::vec4> texels(size_t(bins), glm::vec4(0.0f));
+    for (int k = 0; k < side.period(); ++k) {
+        // The thread's cell in bin units, spread over the bins it overlaps.
+        const double begin = (side.spaced() ? side.start(k) : k) * binsPerWidth;
+        const double end = begin + (side.spaced() ? side.width(k) : 1.0) * binsPerWidth;
+        for (int b = int(begin); b < bins && b < end; ++b) {
+            const float overlap = float(std::min(end, b + 1.0) - std::max(begin, double(b)));
+            texels[size_t(b)] += glm::vec4(side.color(k) * overlap, overlap);
+        }
+    }
+    glBindTexture(GL_TEXTURE_1D, texture);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA32F, bins, 0, GL_RGBA, GL_FLOAT, texels.data());
+    glGenerateMipmap(GL_TEXTURE_1D);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_1D, 0);
 }
 
 void setNearest(GLenum target) {
@@ -101,13 +135,14 @@ WeaveTextures::WeaveTextures() {
     glGenTextures(1, &floats_);
     glGenTextures(1, &threadTable_);
     glGenTextures(1, &yarnTable_);
+    glGenTextures(2, colorTracks_);
     glGenBuffers(1, &threadBuffer_);
     glGenBuffers(1, &yarnBuffer_);
 }
 
 WeaveTextures::~WeaveTextures() {
-    const GLuint textures[] = {tile_, floats_, threadTable_, yarnTable_};
-    glDeleteTextures(4, textures);
+    const GLuint textures[] = {tile_, floats_, threadTable_, yarnTable_, colorTracks_[0], colorTracks_[1]};
+    glDeleteTextures(6, textures);
     const GLuint buffers[] = {threadBuffer_, yarnBuffer_};
     glDeleteBuffers(2, buffers);
 }
@@ -165,6 +200,7 @@ void WeaveTextures::updateThreads(const Weave& weave) {
         }
         threadPeriod_[s] = side.period();
         threadSpaced_[s] = side.spaced() ? 1 : 0;
+        uploadColorTrack(colorTracks_[s], side);
     }
     uploadBuffer(threadBuffer_, threadTable_, texels);
 }
@@ -190,15 +226,17 @@ void WeaveTextures::bind(const ShaderProgram& program) const {
         glUniform2iv(program.uniform("threadPeriod"), 1, glm::value_ptr(threadPeriod_));
         glUniform2iv(program.uniform("threadSpaced"), 1, glm::value_ptr(threadSpaced_));
     }
+    const GLint warpColors = program.uniform("warpColorTexture");
+    if (warpColors >= 0) {
+        glActiveTexture(GL_TEXTURE6);
+        glBindTexture(GL_TEXTURE_1D, colorTracks_[0]);
+        glUniform1i(warpColors, 6);
+        glActiveTexture(GL_TEXTURE7);
+        glBindTexture(GL_TEXTURE_1D, colorTracks_[1]);
+        glUniform1i(program.uniform("weftColorTexture"), 7);
+    }
     const glm::vec4 coverage(coverage_[0].weft, coverage_[0].warp, coverage_[1].weft, coverage_[1].warp);
     glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(coverage));
-    const GLint meanColors = program.uniform("meanColors");
-    if (meanColors >= 0) {
-        // Per face: weft, warp.
-        const glm::vec3 colors[] = {coverage_[0].weftColor, coverage_[0].warpColor, coverage_[1].weftColor,
-                                    coverage_[1].warpColor};
-        glUniform3fv(meanColors, 4, glm::value_ptr(colors[0]));
-    }
     glActiveTexture(GL_TEXTURE0);
 }
 

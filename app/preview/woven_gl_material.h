@@ -31,8 +31,8 @@ bool readThroughTextures(const ParamInfo& info);
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p);
 
 // The textures of a woven material (shaders/woven_params.glsl): the weave tile, its floats when
-// the crimp needs them, and the threads and yarns of core's Weave; with the far-field weights
-// (weaveCoverage()) of both faces.
+// the crimp needs them, the threads and yarns of core's Weave and their colours mipmapped for
+// the weave filter; with the far-field weights (weaveCoverage()) of both faces.
 class WeaveTextures {
 public:
     WeaveTextures();
@@ -43,8 +43,8 @@ public:
     // Rebuilds what `p` changed since the last update: the tile when the weave changed, the
     // thread and yarn tables (a few kilobytes) when anything about the threads did.
     void update(const WovenParams& p);
-    // Binds the textures to units 0 (tile), 3 (floats), 4 (threads) and 5 (yarns) and sets the
-    // uniforms that go with them.
+    // Binds the textures to units 0 (tile), 3 (floats), 4 (threads), 5 (yarns), 6 and 7 (the
+    // filter's warp and weft colours) and sets the uniforms that go with them.
     void bind(const ShaderProgram& program) const;
 
 private:
@@ -52,6 +52,7 @@ private:
     void updateThreads(const Weave& weave);
 
     GLuint tile_ = 0, floats_ = 0, threadBuffer_ = 0, threadTable_ = 0, yarnBuffer_ = 0, yarnTable_ = 0;
+    GLuint colorTracks_[2] = {0, 0};  // warp, weft: the weave filter's mipmapped thread colours
     glm::ivec2 threadPeriod_{1}, threadSpaced_{0};
     WeaveCoverage coverage_[2];  // front, back
     std::optional<WovenParams> uploaded_;

@@ -11,7 +11,6 @@ WeaveCoverage weaveCoverage(const Weave& weave, bool backSide) {
     const long columns = std::min(std::lcm(long(pattern.width()), long(ends.period())), kMaxCoverageSide);
     const long rows = std::min(std::lcm(long(pattern.height()), long(picks.period())), kMaxCoverageSide);
     double weftArea = 0.0, warpArea = 0.0, totalArea = 0.0;
-    glm::dvec3 weftColor(0.0), warpColor(0.0);
     for (long V = 0; V < rows; ++V) {
         const int pick = int(V % picks.period());
         const double height = picks.spaced() ? picks.width(pick) : 1.0;
@@ -28,16 +27,9 @@ WeaveCoverage weaveCoverage(const Weave& weave, bool backSide) {
             weftArea += weft;
             warpArea += warp;
             totalArea += area;
-            weftColor += weft * glm::dvec3(picks.color(pick));
-            warpColor += warp * glm::dvec3(ends.color(end));
         }
     }
-    WeaveCoverage c;
-    c.weft = float(weftArea / totalArea);
-    c.warp = float(warpArea / totalArea);
-    c.weftColor = weftArea > 0.0 ? glm::vec3(weftColor / weftArea) : picks.color(0);
-    c.warpColor = warpArea > 0.0 ? glm::vec3(warpColor / warpArea) : ends.color(0);
-    return c;
+    return {float(weftArea / totalArea), float(warpArea / totalArea)};
 }
 
 }  // namespace woven

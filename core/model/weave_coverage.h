@@ -1,8 +1,7 @@
 #pragma once
-// What one repeat of a weave shows from afar: the fraction of the surface each yarn covers
-// (the rest is gap) and the mean colour of each side's visible yarn, weighted by the area each
-// thread shows. The weights of a far-field average (MODEL.md section 7; the preview's weave
-// filter), exact for the diffuse term, which is linear in the colour.
+// What one repeat of a weave shows from afar: the fraction of the surface each yarn covers (the
+// rest is gap), the weights of a far-field average (MODEL.md section 7; the preview's weave
+// filter).
 #include <glm/glm.hpp>
 
 #include "weave.h"
@@ -11,7 +10,6 @@ namespace woven {
 
 struct WeaveCoverage {
     float weft = 0.0f, warp = 0.0f;  // fractions of the surface
-    glm::vec3 weftColor{0.0f}, warpColor{0.0f};
 };
 
 // Over the cells of one repeat of the tile and both sides' thread periods together, at most

@@ -199,7 +199,7 @@ TEST(Threads, AlikeThreadsShadeAsThePlainMaterial) {
     }
 }
 
-TEST(Threads, CoverageAndMeanColoursByHand) {
+TEST(Threads, CoverageByHand) {
     // Plain weave, weft 0.6 wide, warp 0.5: on a weft-top cell the weft covers 0.6 and the warp
     // (1 - 0.6) 0.5 = 0.2; on a warp-top cell the warp 0.5 and the weft 0.5 * 0.6 = 0.3. Half the
     // cells each: weft 0.45, warp 0.35.
@@ -209,21 +209,24 @@ TEST(Threads, CoverageAndMeanColoursByHand) {
     const WeaveCoverage plain = weaveCoverage(Weave(p), false);
     EXPECT_NEAR(plain.weft, 0.45f, 1e-6f);
     EXPECT_NEAR(plain.warp, 0.35f, 1e-6f);
-    EXPECT_EQ(plain.weftColor, p.weft_color);
-    // Warp colours c (spacing 1: a cell 0.5 wide) and d (spacing 3: 1.5 wide); weft colours a, b
-    // by pick. End 0 shows 0.5 (0.4 x 0.5) under pick 0 and 0.5 x 0.5 over pick 1: 0.35; end 1
-    // shows 1.5 x 0.5 + 1.5 x 0.2 = 1.05, three times as much. Pick 0 is on top of the narrow
-    // end: 0.5 x 0.6 + 1.5 x 0.3 = 0.75; pick 1 on top of the wide one: 1.5 x 0.6 + 0.5 x 0.3 = 1.05.
-    const glm::vec3 a(0.2f), b(0.6f), c(1.0f, 0.0f, 0.0f), d(0.0f, 0.0f, 1.0f);
-    p.weft_colors = {a, b};
-    p.warp_colors = {c, d};
+    // Warp spacing 1 and 3 (cells 0.5 and 1.5 wide), end 1 of a thin yarn type (0.3): the
+    // repeat of 2 x 2 cells has area 4. Pick 0 (weft over end 0, under end 1): weft
+    // 0.5 x 0.6 + 1.5 x (1 - 0.3) x 0.6 = 0.93, warp 0.5 x 0.4 x 0.5 + 1.5 x 0.3 = 0.55. Pick 1
+    // (under end 0, over end 1): weft 0.5 x 0.5 x 0.6 + 1.5 x 0.6 = 1.05, warp
+    // 0.5 x 0.5 + 1.5 x 0.4 x 0.3 = 0.43. Together weft 1.98 / 4, warp 0.98 / 4.
+    YarnSpec thin;
+    thin.value[kYarnWidth] = 0.3f;
+    thin.set[kYarnWidth] = true;
+    p.yarns = {YarnSpec{}, thin};  // an empty yarn type is the warp's own
+    p.warp_yarns = {0, 1};
     p.warp_spacing = {1.0f, 3.0f};
-    const WeaveCoverage colored = weaveCoverage(Weave(p), false);
-    expectColor(colored.weftColor, (0.75f * a + 1.05f * b) / 1.8f, "weft mean");
-    expectColor(colored.warpColor, (c + 3.0f * d) * 0.25f, "warp mean");
-    // 1.8 of the repeat's 4 (2 x 2 cells, 0.5 + 1.5 wide) is weft, 1.4 warp.
-    EXPECT_NEAR(colored.weft, 0.45f, 1e-6f);
-    EXPECT_NEAR(colored.warp, 0.35f, 1e-6f);
+    const WeaveCoverage spaced = weaveCoverage(Weave(p), false);
+    EXPECT_NEAR(spaced.weft, 1.98f / 4.0f, 1e-6f);
+    EXPECT_NEAR(spaced.warp, 0.98f / 4.0f, 1e-6f);
+    // The back of a plain weave is the front shifted by one pick: the same coverage.
+    const WeaveCoverage back = weaveCoverage(Weave(p), true);
+    EXPECT_NEAR(back.weft, spaced.weft, 1e-6f);
+    EXPECT_NEAR(back.warp, spaced.warp, 1e-6f);
 }
 
 TEST(Threads, JsonKeysRoundTrip) {
