@@ -115,6 +115,22 @@ WovenParams applyDraft(const Draft& draft, const std::string& name, const WovenP
     return p;
 }
 
+std::vector<std::string> fieldsSetByDraft(const Draft& draft, DraftWidths widths) {
+    std::vector<std::string> fields{"tile"};
+    auto side = [&](const DraftThreads& threads, bool useWidths, const char* colors, const char* color,
+                    const char* spacing, const char* width, const char* yarns) {
+        if (!threads.colors.empty()) fields.insert(fields.end(), {colors, color});
+        if (!threads.spacing.empty()) fields.emplace_back(spacing);
+        if (useWidths && !threads.spacing.empty() && !threads.thickness.empty())
+            fields.insert(fields.end(), {width, yarns, "yarns"});
+    };
+    side(draft.warp, widths.warp, "warp_colors", "warp_color", "warp_spacing", "warp_width", "warp_yarns");
+    side(draft.weft, widths.weft, "weft_colors", "weft_color", "weft_spacing", "yarn_width", "weft_yarns");
+    std::sort(fields.begin(), fields.end());
+    fields.erase(std::unique(fields.begin(), fields.end()), fields.end());
+    return fields;
+}
+
 glm::vec2 draftThreadsPerCm(const Draft& draft, const std::string& name) {
     auto perCm = [&](const DraftThreads& side, const char* what) {
         if (side.spacing.empty())

@@ -31,6 +31,11 @@ struct DraftWidths {
 WovenParams applyDraft(const Draft& draft, const std::string& name, const WovenParams& base, DraftWidths widths,
                        std::vector<std::string>& warnings);
 
+// The names of the fields applyDraft() gives values for `draft` with `widths`, whatever the
+// base: what a material saved beside its draft leaves out, so that the draft sets them again
+// when it is read back (materialFromJson()).
+std::vector<std::string> fieldsSetByDraft(const Draft& draft, DraftWidths widths = {});
+
 // The draft's threads per centimetre: warp ends across u, weft picks across v, from their
 // spacing. Throws DraftError (prefixed by `name`) when a side gives no spacing.
 glm::vec2 draftThreadsPerCm(const Draft& draft, const std::string& name);

@@ -25,9 +25,14 @@ MaterialJson materialFromJson(const nlohmann::json& j, const WovenParams& base, 
         DraftWidths widths;
         const bool ownYarns = j.contains("yarns") || j.contains("warp_yarns") || j.contains("weft_yarns");
         widths.weft = !ownYarns && !j.contains("yarn_width");
-        widths.warp = !ownYarns && !j.contains("yarn_width") && !j.contains("warp_width");
+        widths.warp = !ownYarns && !j.contains("warp_width");
         out.params = applyDraft(*draft, out.wif, base, widths, warnings);
         rest.erase("wif");
+        // What the draft set stays unless its own key is given: a fallback (warp_color <-
+        // weft_color, warp_width <- yarn_width) must not carry a weft key over the draft's warp.
+        const nlohmann::json drafted = paramsToJson(out.params);
+        for (const std::string& field : fieldsSetByDraft(*draft, widths))
+            if (!j.contains(field) && drafted.contains(field)) rest[field] = drafted[field];
     }
     if (j.contains("scale")) {
         if (j["scale"] != "draft") throw std::invalid_argument("'scale' must be \"draft\" (the draft's threads per cm on the mesh)");

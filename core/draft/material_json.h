@@ -3,9 +3,10 @@
 // hold it: WovenParams' fields (woven_params_json.h) and two keys that need more than the model:
 //   "wif": "draft.wif"  a draft file, resolved against a directory (the scene file's, or the
 //                       working directory for --woven); the material takes what the draft gives
-//                       (applyDraft()) and every other key overrides it. A material that sets
-//                       `yarn_width` / `warp_width` or its own `yarns`, `warp_yarns`, `weft_yarns`
-//                       keeps its widths: the draft's thickness is not used for those sides.
+//                       (applyDraft()) and every other key overrides it, each for its own field
+//                       only (weft_color does not carry over to a warp colour the draft gave).
+//                       `yarn_width` / `warp_width` keep the draft's thickness off the weft / the
+//                       warp; own `yarns`, `warp_yarns` or `weft_yarns` off both.
 //   "scale": "draft"    the repeat from the draft's threads per centimetre and the size of the
 //                       mesh, which the caller measures (MaterialJson::threadsPerCm).
 #include <nlohmann/json.hpp>

@@ -83,13 +83,20 @@ TEST_F(DraftMaterial, OtherKeysOverrideTheDraft) {
     EXPECT_EQ(p.ex, 50.0f);
     EXPECT_EQ(p.weft_colors, (std::vector<glm::vec3>{{1, 0, 0}}));
     EXPECT_EQ(p.repeat, glm::vec2(30.0f));
-    // A material that gives its own width keeps it: the draft's thickness is not used. yarn_width
-    // alone sets both sides, as warp_width follows it.
+    // A material that gives its own width keeps it: the draft's thickness is not used for that
+    // side. yarn_width is the weft's only: the warp keeps the draft's 0.8, though warp_width
+    // follows yarn_width where no draft says otherwise.
     const WovenParams own = read({{"wif", "twill.wif"}, {"yarn_width", 0.9}}).params;
     EXPECT_EQ(own.yarn_width, 0.9f);
-    EXPECT_EQ(own.warp_width, 0.9f);
+    EXPECT_FLOAT_EQ(own.warp_width, 0.8f);
     EXPECT_TRUE(own.yarns.empty());
     EXPECT_TRUE(own.weft_yarns.empty());
+    // Likewise weft_color does not carry over to the warp colour the draft gives (white for
+    // every end of twillWif()).
+    std::ofstream(dir.file("white.wif"), std::ios::binary) << twillWif();
+    const WovenParams red = read({{"wif", "white.wif"}, {"weft_color", {1, 0, 0}}}).params;
+    EXPECT_EQ(red.weft_color, glm::vec3(1, 0, 0));
+    EXPECT_EQ(red.warp_color, glm::vec3(1.0f));
     const WovenParams warpOnly = read({{"wif", "twill.wif"}, {"warp_width", 0.7}}).params;
     EXPECT_EQ(warpOnly.warp_width, 0.7f);
     EXPECT_EQ(warpOnly.weft_yarns.size(), 8u);  // the weft's widths still come from the draft
