@@ -11,19 +11,24 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "demo_scene.h"
+#include "draft_material.h"
+#include "draft_view.h"
 #include "final_render.h"
+#include "make_woven.h"
 #include "gl_error.h"
 #include "image_io.h"
 #include "material_file.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
 #include "scene_loader.h"
+#include "uv_scale.h"
 #include "weave_presets.h"
 
 namespace woven {
@@ -40,6 +45,9 @@ bool hasExtension(const std::string& path, const char* ext) {
     const size_t n = std::char_traits<char>::length(ext);
     return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
 }
+
+// Weaving programs write .wif and .WIF alike.
+bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
 
 // A window with the newest core context the driver gives, 4.5 down to 3.3.
 GLFWwindow* createWindow(int width, int height) {
@@ -79,9 +87,12 @@ public:
 
 private:
     void openScene(const std::string& path);
+    void openDraft(const std::string& path);
     void handleMouse();
     void drawPanel();
     void drawMaterialControls(WovenParams& p);
+    void drawDraftControls(WovenParams& p);
+    void drawDraftWindow();
     void drawLightControls();
     void drawRenderControls();
     void updateFinalTexture(const FilmImage& film);
@@ -110,6 +121,13 @@ private:
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
+
+    // The draft of material draftMaterial_: every edit in the draft view is applied to the
+    // material at once, so the next frame shows it.
+    std::optional<DraftEditor> draft_;
+    int draftMaterial_ = -1;
+    DraftView draftView_;
+    char draftPath_[512] = "draft.wif";
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;
@@ -150,6 +168,7 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(opt
     glGenTextures(1, &finalTexture_);
     display_ = options.frame.display;
     openScene(options.scene);
+    if (!options.draft.empty()) openDraft(options.draft);
 }
 
 PreviewWindow::~PreviewWindow() {
@@ -180,6 +199,14 @@ void PreviewWindow::openScene(const std::string& path) {
         if (scene_.materials[i].woven) materialIndex_ = int(i);
     presetIndex_ = -1;
     showFinal_ = false;
+    // A material made from a draft ("wif") opens it in the draft view.
+    draft_.reset();
+    if (materialIndex_ >= 0 && !scene_.materials[size_t(materialIndex_)].draft.empty()) {
+        std::vector<std::string> warnings;  // printed when the scene was read
+        draft_ = DraftEditor::open(scene_.materials[size_t(materialIndex_)].draft, warnings);
+        draftMaterial_ = materialIndex_;
+        copyToBuffer(draftPath_, draft_->name());
+    }
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
     render_ = frameSettings(scene_, options_.frame);
@@ -189,6 +216,23 @@ void PreviewWindow::openScene(const std::string& path) {
     if (options_.frame.height <= 0 && scene_.render.height <= 0) render_.height = std::max(windowHeight, 1);
     status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
+}
+
+void PreviewWindow::openDraft(const std::string& path) {
+    WovenParams* p = editedMaterial();
+    if (!p) throw std::runtime_error(path + ": the scene has no woven material to weave the draft on");
+    std::vector<std::string> warnings;
+    DraftEditor editor = DraftEditor::open(path, warnings);
+    *p = editor.material(*p);
+    draft_ = std::move(editor);
+    draftMaterial_ = materialIndex_;
+    presetIndex_ = -1;
+    copyToBuffer(draftPath_, path);
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    status_ = "opened " + path;
+    if (!warnings.empty())
+        status_ += " (" + std::to_string(warnings.size()) + " warning" + (warnings.size() > 1 ? "s" : "") + ": " +
+                   warnings.front() + ")";
 }
 
 WovenParams* PreviewWindow::editedMaterial() {
@@ -295,13 +339,91 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
     ImGui::SameLine();
     if (ImGui::Button("Load material")) {
         try {
-            p = loadMaterial(materialPath_, name, p);
+            std::vector<std::string> warnings;
+            const MaterialJson read = loadMaterial(materialPath_, name, p, warnings);
+            p = onMaterial(scene_, materialIndex_, read);
             presetIndex_ = -1;
             status_ = std::string("loaded ") + materialPath_;
+            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+            if (!read.wif.empty()) {
+                draft_ = DraftEditor::open(read.wif, warnings);
+                draftMaterial_ = materialIndex_;
+                copyToBuffer(draftPath_, read.wif);
+            }
         } catch (const std::exception& e) {
             status_ = e.what();
         }
     }
+    drawDraftControls(p);
+}
+
+void PreviewWindow::drawDraftControls(WovenParams& p) {
+    ImGui::Separator();
+    ImGui::InputText("draft file", draftPath_, sizeof draftPath_);
+    if (ImGui::Button("Open draft")) {
+        try {
+            openDraft(draftPath_);
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (!draft_ || draftMaterial_ != materialIndex_) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(or drop a .wif on the window)");
+        return;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Save WIF")) {
+        try {
+            draft_->save(draftPath_);
+            status_ = std::string("saved ") + draftPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    // "scale": "draft": the draft's threads per centimetre on this mesh.
+    if (ImGui::Button("Real scale")) {
+        try {
+            p.repeat = repeatForThreadsPerCm(scene_, materialIndex_, draftThreadsPerCm(draft_->draft(), draft_->name()));
+            validate(p);
+            status_ = "repeat from the draft's spacing";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (ImGui::Button("Save material with draft")) {
+        try {
+            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
+            const std::string wif = saveMaterialWithDraft(materialPath_, scene_.materials[size_t(materialIndex_)].name, p,
+                                                          gltf ? scenePath_ : "", *draft_);
+            copyToBuffer(draftPath_, wif);
+            status_ = std::string("saved ") + materialPath_ + " and " + wif;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+// The draft view of the material the draft belongs to, beside the panel.
+void PreviewWindow::drawDraftWindow() {
+    if (!draft_ || draftMaterial_ < 0 || draftMaterial_ >= int(scene_.materials.size())) return;
+    auto& woven = scene_.materials[size_t(draftMaterial_)].woven;
+    if (!woven) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(456, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::max(display.x - 464, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Draft");
+    try {
+        if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
+            *woven = draft_->material(*woven);
+            presetIndex_ = -1;
+            showFinal_ = false;  // the rendered frame is of the old cloth
+        }
+    } catch (const std::exception& e) {
+        status_ = e.what();
+    }
+    ImGui::End();
 }
 
 // Edits the scene's own lights, so the Render button sees the same lighting as the preview.
@@ -469,7 +591,8 @@ void PreviewWindow::run() {
         dropped.swap(droppedPaths_);
         for (const std::string& path : dropped) {
             try {
-                openScene(path);
+                if (isDraftFile(path)) openDraft(path);
+                else openScene(path);
             } catch (const std::exception& e) {
                 status_ = e.what();
             }
@@ -483,6 +606,7 @@ void PreviewWindow::run() {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         drawPanel();
+        drawDraftWindow();
         drawFinalImage();
         handleMouse();
         ImGui::Render();

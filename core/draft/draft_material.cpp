@@ -119,7 +119,10 @@ std::vector<std::string> fieldsSetByDraft(const Draft& draft, DraftWidths widths
     std::vector<std::string> fields{"tile"};
     auto side = [&](const DraftThreads& threads, bool useWidths, const char* colors, const char* color,
                     const char* spacing, const char* width, const char* yarns) {
-        if (!threads.colors.empty()) fields.insert(fields.end(), {colors, color});
+        if (!threads.colors.empty()) fields.emplace_back(colors);  // set, or cleared when one colour is the side's
+        const auto& c = threads.colors;
+        if (!c.empty() && std::all_of(c.begin(), c.end(), [&](const glm::vec3& x) { return x == c[0]; }))
+            fields.emplace_back(color);
         if (!threads.spacing.empty()) fields.emplace_back(spacing);
         if (useWidths && !threads.spacing.empty() && !threads.thickness.empty())
             fields.insert(fields.end(), {width, yarns, "yarns"});

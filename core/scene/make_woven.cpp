@@ -61,7 +61,10 @@ void applyWovenOption(SceneDescription& scene, const std::string& option) {
     std::vector<std::string> warnings;
     try {
         const MaterialJson read = materialFromJson(j, first.woven.value_or(WovenParams{}), "", warnings);
-        for (int m : selectMaterials(scene, name)) scene.materials[size_t(m)].woven = onMaterial(scene, m, read);
+        for (int m : selectMaterials(scene, name)) {
+            scene.materials[size_t(m)].woven = onMaterial(scene, m, read);
+            if (!read.wif.empty()) scene.materials[size_t(m)].draft = read.wif;
+        }
     } catch (const std::exception& e) {  // a bad key (invalid_argument), draft (DraftError) or mesh (SceneError)
         throw SceneError(where + ": " + e.what());
     }

@@ -142,6 +142,7 @@ private:
                     const MaterialJson read = materialFromJson(materials[name], material.woven.value_or(WovenParams{}),
                                                                fs::path(path_).parent_path().string(), materialWarnings);
                     material.woven = onMaterial(scene, m, read);
+                    if (!read.wif.empty()) material.draft = read.wif;
                 } catch (const std::exception& e) {  // a bad key (invalid_argument), draft (DraftError) or mesh
                     fail(where, e.what());
                 }

@@ -118,6 +118,8 @@ TEST_F(SceneDraft, WifIsResolvedAgainstTheSceneFile) {
     EXPECT_FLOAT_EQ(p.yarn_width, 0.4f);
     EXPECT_EQ(p.cy, 0.25f);
     EXPECT_EQ(p.repeat, WovenParams{}.repeat);  // no "scale": the material's own repeat
+    EXPECT_EQ(scene.materials[0].draft, dir.file("sub/drafts/plain.wif"));  // for the previewer's draft view
+    EXPECT_EQ(scene.materials[1].draft, "");
 }
 
 TEST_F(SceneDraft, ScaleDraftUsesTheMeshsUvToWorldScale) {
