@@ -39,7 +39,7 @@ struct WovenParams {
     // '-' weft / '|' warp, row V = 0 first) replaces it with a general binary tile.
     glm::ivec3 pattern{1, 1, 1};
     std::vector<std::string> tile;
-    glm::vec2 repeat{1.0f, 1.0f};  // weave elements per UV unit along u and v
+    glm::vec2 repeat{1.0f, 1.0f};  // weave elements (threads, on average) per UV unit along u and v
 
     // Ashikhmin-Shirley lobe per yarn type (the source's D_t for weft, D_p for warp).
     float ex = 100.0f, ey = 2.0f;            // weft exponents: x along the yarn

@@ -1,6 +1,6 @@
 // Per-thread colours, yarn types and spacing (MODEL.md section 6) against values worked out by
 // hand: which thread a point falls on, the colour and lobe it shades with, where gaps open, the
-// far-field weights, and the JSON keys with their errors.
+// far-field weights (the JSON keys: test_params_json.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,13 +10,11 @@
 #include "reference_brdf.h"
 #include "weave_coverage.h"
 #include "woven_material.h"
-#include "woven_params_json.h"
 #include "yarn_geometry.h"
 
 namespace woven {
 namespace {
 
-using nlohmann::json;
 using test::kPi;
 
 // The BSDF at normal incidence with rs = 0 is the diffuse term alone:
@@ -227,67 +225,6 @@ TEST(Threads, CoverageByHand) {
     const WeaveCoverage back = weaveCoverage(Weave(p), true);
     EXPECT_NEAR(back.weft, spaced.weft, 1e-6f);
     EXPECT_NEAR(back.warp, spaced.warp, 1e-6f);
-}
-
-TEST(Threads, JsonKeysRoundTrip) {
-    const json j = json::parse(R"({
-        "warp_colors": [[0.1, 0.2, 0.3], 0.5],
-        "weft_colors": [[1, 0, 0]],
-        "yarns": [{"ex": 300, "yarn_width": 0.6}, {"noise": 0.2, "cy": 1}],
-        "warp_yarns": [0, 1, 1],
-        "weft_yarns": [1],
-        "warp_spacing": [1, 2],
-        "weft_spacing": [0.5]
-    })");
-    const WovenParams p = paramsFromJson(j);
-    ASSERT_EQ(p.warp_colors.size(), 2u);
-    EXPECT_EQ(p.warp_colors[1], glm::vec3(0.5f));
-    ASSERT_EQ(p.yarns.size(), 2u);
-    EXPECT_TRUE(p.yarns[0].set[kYarnEx] && p.yarns[0].set[kYarnWidth]);
-    EXPECT_FALSE(p.yarns[0].set[kYarnCy]);
-    EXPECT_EQ(p.yarns[1].value[kYarnCy], 1.0f);
-    EXPECT_EQ(p.warp_yarns, (std::vector<int>{0, 1, 1}));
-    EXPECT_EQ(p.warp_spacing, (std::vector<float>{1.0f, 2.0f}));
-    const WovenParams q = paramsFromJson(json::parse(paramsToJson(p).dump()));
-    EXPECT_EQ(q.warp_colors, p.warp_colors);
-    EXPECT_EQ(q.weft_colors, p.weft_colors);
-    EXPECT_EQ(q.yarns, p.yarns);
-    EXPECT_EQ(q.warp_yarns, p.warp_yarns);
-    EXPECT_EQ(q.weft_yarns, p.weft_yarns);
-    EXPECT_EQ(q.warp_spacing, p.warp_spacing);
-    EXPECT_EQ(q.weft_spacing, p.weft_spacing);
-    // A material without lists writes none.
-    EXPECT_FALSE(paramsToJson(WovenParams{}).contains("warp_colors"));
-}
-
-void expectRejected(const std::string& text, const std::string& message) {
-    SCOPED_TRACE(text);
-    try {
-        paramsFromJson(json::parse(text));
-        FAIL() << "accepted";
-    } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-    }
-}
-
-TEST(Threads, JsonErrorsNameTheKeyAndTheEntry) {
-    expectRejected(R"({"warp_colors": 0.5})", "'warp_colors' must be an array of colours");
-    expectRejected(R"({"warp_colors": [0.1, [0.1, 1.2, 0.3]]})", "'warp_colors'[1] = 1.2 is outside [0, 1]");
-    expectRejected(R"({"weft_colors": [[0.1, 0.2]]})", "'weft_colors'[0] must be an array of 3 numbers");
-    expectRejected(R"({"warp_yarns": [0]})", "'warp_yarns'[0] = 0 names no yarn type ('yarns' has 0)");
-    expectRejected(R"({"yarns": [{"ex": 1}], "weft_yarns": [0, 1]})", "'weft_yarns'[1] = 1 names no yarn type");
-    expectRejected(R"({"yarns": [{}, {}], "warp_yarns": [1.5]})", "'warp_yarns'[0] must be an integer");
-    expectRejected(R"({"yarns": [{"exx": 1}]})", "'yarns'[0]: unknown yarn field 'exx'");
-    expectRejected(R"({"yarns": [{"warp_ex": 1}]})", "unknown yarn field 'warp_ex'");  // a yarn has one ex
-    expectRejected(R"({"yarns": [{}, {"yarn_width": 0}]})", "'yarns'[1].yarn_width = 0 is outside");
-    expectRejected(R"({"yarns": [3]})", "'yarns'[0] must be an object");
-    expectRejected(R"({"warp_spacing": [1, -2]})", "'warp_spacing'[1] = -2 is outside");
-    expectRejected(R"({"weft_spacing": [1, "a"]})", "'weft_spacing'[1] must be a number");
-    // 256 colours and 257 spacings repeat together every 65792 threads, beyond the limit.
-    json j = {{"warp_colors", json::array()}, {"warp_spacing", json::array()}};
-    for (int k = 0; k < 256; ++k) j["warp_colors"].push_back(0.5);
-    for (int k = 0; k < 257; ++k) j["warp_spacing"].push_back(1.0);
-    expectRejected(j.dump(), "repeat together only every 65792 threads");
 }
 
 }  // namespace
