@@ -185,5 +185,26 @@ TEST_F(SceneDraft, WovenOptionResolvesAgainstTheWorkingDirectory) {
     }(), HasSubstr("--woven Cloth: plain.wif: cannot open the file"));
 }
 
+// The draft scenes of assets/: they load without a warning, their cloth carries its draft, and
+// the real-scale houndstooth puts 20 threads per cm (spacing 0.05 cm) on the draped cloth, whose
+// UVs span it once, about 1.7 m (its bounds) with the drape's folds.
+TEST(DraftAssets, SceneFilesCarryTheirDrafts) {
+    for (const char* name : {"houndstooth", "gingham", "twill_stripes", "houndstooth_real_scale"}) {
+        SCOPED_TRACE(name);
+        const SceneDescription scene = loadScene(std::string(WOVEN_ASSETS_DIR) + "/" + name + ".json");
+        EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+        const Material& cloth = scene.materials[0];
+        ASSERT_EQ(cloth.name, "Cloth");
+        EXPECT_NE(cloth.draft.find("assets/drafts/"), std::string::npos);
+        EXPECT_FALSE(cloth.woven->tile.empty());
+    }
+    const SceneDescription real = loadScene(std::string(WOVEN_ASSETS_DIR) + "/houndstooth_real_scale.json");
+    const glm::dvec2 metres = worldLengthPerUv(real, 0);
+    EXPECT_GT(metres.x, 1.2);
+    EXPECT_LT(metres.x, 2.2);
+    EXPECT_NEAR(real.materials[0].woven->repeat.x, 2000.0 * metres.x, 1e-3 * 2000.0 * metres.x);
+    EXPECT_NEAR(real.materials[0].woven->repeat.y, 2000.0 * metres.y, 1e-3 * 2000.0 * metres.y);
+}
+
 }  // namespace
 }  // namespace woven
