@@ -32,37 +32,32 @@ DraftEditor DraftEditor::open(const std::string& path, std::vector<std::string>&
     return DraftEditor(readWif(path, warnings), path);
 }
 
-void DraftEditor::edited() {
-    // A lift plan kept beside tie-up and treadling (for writing back) follows them.
+// A lift plan kept beside tie-up and treadling (for writing back) follows them.
+void DraftEditor::keepLiftplanInStep() {
     if (draft_.usesTieup() && !draft_.liftplan.empty())
         for (int pick = 0; pick < draft_.picks(); ++pick) draft_.liftplan[size_t(pick)] = shedOf(draft_, pick);
-    ++revision_;
 }
 
 void DraftEditor::toggleThreading(int end, int shaft) {
     flip(draft_.threading.at(size_t(end)), shaft);
-    edited();
 }
 
 void DraftEditor::toggleTieup(int treadle, int shaft) {
     flip(draft_.tieup.at(size_t(treadle)), shaft);
-    edited();
+    keepLiftplanInStep();
 }
 
 void DraftEditor::toggleTreadling(int pick, int treadle) {
     flip(draft_.treadling.at(size_t(pick)), treadle);
-    edited();
+    keepLiftplanInStep();
 }
 
 void DraftEditor::toggleLiftplan(int pick, int shaft) {
     if (draft_.usesTieup()) throw std::logic_error("the draft is driven by its tie-up and treadling");
     flip(draft_.liftplan.at(size_t(pick)), shaft);
-    edited();
 }
 
-bool DraftEditor::warpOnTop(int end, int pick) const {
-    return (draft_.threading[size_t(end)] & shedOf(draft_, pick)).any() == draft_.risingShed;
-}
+bool DraftEditor::warpOnTop(int end, int pick) const { return Drawdown(draft_, name_).warpOnTop(end, pick); }
 
 glm::vec3 DraftEditor::color(DraftSide side, int thread, const glm::vec3& unset) const {
     const DraftThreads& t = threads(side);
@@ -73,7 +68,6 @@ void DraftEditor::setColor(DraftSide side, int thread, const glm::vec3& color, c
     DraftThreads& t = threads(side);
     if (t.colors.empty()) t.colors.assign(size_t(t.count), unset);
     t.colors.at(size_t(thread)) = glm::clamp(color, 0.0f, 1.0f);
-    edited();
 }
 
 std::pair<int, int> DraftEditor::stripe(DraftSide side, int thread) const {
@@ -90,7 +84,6 @@ void DraftEditor::setStripeColor(DraftSide side, int thread, const glm::vec3& co
     DraftThreads& t = threads(side);
     if (t.colors.empty()) t.colors.assign(size_t(t.count), unset);
     for (int k = first; k <= last; ++k) t.colors[size_t(k)] = glm::clamp(color, 0.0f, 1.0f);
-    edited();
 }
 
 void DraftEditor::setThreadCount(DraftSide side, int count) {
@@ -107,7 +100,6 @@ void DraftEditor::setThreadCount(DraftSide side, int count) {
         repeatTo(draft_.liftplan, count);
     }
     t.count = count;
-    edited();
 }
 
 WovenParams DraftEditor::material(const WovenParams& base) const {

@@ -21,8 +21,6 @@ public:
 
     const Draft& draft() const { return draft_; }
     const std::string& name() const { return name_; }  // the file it came from or was saved to
-    // Counts the edits, so a caller sees that the material must be made again.
-    unsigned revision() const { return revision_; }
 
     // Cell toggles, numbered from 0. The draft's lift plan follows an edited tie-up or treadling
     // (when it has one beside them), so the file written stays consistent.
@@ -30,7 +28,8 @@ public:
     void toggleTieup(int treadle, int shaft);
     void toggleTreadling(int pick, int treadle);
     void toggleLiftplan(int pick, int shaft);  // a draft driven by its lift plan only
-    // Whether the warp is on top at (end, pick) on the face the material shows.
+    // Whether the warp is on top at (end, pick) on the face the material shows (a Drawdown
+    // made for this one question: a view that draws many cells makes its own).
     bool warpOnTop(int end, int pick) const;
 
     // Colours, linear RGB. A draft without colours for that side starts from `unset` for every
@@ -54,11 +53,10 @@ public:
 private:
     DraftThreads& threads(DraftSide side) { return side == DraftSide::Warp ? draft_.warp : draft_.weft; }
     const DraftThreads& threads(DraftSide side) const { return side == DraftSide::Warp ? draft_.warp : draft_.weft; }
-    void edited();
+    void keepLiftplanInStep();
 
     Draft draft_;
     std::string name_;
-    unsigned revision_ = 0;
 };
 
 }  // namespace woven

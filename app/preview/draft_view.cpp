@@ -115,16 +115,12 @@ bool DraftView::draw(DraftEditor& editor, const glm::vec3& warpColor, const glm:
     ImDrawList* list = ImGui::GetWindowDrawList();
     const ImVec2 clipMin = list->GetClipRectMin(), clipMax = list->GetClipRectMax();
     const float c = layout.cell(), gap = c >= 6.0f ? 1.0f : 0.0f;
-    std::vector<IndexSet> sheds;  // per visible drawdown row
+    const Drawdown drawdown(d, editor.name());
     for (const DraftLayout::Grid& g : layout.grids()) {
         const glm::vec2 o(origin.x + g.origin.x, origin.y + g.origin.y);
         // Only the cells in view: a draft of thousands of threads stays cheap to draw.
         const int c0 = std::max(0, int((clipMin.x - o.x) / c)), c1 = std::min(g.columns, int((clipMax.x - o.x) / c) + 1);
         const int r0 = std::max(0, int((clipMin.y - o.y) / c)), r1 = std::min(g.rows, int((clipMax.y - o.y) / c) + 1);
-        if (g.region == DraftLayout::Region::Drawdown) {
-            sheds.clear();
-            for (int r = r0; r < r1; ++r) sheds.push_back(shedOf(d, r));
-        }
         for (int r = r0; r < r1; ++r)
             for (int col = c0; col < c1; ++col) {
                 const DraftLayout::Hit cell{g.region, col, r};
@@ -137,8 +133,7 @@ bool DraftView::draw(DraftEditor& editor, const glm::vec3& warpColor, const glm:
                     case DraftLayout::Region::Treadling: if (d.treadling[size_t(r)][size_t(col)]) color = kRaised; break;
                     case DraftLayout::Region::Liftplan: if (d.liftplan[size_t(r)][size_t(col)]) color = kRaised; break;
                     case DraftLayout::Region::Drawdown: {
-                        const bool warp = (d.threading[size_t(col)] & sheds[size_t(r - r0)]).any() == d.risingShed;
-                        color = displayColor(warp ? editor.color(DraftSide::Warp, col, warpColor)
+                        color = displayColor(drawdown.warpOnTop(col, r) ? editor.color(DraftSide::Warp, col, warpColor)
                                                   : editor.color(DraftSide::Weft, r, weftColor));
                         break;
                     }

@@ -43,7 +43,6 @@ public:
     int period() const { return period_; }
     const glm::vec3& color(int slot) const { return colors_[size_t(slot)]; }
     int yarn(int slot) const { return yarns_[size_t(slot)]; }
-    const std::vector<int>& yarns() const { return yarns_; }
 
     // Spacing: whether threads differ in width. Then slot k's cell starts at start(k) and is
     // width(k) wide (mean thread widths from the period's start, width 1 on average), and the

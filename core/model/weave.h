@@ -24,7 +24,6 @@ public:
     // The resolved yarns: 0 the warp's own, 1 the weft's own, then each yarn type on the warp,
     // then each on the weft (yarnOfType()).
     const Yarn& yarn(int index) const { return yarns_[size_t(index)]; }
-    const std::vector<Yarn>& yarns() const { return yarns_; }
     static int yarnOfType(int type, YarnSide side, int typeCount) {
         return 2 + type + (side == YarnSide::Weft ? typeCount : 0);
     }

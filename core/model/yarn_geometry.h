@@ -12,7 +12,7 @@ struct YarnPoint {
     YarnType type = YarnType::Gap;
     int64_t yarnIndex = 0;  // row V for weft, column U for warp: seeds the per-yarn noise
     int slot = 0;           // the thread's slot in its side's ThreadLayout: its colour
-    int yarn = 0;           // its yarn, an index into Weave::yarns()
+    int yarn = 0;           // its yarn: Weave::yarn(yarn)
     double along = 0.0;     // position along the yarn in element units (continuous on one yarn)
     // Bumped normal in the tangent frame (x = +u, y = +v, z = surface normal); unit length.
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
