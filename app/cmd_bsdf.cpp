@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "material_json.h"
 #include "woven_material.h"
 #include "woven_params_json.h"
 
@@ -55,7 +56,12 @@ public:
         const std::string key = j.dump();
         auto it = cache_.find(key);
         if (it != cache_.end()) return *it->second;
-        auto material = std::make_unique<WovenMaterial>(paramsFromJson(j));
+        // "wif" is read from the working directory, as for --woven.
+        std::vector<std::string> warnings;
+        const MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
+        if (read.threadsPerCm) throw std::invalid_argument("'scale': \"draft\" needs a mesh to measure; bsdf-eval has none");
+        for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+        auto material = std::make_unique<WovenMaterial>(read.params);
         return *cache_.emplace(key, std::move(material)).first->second;
     }
 

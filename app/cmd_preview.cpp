@@ -28,6 +28,7 @@ struct PreviewCommandOptions {
     bool noShadows = false;
     int frames = 0;
     std::string windowScreenshot;
+    std::string wif;
 };
 
 SceneDescription openScene(const PreviewCommandOptions& o) {
@@ -79,6 +80,7 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
     cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
+    cmd->add_option("--wif", o->wif, "Window: open this draft (WIF file) on the first woven material, in the draft view");
     cmd->callback([o] {
         if (o->headless) return runHeadless(*o);
         PreviewWindowOptions window;
@@ -86,6 +88,7 @@ void addPreviewCommand(CLI::App& app) {
         window.frame = o->frame;
         window.frames = o->frames;
         window.screenshot = o->windowScreenshot;
+        window.draft = o->wif;
         runPreviewWindow(window);
     });
 }

@@ -1,7 +1,8 @@
 // The woven surface shader: core's WovenMaterial::shade lit by lighting.glsl (gltf.frag draws
 // every other material). Features a material does not use are compiled out by #defines that the
 // C++ side picks from its parameters (woven_gl_material.cpp): WOVEN_NOISE, WOVEN_CRIMP,
-// WOVEN_GAPS (both yarns narrower than their element) and WOVEN_FILTER (the far-field weave
+// WOVEN_GAPS (both yarns narrower than their element), WOVEN_THREADS (per-thread colours, yarns
+// or spacing), WOVEN_SPACING (threads of different widths) and WOVEN_FILTER (the far-field weave
 // filter); PREVIEW_SHADOWS (lighting.glsl).
 in vec3 vPosition;
 in vec3 vNormal;
@@ -54,15 +55,22 @@ vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
 vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
     if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
     bool weft = y.type == WEFT;
+    // The thread's colour and its yarn's lobe and noise (core's WovenMaterial::shade).
+#ifdef WOVEN_THREADS
+    vec3 color = threadTexel(weft ? 1 : 0, y.slot, 0).rgb;
+    vec4 yarn = yarnTexel(y.yarn, 0);
+    float ex = yarn.x, ey = yarn.y, rs = yarn.z, noise = yarnTexel(y.yarn, 1).y;
+#else
     vec3 color = weft ? material.weft_color : material.warp_color;
+    float ex = weft ? material.ex : material.warp_ex, ey = weft ? material.ey : material.warp_ey;
+    float rs = material.rs, noise = material.noise;
+#endif
 #ifdef WOVEN_NOISE
     uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
-    color = clamp(color * (1.0 + material.noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
+    if (noise > 0.0) color = clamp(color * (1.0 + noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
 #endif
     Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
-    Lobe lobe = weft ? Lobe(material.ex, material.ey, material.rs, color)
-                     : Lobe(material.warp_ex, material.warp_ey, material.rs, color);
-    return reflectedLight(f, lobe, p, ng, wo);
+    return reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
 }
 
 #ifdef WOVEN_FILTER
@@ -72,14 +80,42 @@ const int FILTER_SAMPLES = 8;
 // The reflectance averaged over the weave, for pixels that cover several elements: each yarn
 // type weighted by the area it covers, its cross-section sampled uniformly across (crimp and
 // noise average out and are left out). Returns radiance x coverage; `coverage` = the opaque
-// fraction (1 unless gaps are see-through).
+// fraction (1 unless gaps are see-through). Per-thread colours enter as the mean colour of the
+// threads the pixel covers on each side, whatever the weave shows of each (`footprint`: the
+// position and its screen derivatives in threads, as e and de/dx, de/dy); yarn types other than
+// the material's own are not averaged: the lobes are the material's warp and weft (an
+// approximation for drafts whose yarns differ in exponents or c_y; their widths are in the
+// coverage).
 // The loop over lights is outermost, so each light's direction and falloff is computed once for
 // all 2 x FILTER_SAMPLES frames, not once per frame as reflectedLight() would: that halves the
 // default scene's frame time on llvmpipe, with the same result.
-vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, out float coverage) {
+#ifdef WOVEN_THREADS
+// The mean colour of one side's threads over the pixel's footprint, e + a de/dx + b de/dy for a,
+// b in [-1/2, 1/2]: 4 x 4 sub-footprints, each a filtered lookup of a quarter of its size, so a
+// stripe narrower than a pixel keeps its share and no thread is counted twice.
+vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float dedy) {
+    float scale = 1.0 / float(period);
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            float x = e + (float(i) - 1.5) * 0.25 * dedx + (float(j) - 1.5) * 0.25 * dedy;
+            sum += textureGrad(colors, x * scale, 0.25 * dedx * scale, 0.25 * dedy * scale);
+        }
+    return sum.rgb / max(sum.a, 1e-6);
+}
+#endif
+
+vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy,
+                      out float coverage) {
     vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
-    Lobe weft = Lobe(material.ex, material.ey, material.rs, material.weft_color);
-    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, material.warp_color);
+#ifdef WOVEN_THREADS
+    vec3 warpColor = footprintColor(warpColorTexture, threadPeriod.x, e.x, dedx.x, dedy.x);
+    vec3 weftColor = footprintColor(weftColorTexture, threadPeriod.y, e.y, dedx.y, dedy.y);
+#else
+    vec3 weftColor = material.weft_color, warpColor = material.warp_color;
+#endif
+    Lobe weft = Lobe(material.ex, material.ey, material.rs, weftColor);
+    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, warpColor);
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     vec3 weftWo[FILTER_SAMPLES], warpWo[FILTER_SAMPLES];
     vec3 sum = vec3(0.0);
@@ -143,7 +179,7 @@ void main() {
 #ifdef WOVEN_FILTER
     // Elements per pixel: from a quarter element on, fade to the averaged reflectance, so no
     // moire appears where the weave is finer than the pixels.
-    vec2 e = vUv * material.repeat;
+    vec2 e = vUv * material.repeat, dedx = dux * material.repeat, dedy = duy * material.repeat;
     float farWeight = smoothstep(0.25, 1.0, max(fwidth(e.x), fwidth(e.y)));
 #else
     const float farWeight = 0.0;
@@ -161,7 +197,7 @@ void main() {
     vec3 far = vec3(0.0);
     float farOpacity = 1.0;
 #ifdef WOVEN_FILTER
-    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, farOpacity);
+    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, e, dedx, dedy, farOpacity);
 #endif
     float opacity = mix(nearOpacity, farOpacity, farWeight);
     if (opacity < ditherThreshold()) discard;

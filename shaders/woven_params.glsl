@@ -1,12 +1,32 @@
 // The material of the mesh being drawn. `struct WovenParams` itself is not written here: the
 // C++ side generates it from core's wovenParamTable() (app/preview/woven_gl_material.cpp), one
-// field per table entry with the same name, and uploads every field by that name. A table entry
-// the shaders never read shows up as an inactive uniform, which tests/preview checks.
+// field per numeric table entry with the same name, and uploads every field by that name. A
+// table entry the shaders never read shows up as an inactive uniform, which tests/preview checks.
 uniform WovenParams material;
 
-// The weave tile of both faces, texel (U mod P_u, V mod P_v, face): r = 1 where warp is on top,
-// g = elements before this one in its float, b = the float's length (WeavePattern::floatAt).
-uniform sampler2DArray weaveTile;
-// Area fractions of the tile covered by (weft, warp) yarn on the front (xy) and back (zw) face;
-// the rest is gap. They weight the element-averaged reflectance of the weave filter.
+// The weave tile, texel (U mod P_u, V mod P_v): 1 where the warp is on top of the front face
+// (the back face inverts it).
+uniform usampler2D weaveTile;
+#ifdef WOVEN_CRIMP
+// The float through each cell along its row and along its column (core's WeaveFloats::runs()):
+// row position, row length - 1, column position, column length - 1.
+uniform usampler2D weaveFloats;
+#endif
+#ifdef WOVEN_THREADS
+// Per thread slot, warp ends then weft picks (core's ThreadLayout): (colour, yarn),
+// (cell start, cell width, the slot the unit interval from the slot's index starts in).
+uniform samplerBuffer threadTable;
+// Per yarn (core's Weave::yarns()): (ex, ey, rs, width), (cy, noise, 0, 0).
+uniform samplerBuffer yarnTable;
+uniform ivec2 threadPeriod;  // slots of the warp and of the weft
+uniform ivec2 threadSpaced;  // 1 where that side's threads differ in width
+#endif
+// Area fractions of the surface covered by (weft, warp) yarn on the front (xy) and back (zw)
+// face; the rest is gap. They weight the element-averaged reflectance of the weave filter.
 uniform vec4 yarnCoverage;
+#if defined(WOVEN_FILTER) && defined(WOVEN_THREADS)
+// Per thread slot of the warp and of the weft, mipmapped: (colour x cell width, cell width), so
+// a filtered lookup over a pixel's footprint gives the width-weighted mean colour of the
+// threads it covers.
+uniform sampler1D warpColorTexture, weftColorTexture;
+#endif

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md and its pictures: convergence of both integrators on the two
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
-# render benchmarks, preview frame time, and the paper's figures. About 10 minutes on 2 cores.
+# render benchmarks, preview frame time, the paper's figures and the sample drafts. About 12
+# minutes on 2 cores.
 # Usage: tools/make_results.sh [build-dir]   (builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,6 +17,16 @@ trap 'rm -f "$tmp"' EXIT
 
 # Each command is printed beside what it made, so every number and picture can be remade alone.
 run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
+# A scene of assets/ rendered for 20 s at 480x360, its picture and the command that made it.
+figure() {
+  echo
+  echo "![$1]($(basename "$out")/$1.png)"
+  echo
+  echo '```'
+  echo "$woven render assets/$1.json --width 480 --height 360 --time 20 -o $out/$1.png"
+  echo '```'
+  "$woven" render "assets/$1.json" --width 480 --height 360 --time 20 -o "$out/$1.png" 2>/dev/null
+}
 
 {
   echo "# woven: results"
@@ -77,15 +88,7 @@ run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
   echo "## The source paper's figures"
   echo
   echo "Figure 2: (a) e_x = 100, e_y = 2; (b) c_y = 0.75; (c) twill (1,2,1); (d) satin (9,1,3)."
-  for scene in paper_a_anisotropy paper_b_curvature paper_c_twill paper_d_satin; do
-    echo
-    echo "![$scene]($(basename "$out")/$scene.png)"
-    echo
-    echo '```'
-    echo "$woven render assets/$scene.json --width 480 --height 360 --time 20 -o $out/$scene.png"
-    echo '```'
-    "$woven" render "assets/$scene.json" --width 480 --height 360 --time 20 -o "$out/$scene.png" 2>/dev/null
-  done
+  for scene in paper_a_anisotropy paper_b_curvature paper_c_twill paper_d_satin; do figure "$scene"; done
   echo
   echo "Figure 1: the woven model beside a plain isotropic lobe (the same A-S BRDF, e_x = e_y = 20,"
   echo "flat yarns, one colour) on the same cloth."
@@ -99,6 +102,15 @@ run() { echo '```'; echo "$*"; echo '```'; "$@" 2>/dev/null; }
   echo '```'
   "$woven" render assets/default_scene.json --width 480 --height 360 --time 20 --woven "$iso" -o "$out/figure1_isotropic.png" 2>/dev/null
   "$woven" render assets/default_scene.json --width 480 --height 360 --time 20 -o "$out/figure1_woven.png" 2>/dev/null
+  echo
+  echo "## Fabric from weaving drafts"
+  echo
+  echo "The sample drafts of assets/drafts (docs/DRAFTS.md), each named by its scene file's \"wif\": a"
+  echo "houndstooth (2/2 twill, 4 dark and 4 light threads both ways), a gingham (plain weave by lift"
+  echo "plan, 8 and 8), a 2/2 twill whose thicker cream and red stripe threads are spaced wider; then"
+  echo "the houndstooth at its real scale (\"scale\": \"draft\": 20 threads per cm through the mesh's"
+  echo "measured UV-to-world scale), seen from 37 cm with a 6 degree field of view."
+  for scene in houndstooth gingham twill_stripes houndstooth_real_scale; do figure "$scene"; done
 } > "$tmp"
 mv "$tmp" "$md"
 trap - EXIT

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "atomic_file.h"
+#include "draft_material.h"
 #include "woven_params_json.h"
 
 namespace woven {
@@ -23,20 +24,18 @@ nlohmann::json readJson(const std::string& path) {
     }
 }
 
-}  // namespace
-
-void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
-                  const std::string& gltf) {
+void saveMaterialJson(const std::string& path, const std::string& materialName, const nlohmann::json& material,
+                      const std::string& gltf) {
     nlohmann::json file;
     if (std::filesystem::exists(path)) {
         file = readJson(path);
         if (!file.is_object() || !file.contains("gltf"))
             throw std::runtime_error(path + ": not a woven scene file (no \"gltf\" key); not overwriting it");
-        file["materials"][materialName] = paramsToJson(params);
+        file["materials"][materialName] = material;
     } else if (!gltf.empty()) {
-        file = {{"gltf", gltf}, {"materials", {{materialName, paramsToJson(params)}}}};
+        file = {{"gltf", gltf}, {"materials", {{materialName, material}}}};
     } else {
-        file = paramsToJson(params);
+        file = material;
     }
     writeFileAtomically(path, [&](const std::string& tmp) {
         std::ofstream out(tmp);
@@ -45,16 +44,42 @@ void saveMaterial(const std::string& path, const std::string& materialName, cons
     });
 }
 
-WovenParams loadMaterial(const std::string& path, const std::string& materialName, const WovenParams& base) {
+}  // namespace
+
+void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
+                  const std::string& gltf) {
+    saveMaterialJson(path, materialName, paramsToJson(params), gltf);
+}
+
+std::string saveMaterialWithDraft(const std::string& path, const std::string& materialName, const WovenParams& params,
+                                  const std::string& gltf, DraftEditor& draft) {
+    const std::filesystem::path wif = std::filesystem::path(path).replace_extension(".wif");
+    nlohmann::json material = paramsToJson(params);
+    for (const std::string& field : fieldsSetByDraft(draft.draft())) material.erase(field);
+    material["wif"] = wif.filename().string();  // beside the material file
+    draft.save(wif.string());
+    saveMaterialJson(path, materialName, material, gltf);
+    return wif.string();
+}
+
+MaterialJson loadMaterial(const std::string& path, const std::string& materialName, const WovenParams& base,
+                          std::vector<std::string>& warnings) {
     const nlohmann::json file = readJson(path);
+    const std::string directory = std::filesystem::path(path).parent_path().string();
     try {
-        if (!file.is_object() || !file.contains("materials")) return paramsFromJson(file, base);
+        if (!file.is_object() || !file.contains("materials")) return materialFromJson(file, base, directory, warnings);
         const nlohmann::json& materials = file.at("materials");
-        WovenParams p = base;
-        if (materials.contains("*")) p = paramsFromJson(materials.at("*"), p);
-        if (materials.contains(materialName)) p = paramsFromJson(materials.at(materialName), p);
-        return p;
-    } catch (const std::invalid_argument& e) {
+        MaterialJson m;
+        m.params = base;
+        for (const char* key : {"*", materialName.c_str()}) {
+            if (!materials.contains(key)) continue;
+            MaterialJson next = materialFromJson(materials.at(key), m.params, directory, warnings);
+            if (next.wif.empty()) next.wif = m.wif;  // a named entry refines "*"'s draft
+            if (!next.threadsPerCm) next.threadsPerCm = m.threadsPerCm;
+            m = next;
+        }
+        return m;
+    } catch (const std::exception& e) {  // a bad key, or a draft (whose message names its file)
         throw std::runtime_error(path + ": " + e.what());
     }
 }

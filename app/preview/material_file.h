@@ -1,9 +1,12 @@
 #pragma once
 // The material being tuned, saved into a woven scene file (docs/SCENE_FORMAT.md) and read back,
-// through core's paramsToJson / paramsFromJson. Errors throw std::runtime_error naming the file.
+// through core's paramsToJson and materialFromJson, with or beside its draft. Errors throw
+// std::runtime_error naming the file.
 #include <string>
+#include <vector>
 
-#include "woven_params.h"
+#include "draft_editor.h"
+#include "material_json.h"
 
 namespace woven {
 
@@ -13,8 +16,16 @@ namespace woven {
 void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
                   const std::string& gltf);
 
+// The same with the draft the material was made from: the draft is written (and renamed) as a
+// WIF file beside `path` (its name with .wif), and the material names it ("wif") instead of
+// holding what the draft sets (fieldsSetByDraft()). Returns the WIF file's path.
+std::string saveMaterialWithDraft(const std::string& path, const std::string& materialName, const WovenParams& params,
+                                  const std::string& gltf, DraftEditor& draft);
+
 // From a scene file (its materials."*", then materials.<materialName>, on top of `base`) or a
-// bare parameter object.
-WovenParams loadMaterial(const std::string& path, const std::string& materialName, const WovenParams& base);
+// bare parameter object; a "wif" there is read relative to the file. Draft warnings go to
+// `warnings`.
+MaterialJson loadMaterial(const std::string& path, const std::string& materialName, const WovenParams& base,
+                          std::vector<std::string>& warnings);
 
 }  // namespace woven

@@ -64,7 +64,7 @@ PreviewRenderer::~PreviewRenderer() {
 
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
-    tiles_.clear();
+    weaves_.clear();
     textures_.reset(&scene.textures);
     shadowCasters_.clear();
     ++meshGeneration_;
@@ -193,21 +193,18 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     glUniform3fv(program.uniform("emission"), 1, glm::value_ptr(material.emission));
     uploadLights(program, lights);
     if (material.woven) {
-        auto& tile = tiles_[materialIndex];
-        if (!tile) tile = std::make_unique<WeaveTileTexture>();
-        tile->update(*material.woven);
+        auto& weave = weaves_[materialIndex];
+        if (!weave) weave = std::make_unique<WeaveTextures>();
+        weave->update(*material.woven);
         uploadWovenParams(program, *material.woven);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, tile->texture());
-        glUniform1i(program.uniform("weaveTile"), 0);
-        glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(tile->yarnCoverage()));
+        weave->bind(program);
     } else {
         glActiveTexture(GL_TEXTURE3);
         glBindTexture(GL_TEXTURE_2D, sheenAlbedoTable_);
         glUniform1i(program.uniform("sheenAlbedoTable"), 3);
         uploadGltfMaterial(program, material, textures_, 4);
     }
-    // After the weave tile's update, which binds on the active unit.
+    // After the weave's update, which binds on the active unit.
     if (shadows) shadows_->bind(program, 1, 2);
     mesh.draw();
 }

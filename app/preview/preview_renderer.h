@@ -53,7 +53,7 @@ private:
 
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
-    std::map<int, std::unique_ptr<WeaveTileTexture>> tiles_;  // by material index
+    std::map<int, std::unique_ptr<WeaveTextures>> weaves_;    // by material index
     GpuTextures textures_;                                    // SceneDescription::textures
     GLuint sheenAlbedoTable_ = 0;
     std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_;

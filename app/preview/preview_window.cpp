@@ -11,12 +11,15 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "demo_scene.h"
+#include "draft_material.h"
+#include "draft_view.h"
 #include "final_render.h"
 #include "gl_error.h"
 #include "image_io.h"
@@ -25,6 +28,7 @@
 #include "preview_renderer.h"
 #include "scene_loader.h"
 #include "scene_picker.h"
+#include "uv_scale.h"
 #include "weave_presets.h"
 #include "woven_assignment.h"
 #include "woven_edits.h"
@@ -43,6 +47,9 @@ bool hasExtension(const std::string& path, const char* ext) {
     const size_t n = std::char_traits<char>::length(ext);
     return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
 }
+
+// Weaving programs write .wif and .WIF alike.
+bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
 
 // A window with the newest core context the driver gives, 4.5 down to 3.3.
 GLFWwindow* createWindow(int width, int height) {
@@ -82,11 +89,14 @@ public:
 
 private:
     void openScene(const std::string& path);
+    void openDraft(const std::string& path);
     void handleMouse();
     void pick(glm::vec2 cursor);
     void drawPanel();
     void drawSelection();
     void drawMaterialControls(WovenParams& p);
+    void drawDraftControls(WovenParams& p);
+    void drawDraftWindow();
     void applyEdits();
     void drawLightControls();
     void drawRenderControls();
@@ -121,6 +131,13 @@ private:
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
+
+    // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
+    // parameters at once, so the next frame shows it.
+    std::optional<DraftEditor> draft_;
+    int draftEdit_ = -1;
+    DraftView draftView_;
+    char draftPath_[512] = "draft.wif";
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;
@@ -161,6 +178,7 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(opt
     glGenTextures(1, &finalTexture_);
     display_ = options.frame.display;
     openScene(options.scene);
+    if (!options.draft.empty()) openDraft(options.draft);
 }
 
 PreviewWindow::~PreviewWindow() {
@@ -190,9 +208,17 @@ void PreviewWindow::openScene(const std::string& path) {
     camera_ = OrbitCamera::forScene(scene());
     // The panel starts on the first woven material, as an edit of its own name (no change yet).
     editIndex_ = -1;
+    draft_.reset();
     for (const Material& m : scene().materials)
         if (m.woven) {
             editIndex_ = edits_->makeWoven(literalTarget(TargetKind::Material, m.name));
+            // A material made from a draft ("wif") opens it in the draft view.
+            if (!m.draft.empty()) {
+                std::vector<std::string> warnings;  // printed when the scene was read
+                draft_ = DraftEditor::open(m.draft, warnings);
+                draftEdit_ = editIndex_;
+                copyToBuffer(draftPath_, draft_->name());
+            }
             break;
         }
     presetIndex_ = -1;
@@ -206,6 +232,24 @@ void PreviewWindow::openScene(const std::string& path) {
     if (options_.frame.height <= 0 && scene().render.height <= 0) render_.height = std::max(windowHeight, 1);
     status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
+}
+
+void PreviewWindow::openDraft(const std::string& path) {
+    WovenParams* p = editedParams();
+    if (!p) throw std::runtime_error(path + ": nothing is woven to weave the draft on: click a surface and make it woven");
+    std::vector<std::string> warnings;
+    DraftEditor editor = DraftEditor::open(path, warnings);
+    *p = editor.material(*p);
+    draft_ = std::move(editor);
+    draftEdit_ = editIndex_;
+    presetIndex_ = -1;
+    applyEdits();
+    copyToBuffer(draftPath_, path);
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    status_ = "opened " + path;
+    if (!warnings.empty())
+        status_ += " (" + std::to_string(warnings.size()) + " warning" + (warnings.size() > 1 ? "s" : "") + ": " +
+                   warnings.front() + ")";
 }
 
 WovenParams* PreviewWindow::editedParams() {
@@ -297,6 +341,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         ImGui::EndCombo();
     }
     for (const ParamInfo& info : wovenParamTable()) {
+        if (!isNumeric(info.type)) continue;  // the tile and the per-thread lists: the draft view
         char* field = reinterpret_cast<char*>(&p) + info.offset;
         ImGui::PushID(info.name);
         const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
@@ -322,6 +367,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             }
             break;
         }
+        default: break;
         }
         ImGui::PopID();
     }
@@ -346,13 +392,94 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
     ImGui::SameLine();
     if (ImGui::Button("Load material")) {
         try {
-            p = loadMaterial(materialPath_, target, p);
+            std::vector<std::string> warnings;
+            const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
+            p = read.params;
+            if (read.threadsPerCm) p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target), *read.threadsPerCm);
             presetIndex_ = -1;
             status_ = std::string("loaded ") + materialPath_;
+            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+            if (!read.wif.empty()) {
+                draft_ = DraftEditor::open(read.wif, warnings);
+                draftEdit_ = editIndex_;
+                copyToBuffer(draftPath_, read.wif);
+            }
         } catch (const std::exception& e) {
             status_ = e.what();
         }
     }
+    drawDraftControls(p);
+}
+
+void PreviewWindow::drawDraftControls(WovenParams& p) {
+    ImGui::Separator();
+    ImGui::InputText("draft file", draftPath_, sizeof draftPath_);
+    if (ImGui::Button("Open draft")) {
+        try {
+            openDraft(draftPath_);
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (!draft_ || draftEdit_ != editIndex_) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(or drop a .wif on the window)");
+        return;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Save WIF")) {
+        try {
+            draft_->save(draftPath_);
+            status_ = std::string("saved ") + draftPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    // "scale": "draft": the draft's threads per centimetre on this mesh.
+    if (ImGui::Button("Real scale")) {
+        try {
+            const std::string& target = edits_->edits()[size_t(editIndex_)].target;
+            p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
+                                             draftThreadsPerCm(draft_->draft(), draft_->name()));
+            validate(p);
+            status_ = "repeat from the draft's spacing";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (ImGui::Button("Save material with draft")) {
+        try {
+            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
+            const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
+                                                          gltf ? scenePath_ : "", *draft_);
+            copyToBuffer(draftPath_, wif);
+            status_ = std::string("saved ") + materialPath_ + " and " + wif;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+// The draft view of the material the draft belongs to, beside the panel.
+void PreviewWindow::drawDraftWindow() {
+    if (!draft_ || draftEdit_ < 0 || draftEdit_ >= int(edits_->edits().size())) return;
+    WovenParams* woven = &edits_->params(draftEdit_);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(456, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::max(display.x - 464, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Draft");
+    try {
+        if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
+            *woven = draft_->material(*woven);
+            presetIndex_ = -1;
+            showFinal_ = false;  // the rendered frame is of the old cloth
+            applyEdits();
+        }
+    } catch (const std::exception& e) {
+        status_ = e.what();
+    }
+    ImGui::End();
 }
 
 // Edits the scene's own lights, so the Render button sees the same lighting as the preview.
@@ -568,7 +695,8 @@ void PreviewWindow::run() {
         dropped.swap(droppedPaths_);
         for (const std::string& path : dropped) {
             try {
-                openScene(path);
+                if (isDraftFile(path)) openDraft(path);
+                else openScene(path);
             } catch (const std::exception& e) {
                 status_ = e.what();
             }
@@ -582,6 +710,7 @@ void PreviewWindow::run() {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         drawPanel();
+        drawDraftWindow();
         drawFinalImage();
         handleMouse();
         ImGui::Render();

@@ -1,7 +1,8 @@
 #pragma once
 // The interactive previewer: a GLFW window with an OpenGL core context, the scene drawn by
 // PreviewRenderer, and a Dear ImGui panel to tune the woven material live (sliders generated
-// from wovenParamTable()), pick weave presets, save/load the material, and run the Render
+// from wovenParamTable()), pick weave presets, edit the material's draft (a .wif dropped on the
+// window or opened from the panel: draft_view.h), save/load the material, and run the Render
 // button's FinalRender with its progressive result shown in the window.
 #include <string>
 
@@ -17,6 +18,7 @@ struct PreviewWindowOptions {
     FrameOptions frame;
     int frames = 0;              // quit after this many frames; 0 = until the window is closed
     std::string screenshot;      // PNG of the last frame (panel included), written before quitting
+    std::string draft;           // a WIF file to open on the first woven material at start
 };
 
 // Runs until the window closes (or `frames` frames). Throws GlError when no window or context

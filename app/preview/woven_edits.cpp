@@ -2,15 +2,15 @@
 
 #include <algorithm>
 
-#include "mesh_attributes.h"
 #include "scene_loader.h"
+#include "uv_scale.h"
 #include "woven_assignment.h"
 #include "woven_params_json.h"
 
 namespace woven {
 
 namespace {
-constexpr float kNewElementSize = 0.002f;  // metres
+constexpr float kNewThreadsPerCm = 5.0f;  // 2 mm elements
 }  // namespace
 
 WovenEdits::WovenEdits(SceneDescription loaded) : scene_(std::move(loaded)), loadedMaterials_(scene_.materials) {
@@ -32,10 +32,11 @@ bool WovenEdits::names(const std::string& target, size_t mesh) const {
     return targetNames(target, scene_.meshes[mesh], loaded >= 0 ? &loadedMaterials_[size_t(loaded)] : nullptr);
 }
 
-float WovenEdits::firstWorldPerUv(const std::string& target) const {
+std::vector<size_t> WovenEdits::meshesOf(const std::string& target) const {
+    std::vector<size_t> meshes;
     for (size_t m = 0; m < scene_.meshes.size(); ++m)
-        if (names(target, m)) return worldPerUv(scene_.meshes[m]);
-    return 0.0f;
+        if (names(target, m)) meshes.push_back(m);
+    return meshes;
 }
 
 int WovenEdits::materialOf(const std::string& target) const {
@@ -54,9 +55,14 @@ int WovenEdits::makeWoven(const std::string& target) {
     WovenParams start;
     if (material >= 0 && scene_.materials[size_t(material)].woven) {
         start = *scene_.materials[size_t(material)].woven;
-    } else if (const float scale = firstWorldPerUv(target); scale > 0.0f) {
+    } else {
         // New cloth starts at a real thread size: 2 mm elements (glTF's unit is the metre).
-        start.repeat = glm::vec2(std::clamp(scale / kNewElementSize, 1.0f, 1e5f));
+        try {
+            const glm::vec2 repeat = repeatForThreadsPerCm(scene_, meshesOf(target), glm::vec2(kNewThreadsPerCm));
+            start.repeat = glm::clamp(repeat, glm::vec2(1.0f), glm::vec2(1e5f));
+        } catch (const std::invalid_argument&) {
+            // No UVs to measure: the default repeat.
+        }
     }
     edits_.push_back({target, start});
     apply();

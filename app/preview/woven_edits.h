@@ -44,11 +44,12 @@ public:
     bool apply();
     // The material (in scene()) of the first primitive `target` names, or -1.
     int materialOf(const std::string& target) const;
+    // The primitives (indices into scene().meshes) `target` names.
+    std::vector<size_t> meshesOf(const std::string& target) const;
 
 private:
     // Whether `target` names primitive `mesh` by the names it was loaded with.
     bool names(const std::string& target, size_t mesh) const;
-    float firstWorldPerUv(const std::string& target) const;
 
     SceneDescription scene_;
     std::vector<Material> loadedMaterials_;

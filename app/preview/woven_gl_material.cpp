@@ -2,11 +2,12 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
-#include "scene_description.h"
-#include "weave_pattern.h"
+#include "weave.h"
 
 namespace woven {
 
@@ -19,17 +20,69 @@ const char* glslType(ParamType t) {
         case ParamType::Vec2: return "vec2";
         case ParamType::Vec3: return "vec3";
         case ParamType::IVec3: return "ivec3";
+        default: return nullptr;  // lists: textures
     }
-    return "float";
 }
 
-// Fraction of the surface where (weft, warp) is seen, given the fraction of elements with warp
-// on top: the top yarn covers its width across the element, the crossing yarn its own width of
-// the rest (yarnAt's rule).
-glm::vec2 coverageOf(float warpOnTop, float weftWidth, float warpWidth) {
-    const float weftTop = 1.0f - warpOnTop;
-    return {weftTop * weftWidth + warpOnTop * (1.0f - warpWidth) * weftWidth,
-            warpOnTop * warpWidth + weftTop * (1.0f - weftWidth) * warpWidth};
+// Everything the tile texture is made of.
+bool sameTile(const WovenParams& a, const WovenParams& b) {
+    return a.pattern == b.pattern && a.tile == b.tile && (a.crimp > 0.0f) == (b.crimp > 0.0f);
+}
+
+// Everything the thread table and the far-field weights are made of, but the yarns' shading
+// fields: the tile, the lists, the colours and the widths.
+bool sameThreads(const WovenParams& a, const WovenParams& b) {
+    return sameTile(a, b) && a.warp_colors == b.warp_colors && a.weft_colors == b.weft_colors &&
+           a.warp_yarns == b.warp_yarns && a.weft_yarns == b.weft_yarns && a.warp_spacing == b.warp_spacing &&
+           a.weft_spacing == b.weft_spacing && a.warp_color == b.warp_color && a.weft_color == b.weft_color &&
+           a.yarn_width == b.yarn_width && a.warp_width == b.warp_width && a.yarns == b.yarns;
+}
+
+void uploadBuffer(GLuint buffer, GLuint texture, const std::vector<glm::vec4>& texels) {
+    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * sizeof(glm::vec4)), texels.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_BUFFER, texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, buffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
+
+// The 1D colour track of one side for the weave filter, over one period in mean thread widths
+// (the shader's e / period): per bin (colour x the length of it in the bin, that length), so a
+// filtered lookup is the mean colour over what it covers. A bin per thread for even spacing;
+// for uneven spacing up to 8 bins per mean width, each the threads' colours by their overlap,
+// so wide and narrow threads keep their places. A period longer than the GPU's widest texture
+// gets several threads a bin.
+void uploadColorTrack(GLuint texture, const ThreadLayout& side) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const double period = side.period();
+    const int bins = side.spaced() ? int(std::min(8.0, std::max(1.0, std::floor(maxSize / period))) * period)
+                                   : int(std::min(period, double(maxSize)));
+    const double binsPerWidth = bins / period;
+    std::vector<glm::vec4> texels(size_t(bins), glm::vec4(0.0f));
+    for (int k = 0; k < side.period(); ++k) {
+        // The thread's cell in bin units, spread over the bins it overlaps.
+        const double begin = (side.spaced() ? side.start(k) : k) * binsPerWidth;
+        const double end = begin + (side.spaced() ? side.width(k) : 1.0) * binsPerWidth;
+        for (int b = int(begin); b < bins && b < end; ++b) {
+            const float overlap = float(std::min(end, b + 1.0) - std::max(begin, double(b)));
+            texels[size_t(b)] += glm::vec4(side.color(k) * overlap, overlap);
+        }
+    }
+    glBindTexture(GL_TEXTURE_1D, texture);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA32F, bins, 0, GL_RGBA, GL_FLOAT, texels.data());
+    glGenerateMipmap(GL_TEXTURE_1D);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_1D, 0);
+}
+
+void setNearest(GLenum target) {
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
 }
 
 }  // namespace
@@ -37,24 +90,30 @@ glm::vec2 coverageOf(float warpOnTop, float weftWidth, float warpWidth) {
 std::string wovenParamsGlslStruct() {
     std::ostringstream s;
     s << "struct WovenParams {\n";
-    for (const ParamInfo& info : wovenParamTable()) s << "    " << glslType(info.type) << " " << info.name << ";\n";
+    for (const ParamInfo& info : wovenParamTable())
+        if (isNumeric(info.type)) s << "    " << glslType(info.type) << " " << info.name << ";\n";
     s << "};\n";
     return s.str();
 }
 
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     std::string d;
-    if (p.noise > 0.0f) d += "#define WOVEN_NOISE\n";
+    if (hasNoise(p)) d += "#define WOVEN_NOISE\n";
     if (p.crimp > 0.0f) d += "#define WOVEN_CRIMP\n";
-    if (p.yarn_width < 1.0f && p.warp_width < 1.0f) d += "#define WOVEN_GAPS\n";
+    if (mayShowGaps(p)) d += "#define WOVEN_GAPS\n";
+    if (hasThreadLists(p)) d += "#define WOVEN_THREADS\n";
+    if (!p.warp_spacing.empty() || !p.weft_spacing.empty()) d += "#define WOVEN_SPACING\n";
     if (filterWeave) d += "#define WOVEN_FILTER\n";
     return d;
 }
 
-bool readThroughWeaveTile(const ParamInfo& info) { return std::string(info.name) == "pattern"; }
+bool readThroughTextures(const ParamInfo& info) {
+    return !isNumeric(info.type) || std::string(info.name) == "pattern";
+}
 
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p) {
     for (const ParamInfo& info : wovenParamTable()) {
+        if (!isNumeric(info.type)) continue;
         const GLint location = program.uniform((std::string("material.") + info.name).c_str());
         if (location < 0) continue;  // compiled out for this material
         const char* base = reinterpret_cast<const char*>(&p) + info.offset;
@@ -66,50 +125,119 @@ void uploadWovenParams(const ShaderProgram& program, const WovenParams& p) {
             case ParamType::Vec2: glUniform2fv(location, 1, f); break;
             case ParamType::Vec3: glUniform3fv(location, 1, f); break;
             case ParamType::IVec3: glUniform3iv(location, 1, i); break;
+            default: break;
         }
     }
 }
 
-WeaveTileTexture::WeaveTileTexture() { glGenTextures(1, &texture_); }
+WeaveTextures::WeaveTextures() {
+    glGenTextures(1, &tile_);
+    glGenTextures(1, &floats_);
+    glGenTextures(1, &threadTable_);
+    glGenTextures(1, &yarnTable_);
+    glGenTextures(2, colorTracks_);
+    glGenBuffers(1, &threadBuffer_);
+    glGenBuffers(1, &yarnBuffer_);
+}
 
-WeaveTileTexture::~WeaveTileTexture() { glDeleteTextures(1, &texture_); }
+WeaveTextures::~WeaveTextures() {
+    const GLuint textures[] = {tile_, floats_, threadTable_, yarnTable_, colorTracks_[0], colorTracks_[1]};
+    glDeleteTextures(6, textures);
+    const GLuint buffers[] = {threadBuffer_, yarnBuffer_};
+    glDeleteBuffers(2, buffers);
+}
 
-void WeaveTileTexture::update(const WovenParams& p) {
-    std::ostringstream key;
-    key << p.pattern.x << ',' << p.pattern.y << ',' << p.pattern.z << ',' << p.yarn_width << ',' << p.warp_width;
-    for (const std::string& row : p.tile) key << ',' << row;
-    if (key.str() == key_) return;
-    key_ = key.str();
-
-    const WeavePattern front = WeavePattern::fromParams(p);
-    const WeavePattern back = front.reversed();
-    const int w = front.width(), h = front.height();
-    std::vector<float> texels(size_t(w) * h * 4 * 2);
-    int warpCells = 0;
-    for (int face = 0; face < 2; ++face) {
-        const WeavePattern& tile = face == 0 ? front : back;
-        for (int V = 0; V < h; ++V)
-            for (int U = 0; U < w; ++U) {
-                float* t = &texels[((size_t(face) * h + V) * w + U) * 4];
-                const bool warp = tile.top(U, V) == YarnType::Warp;
-                const WeavePattern::Float f = tile.floatAt(U, V);
-                t[0] = warp ? 1.0f : 0.0f;
-                t[1] = float(f.position);
-                t[2] = float(f.length);
-                t[3] = 0.0f;
-                if (face == 0) warpCells += warp;
-            }
+void WeaveTextures::update(const WovenParams& p) {
+    if (!uploaded_ || !sameThreads(*uploaded_, p)) {
+        const Weave weave(p);
+        if (!uploaded_ || !sameTile(*uploaded_, p)) updateTile(weave);
+        updateThreads(weave);
+        coverage_[0] = weaveCoverage(weave, false);
+        coverage_[1] = weaveCoverage(weave, true);
     }
-    const float warpFraction = float(warpCells) / float(w * h);
-    coverage_ = glm::vec4(coverageOf(warpFraction, p.yarn_width, p.warp_width),
-                          coverageOf(1.0f - warpFraction, p.yarn_width, p.warp_width));
+    // The yarn table: the resolved yarns, which every yarn slider changes; a few floats each.
+    std::vector<glm::vec4> yarns;
+    for (const Yarn& y : Weave::resolvedYarns(p)) {
+        yarns.emplace_back(y.ex(), y.ey(), y.rs(), y.width());
+        yarns.emplace_back(y.cy(), y.noise(), 0.0f, 0.0f);
+    }
+    uploadBuffer(yarnBuffer_, yarnTable_, yarns);
+    uploaded_ = p;
+}
 
-    glBindTexture(GL_TEXTURE_2D_ARRAY, texture_);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, w, h, 2, 0, GL_RGBA, GL_FLOAT, texels.data());
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+void WeaveTextures::updateTile(const Weave& weave) {
+    // The front face's bit per cell (the back inverts it in the shader), one byte a texel.
+    const WeavePattern& front = weave.pattern(false);
+    const int w = front.width(), h = front.height();
+    std::vector<uint8_t> warp(size_t(w) * size_t(h));
+    for (int v = 0; v < h; ++v)
+        for (int u = 0; u < w; ++u) warp[size_t(v) * size_t(w) + size_t(u)] = front.topInTile(u, v) == YarnType::Warp;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBindTexture(GL_TEXTURE_2D, tile_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, w, h, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, warp.data());
+    setNearest(GL_TEXTURE_2D);
+    if (const WeaveFloats* floats = weave.floats()) {
+        glBindTexture(GL_TEXTURE_2D, floats_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16UI, w, h, 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT, floats->runs().data());
+        setNearest(GL_TEXTURE_2D);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
+void WeaveTextures::updateThreads(const Weave& weave) {
+    // Per slot, warp ends then weft picks: (colour, yarn), (cell start, cell width, the slot the
+    // unit interval from the slot's index starts in), as ThreadLayout keeps them.
+    std::vector<glm::vec4> texels;
+    const ThreadLayout* sides[] = {&weave.warp(), &weave.weft()};
+    for (int s = 0; s < 2; ++s) {
+        const ThreadLayout& side = *sides[s];
+        for (int k = 0; k < side.period(); ++k) {
+            texels.emplace_back(side.color(k), float(side.yarn(k)));
+            texels.push_back(side.spaced() ? glm::vec4(float(side.start(k)), float(side.width(k)),
+                                                       float(side.firstInInterval(k)), 0.0f)
+                                           : glm::vec4(float(k), 1.0f, float(k), 0.0f));
+        }
+        threadPeriod_[s] = side.period();
+        threadSpaced_[s] = side.spaced() ? 1 : 0;
+        uploadColorTrack(colorTracks_[s], side);
+    }
+    uploadBuffer(threadBuffer_, threadTable_, texels);
+}
+
+void WeaveTextures::bind(const ShaderProgram& program) const {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tile_);
+    glUniform1i(program.uniform("weaveTile"), 0);
+    const GLint floats = program.uniform("weaveFloats");
+    if (floats >= 0) {
+        glActiveTexture(GL_TEXTURE3);
+        glBindTexture(GL_TEXTURE_2D, floats_);
+        glUniform1i(floats, 3);
+    }
+    const GLint threads = program.uniform("threadTable");
+    if (threads >= 0) {
+        glActiveTexture(GL_TEXTURE4);
+        glBindTexture(GL_TEXTURE_BUFFER, threadTable_);
+        glUniform1i(threads, 4);
+        glActiveTexture(GL_TEXTURE5);
+        glBindTexture(GL_TEXTURE_BUFFER, yarnTable_);
+        glUniform1i(program.uniform("yarnTable"), 5);
+        glUniform2iv(program.uniform("threadPeriod"), 1, glm::value_ptr(threadPeriod_));
+        glUniform2iv(program.uniform("threadSpaced"), 1, glm::value_ptr(threadSpaced_));
+    }
+    const GLint warpColors = program.uniform("warpColorTexture");
+    if (warpColors >= 0) {
+        glActiveTexture(GL_TEXTURE6);
+        glBindTexture(GL_TEXTURE_1D, colorTracks_[0]);
+        glUniform1i(warpColors, 6);
+        glActiveTexture(GL_TEXTURE7);
+        glBindTexture(GL_TEXTURE_1D, colorTracks_[1]);
+        glUniform1i(program.uniform("weftColorTexture"), 7);
+    }
+    const glm::vec4 coverage(coverage_[0].weft, coverage_[0].warp, coverage_[1].weft, coverage_[1].warp);
+    glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(coverage));
+    glActiveTexture(GL_TEXTURE0);
 }
 
 std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bool shadows) {

@@ -1,50 +1,61 @@
 #pragma once
 // A woven material on the GPU: the GLSL declaration of `struct WovenParams` and the upload of
-// every field, both generated from core's wovenParamTable() so the C++ struct, the scene files,
-// the sliders and the shader share one list; the weave tile of both faces as a texture; the
-// #defines that compile in only the features the material uses.
+// every numeric field, both generated from core's wovenParamTable() so the C++ struct, the scene
+// files, the sliders and the shader share one list; the weave and the per-thread lists as
+// textures; the #defines that compile in only the features the material uses.
 #include <epoxy/gl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "shader_program.h"
+#include "weave_coverage.h"  // Weave, WeaveCoverage
 #include "woven_params.h"
 
 namespace woven {
 
-// "struct WovenParams { ivec3 pattern; vec2 repeat; ... };", one member per table entry.
+// "struct WovenParams { ivec3 pattern; vec2 repeat; ... };", one member per numeric table entry.
 std::string wovenParamsGlslStruct();
 
-// "#define WOVEN_NOISE\n..." for the features `p` uses (noise, crimp, see-through gaps) and the
-// far-field weave filter when `filterWeave`.
+// "#define WOVEN_NOISE\n..." for the features `p` uses (noise, crimp, see-through gaps,
+// per-thread lists, uneven spacing) and the far-field weave filter when `filterWeave`.
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave);
 
-// Table entries the shader gets through the weave tile texture instead of reading the uniform
-// (the weave (i, j, k), turned into a tile on the CPU by WeavePattern::fromParams).
-bool readThroughWeaveTile(const ParamInfo& info);
+// Table entries the shader gets through WeaveTextures instead of reading a uniform: the weave
+// (i, j, k) and `tile`, turned into a tile on the CPU by WeavePattern::fromParams, and the
+// per-thread lists.
+bool readThroughTextures(const ParamInfo& info);
 
-// Sets uniform `material.<name>` for every table entry the program uses.
+// Sets uniform `material.<name>` for every numeric table entry the program uses.
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p);
 
-// The tile of the front and back faces as a 2-layer RGBA32F texture array (see
-// shaders/woven_params.glsl), and the area each yarn type covers per face.
-class WeaveTileTexture {
+// The textures of a woven material (shaders/woven_params.glsl): the weave tile, its floats when
+// the crimp needs them, the threads and yarns of core's Weave and their colours mipmapped for
+// the weave filter; with the far-field weights (weaveCoverage()) of both faces.
+class WeaveTextures {
 public:
-    WeaveTileTexture();
-    ~WeaveTileTexture();
-    WeaveTileTexture(const WeaveTileTexture&) = delete;
-    WeaveTileTexture& operator=(const WeaveTileTexture&) = delete;
+    WeaveTextures();
+    ~WeaveTextures();
+    WeaveTextures(const WeaveTextures&) = delete;
+    WeaveTextures& operator=(const WeaveTextures&) = delete;
 
-    void update(const WovenParams& p);  // rebuilds only when the weave or the widths changed
-    GLuint texture() const { return texture_; }
-    // Fractions of the surface showing (weft, warp) on the front (xy) and back (zw) face.
-    const glm::vec4& yarnCoverage() const { return coverage_; }
+    // Rebuilds what `p` changed since the last update: the tile when the weave changed, the
+    // thread and yarn tables (a few kilobytes) when anything about the threads did.
+    void update(const WovenParams& p);
+    // Binds the textures to units 0 (tile), 3 (floats), 4 (threads), 5 (yarns), 6 and 7 (the
+    // filter's warp and weft colours) and sets the uniforms that go with them.
+    void bind(const ShaderProgram& program) const;
 
 private:
-    GLuint texture_ = 0;
-    glm::vec4 coverage_{0.0f};
-    std::string key_;
+    void updateTile(const Weave& weave);
+    void updateThreads(const Weave& weave);
+
+    GLuint tile_ = 0, floats_ = 0, threadBuffer_ = 0, threadTable_ = 0, yarnBuffer_ = 0, yarnTable_ = 0;
+    GLuint colorTracks_[2] = {0, 0};  // warp, weft: the weave filter's mipmapped thread colours
+    glm::ivec2 threadPeriod_{1}, threadSpaced_{0};
+    WeaveCoverage coverage_[2];  // front, back
+    std::optional<WovenParams> uploaded_;
 };
 
 // The woven program's preamble for a material: feature #defines (PREVIEW_SHADOWS when

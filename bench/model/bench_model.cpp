@@ -1,9 +1,11 @@
 // Cost of one BSDF query: the bare Ashikhmin-Shirley lobe against the full woven material
 // (pattern lookup, yarn geometry, bump frame, noise, then the lobe), with the woven features
-// off and on. The full/bare ratio is what the weave adds per shading point.
+// off and on, and a 1024 x 1024-thread draft against the plain weave (1,1,1). The full/bare
+// ratio is what the weave adds per shading point.
 #include <benchmark/benchmark.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
 #include "ashikhmin_shirley.h"
@@ -50,6 +52,45 @@ WovenParams featuresOff() {
     p.yarn_width = p.warp_width = 1.0f;
     p.noise = 0.0f;
     p.crimp = 0.0f;
+    return p;
+}
+
+// The plain weave (1,1,1) with every feature off: the reference a draft is measured against.
+WovenParams plainWeave() {
+    WovenParams p = featuresOff();
+    p.pattern = {1, 1, 1};
+    return p;
+}
+
+// A draft of n x n threads with everything per thread: a random tile (fixed seed: no structure
+// the caches could exploit), a colour and one of four yarn types per end and per pick, uneven
+// spacing (0.5 to 1.5) when `spaced`. The queries span 1280 threads each way, more than the
+// largest tile; n = 16 against n = 1024 shows the cost does not grow with the draft.
+WovenParams draft(int n, bool spaced) {
+    WovenParams p = featuresOff();
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+    p.tile.assign(size_t(n), std::string(size_t(n), '-'));
+    for (std::string& row : p.tile)
+        for (char& c : row) c = uni(rng) < 0.5f ? '|' : '-';
+    for (int f = 0; f < 4; ++f) {
+        YarnSpec yarn;
+        yarn.value[kYarnEx] = 50.0f + 100.0f * f;
+        yarn.value[kYarnWidth] = 0.7f + 0.1f * f;
+        yarn.set[kYarnEx] = yarn.set[kYarnWidth] = true;
+        p.yarns.push_back(yarn);
+    }
+    for (int t = 0; t < n; ++t) {
+        p.warp_colors.emplace_back(uni(rng), uni(rng), uni(rng));
+        p.weft_colors.emplace_back(uni(rng), uni(rng), uni(rng));
+        p.warp_yarns.push_back(int(rng() % 4));
+        p.weft_yarns.push_back(int(rng() % 4));
+        if (spaced) {
+            p.warp_spacing.push_back(0.5f + uni(rng));
+            p.weft_spacing.push_back(0.5f + uni(rng));
+        }
+    }
+    p.repeat = glm::vec2(64.0f);
     return p;
 }
 
@@ -102,6 +143,17 @@ void BM_WovenShadeEval(benchmark::State& state, const WovenParams& params) {
     }
 }
 
+// shade() alone: the weave lookup, yarn geometry and frame a shading point costs, without the lobe.
+void BM_WovenShade(benchmark::State& state, const WovenParams& params) {
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(material.shade(hitAt(q.uv[i])));
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
 void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
     const WovenMaterial material(params);
     const Queries& q = queries();
@@ -118,6 +170,14 @@ void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
 
 BENCHMARK(BM_BareEval);
 BENCHMARK(BM_BareSample);
+BENCHMARK_CAPTURE(BM_WovenShade, plain_111, plainWeave());
+BENCHMARK_CAPTURE(BM_WovenShade, draft_16_even, draft(16, false));
+BENCHMARK_CAPTURE(BM_WovenShade, draft_1024_even, draft(1024, false));
+BENCHMARK_CAPTURE(BM_WovenShade, draft_16_spaced, draft(16, true));
+BENCHMARK_CAPTURE(BM_WovenShade, draft_1024_spaced, draft(1024, true));
+BENCHMARK_CAPTURE(BM_WovenShadeEval, plain_111, plainWeave());
+BENCHMARK_CAPTURE(BM_WovenShadeEval, draft_1024_even, draft(1024, false));
+BENCHMARK_CAPTURE(BM_WovenShadeEval, draft_1024_spaced, draft(1024, true));
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_on, featuresOn());

@@ -8,11 +8,9 @@
 #include <vector>
 
 #include "draft.h"
+#include "woven_params.h"  // kMaxTileCells: the model's limit
 
 namespace woven {
-
-// A tile larger than this is refused: WeavePattern keeps about 9 bytes per cell.
-constexpr size_t kMaxTileCells = size_t(1) << 24;
 
 struct DraftTile {
     std::vector<std::string> rows;  // one per pick, one character per end: '|' warp on top, '-' weft

@@ -9,7 +9,7 @@
 #include <tuple>
 
 #include "drawdown.h"
-#include "image_io.h"
+#include "srgb.h"
 #include "text_encoding.h"
 #include "wif_sections.h"
 

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "atomic_file.h"
-#include "image_io.h"
+#include "srgb.h"
 #include "text_encoding.h"
 
 namespace woven {

@@ -40,18 +40,17 @@ Frame tangentFrame(const glm::vec3& n, const glm::vec3& dpdu, const glm::vec3& d
 
 WovenMaterial::WovenMaterial(const WovenParams& params)
     : params_((validate(params), params)),
-      front_(WeavePattern::fromParams(params)),
-      back_(front_.reversed()),
-      mayHaveGaps_(params.yarn_width < 1.0f && params.warp_width < 1.0f && params.backing == 0) {}
+      weave_(params),
+      mayHaveGaps_(mayShowGaps(params) && params.backing == 0) {}
 
 bool WovenMaterial::isSeeThrough(const glm::dvec2& uv) const {
     if (!mayHaveGaps_) return false;
     // Both yarns' coverage is the same on either face, so the front tile answers for both.
-    return yarnAt(front_, params_, uv).type == YarnType::Gap;
+    return yarnAt(weave_, params_, false, uv).type == YarnType::Gap;
 }
 
 std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in) const {
-    const YarnPoint y = yarnAt(pattern(in.backSide), params_, in.uv);
+    const YarnPoint y = yarnAt(weave_, params_, in.backSide, in.uv);
     const glm::vec3 n = in.backSide ? -in.ns : in.ns;
     const Frame tangent = tangentFrame(n, in.dpdu, in.dpdv);
 
@@ -60,17 +59,17 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in) const {
         return WovenShading{YarnType::Gap, SurfaceBsdf(tangent, AshikhminShirley(0.0f, 0.0f, 0.0f, params_.backing_color))};
     }
     const bool weft = y.type == YarnType::Weft;
-    glm::vec3 color = weft ? params_.weft_color : params_.warp_color;
-    if (params_.noise > 0.0f) {
+    const Yarn& yarn = weave_.yarn(y.yarn);
+    glm::vec3 color = (weft ? weave_.weft() : weave_.warp()).color(y.slot);
+    if (yarn.noise() > 0.0f) {
         // The seed wraps the yarn index to 32 bits, as the GLSL twin does.
         const uint32_t seed = uint32_t(y.yarnIndex) * 2U + (weft ? 0U : 1U);
         const float n01 = yarnNoise(y.along * params_.noise_scale, seed);
-        color = glm::clamp(color * (1.0f + params_.noise * n01), 0.0f, 1.0f);
+        color = glm::clamp(color * (1.0f + yarn.noise() * n01), 0.0f, 1.0f);
     }
     const glm::vec3 bumped = tangent.toWorld(y.normal);
     const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
-    const AshikhminShirley lobe = weft ? AshikhminShirley(params_.ex, params_.ey, params_.rs, color)
-                                       : AshikhminShirley(params_.warp_ex, params_.warp_ey, params_.rs, color);
+    const AshikhminShirley lobe(yarn.ex(), yarn.ey(), yarn.rs(), color);
     return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
 }
 

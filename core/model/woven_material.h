@@ -1,6 +1,6 @@
 #pragma once
-// A woven material ready to shade: its parameters plus the tiles of both faces of the cloth,
-// built once per material, so a hit only looks things up.
+// A woven material ready to shade: its parameters plus its Weave (the tiles of both faces of the
+// cloth, its threads and yarns), built once per material, so a hit only looks things up.
 #include <optional>
 
 #include "surface_bsdf.h"
@@ -28,7 +28,8 @@ public:
     explicit WovenMaterial(const WovenParams& params);  // throws std::invalid_argument
 
     const WovenParams& params() const { return params_; }
-    const WeavePattern& pattern(bool backSide) const { return backSide ? back_ : front_; }
+    const WeavePattern& pattern(bool backSide) const { return weave_.pattern(backSide); }
+    const Weave& weave() const { return weave_; }
 
     // nullopt where the point is a see-through gap: the ray passes on as through an alpha cut-out.
     std::optional<WovenShading> shade(const ShadingInput& in) const;
@@ -39,7 +40,7 @@ public:
 
 private:
     WovenParams params_;
-    WeavePattern front_, back_;
+    Weave weave_;
     bool mayHaveGaps_;
 };
 

@@ -2,45 +2,68 @@
 
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
 namespace woven {
 
+bool operator==(const YarnSpec& a, const YarnSpec& b) {
+    for (int f = 0; f < kYarnFieldCount; ++f)
+        if (a.set[f] != b.set[f] || (a.set[f] && a.value[f] != b.value[f])) return false;
+    return true;
+}
+
 const std::vector<ParamInfo>& wovenParamTable() {
     using P = WovenParams;
     using T = ParamType;
+    using S = YarnSide;
     static const std::vector<ParamInfo> table = {
         {"pattern", T::IVec3, offsetof(P, pattern), 0, 1024, false, "weave (i, j, k)", nullptr},
-        {"repeat", T::Vec2, offsetof(P, repeat), 1e-6f, 1e6f, true, "elements per UV unit (1/n, 1/m)", nullptr},
-        {"ex", T::Float, offsetof(P, ex), 0, 1e5f, true, "weft e_x (along yarn)", nullptr},
-        {"ey", T::Float, offsetof(P, ey), 0, 1e5f, true, "weft e_y (across yarn)", nullptr},
-        {"warp_ex", T::Float, offsetof(P, warp_ex), 0, 1e5f, true, "warp e_x (along yarn)", "ex"},
-        {"warp_ey", T::Float, offsetof(P, warp_ey), 0, 1e5f, true, "warp e_y (across yarn)", "ey"},
-        {"rs", T::Float, offsetof(P, rs), 0, 1, false, "R_s specular reflectance", nullptr},
+        {"tile", T::Rows, offsetof(P, tile), 0, 0, false, "weave tile ('-' weft, '|' warp)", nullptr},
+        {"repeat", T::Vec2, offsetof(P, repeat), 1e-6f, 1e6f, true, "threads per UV unit (1/n, 1/m)", nullptr},
+        {"ex", T::Float, offsetof(P, ex), 0, 1e5f, true, "weft e_x (along yarn)", nullptr, kYarnEx, S::Weft},
+        {"ey", T::Float, offsetof(P, ey), 0, 1e5f, true, "weft e_y (across yarn)", nullptr, kYarnEy, S::Weft},
+        {"warp_ex", T::Float, offsetof(P, warp_ex), 0, 1e5f, true, "warp e_x (along yarn)", "ex", kYarnEx, S::Warp},
+        {"warp_ey", T::Float, offsetof(P, warp_ey), 0, 1e5f, true, "warp e_y (across yarn)", "ey", kYarnEy, S::Warp},
+        {"rs", T::Float, offsetof(P, rs), 0, 1, false, "R_s specular reflectance", nullptr, kYarnRs, S::Both},
         {"weft_color", T::Vec3, offsetof(P, weft_color), 0, 1, false, "weft R_d", nullptr},
         {"warp_color", T::Vec3, offsetof(P, warp_color), 0, 1, false, "warp R_d", "weft_color"},
-        {"cy", T::Float, offsetof(P, cy), 0, 1, false, "c_y yarn curvature", nullptr},
-        {"yarn_width", T::Float, offsetof(P, yarn_width), 1e-3f, 1, false, "weft yarn width", nullptr},
-        {"warp_width", T::Float, offsetof(P, warp_width), 1e-3f, 1, false, "warp yarn width", "yarn_width"},
+        {"cy", T::Float, offsetof(P, cy), 0, 1, false, "c_y yarn curvature", nullptr, kYarnCy, S::Both},
+        {"yarn_width", T::Float, offsetof(P, yarn_width), 1e-3f, 1, false, "weft yarn width", nullptr, kYarnWidth, S::Weft},
+        {"warp_width", T::Float, offsetof(P, warp_width), 1e-3f, 1, false, "warp yarn width", "yarn_width", kYarnWidth, S::Warp},
         {"crimp", T::Float, offsetof(P, crimp), 0, 1, false, "crimp along floats", nullptr},
-        {"noise", T::Float, offsetof(P, noise), 0, 1, false, "per-yarn noise", nullptr},
+        {"noise", T::Float, offsetof(P, noise), 0, 1, false, "per-yarn noise", nullptr, kYarnNoise, S::Both},
         {"noise_scale", T::Float, offsetof(P, noise_scale), 1e-3f, 100, true, "noise features per element", nullptr},
         {"backing", T::Int, offsetof(P, backing), 0, 1, false, "gaps show backing (else see-through)", nullptr},
         {"backing_color", T::Vec3, offsetof(P, backing_color), 0, 1, false, "backing R_d", nullptr},
+        {"warp_colors", T::Vec3List, offsetof(P, warp_colors), 0, 1, false, "R_d per warp end", nullptr},
+        {"weft_colors", T::Vec3List, offsetof(P, weft_colors), 0, 1, false, "R_d per weft pick", nullptr},
+        {"yarns", T::YarnList, offsetof(P, yarns), 0, 0, false, "yarn types", nullptr},
+        {"warp_yarns", T::IntList, offsetof(P, warp_yarns), 0, kMaxYarnTypes - 1, false, "yarn type per warp end", nullptr},
+        {"weft_yarns", T::IntList, offsetof(P, weft_yarns), 0, kMaxYarnTypes - 1, false, "yarn type per weft pick", nullptr},
+        {"warp_spacing", T::FloatList, offsetof(P, warp_spacing), 1e-6f, 1e6f, false, "spacing per warp end", nullptr},
+        {"weft_spacing", T::FloatList, offsetof(P, weft_spacing), 1e-6f, 1e6f, false, "spacing per weft pick", nullptr},
     };
     return table;
+}
+
+bool isNumeric(ParamType t) {
+    switch (t) {
+        case ParamType::Float: case ParamType::Int: case ParamType::Vec2: case ParamType::Vec3: case ParamType::IVec3:
+            return true;
+        default: return false;
+    }
 }
 
 namespace {
 
 int componentCount(ParamType t) {
     switch (t) {
-        case ParamType::Float: case ParamType::Int: return 1;
         case ParamType::Vec2: return 2;
         case ParamType::Vec3: case ParamType::IVec3: return 3;
+        default: return 1;
     }
-    return 0;
 }
 
 double component(const WovenParams& p, const ParamInfo& info, int c) {
@@ -52,35 +75,113 @@ double component(const WovenParams& p, const ParamInfo& info, int c) {
 
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument(what); }
 
+void checkRange(double v, const ParamInfo& info, const std::string& where) {
+    if (std::isfinite(v) && v >= info.min && v <= info.max) return;
+    std::ostringstream s;
+    s << where << " = " << v << " is outside [" << info.min << ", " << info.max << "]";
+    fail(s.str());
+}
+
+// How messages name a field, or an element of a list: 'cy', 'warp_colors'[3].
+std::string quoted(const ParamInfo& info) { return "'" + std::string(info.name) + "'"; }
+std::string element(const ParamInfo& info, size_t i) { return quoted(info) + "[" + std::to_string(i) + "]"; }
+
+void checkLength(size_t n, const ParamInfo& info, size_t max) {
+    if (n > max) fail(quoted(info) + " has " + std::to_string(n) + " entries, at most " + std::to_string(max));
+}
+
+void validateList(const WovenParams& p, const ParamInfo& info) {
+    const char* base = reinterpret_cast<const char*>(&p) + info.offset;
+    switch (info.type) {
+        case ParamType::Vec3List: {
+            const auto& list = *reinterpret_cast<const std::vector<glm::vec3>*>(base);
+            checkLength(list.size(), info, kMaxThreadPeriod);
+            for (size_t i = 0; i < list.size(); ++i)
+                for (int c = 0; c < 3; ++c) checkRange(list[i][c], info, element(info, i));
+            break;
+        }
+        case ParamType::IntList: {
+            const auto& list = *reinterpret_cast<const std::vector<int>*>(base);
+            checkLength(list.size(), info, kMaxThreadPeriod);
+            for (size_t i = 0; i < list.size(); ++i) {
+                checkRange(list[i], info, element(info, i));
+                if (size_t(list[i]) >= p.yarns.size())
+                    fail(element(info, i) + " = " + std::to_string(list[i]) + " names no yarn type ('yarns' has " +
+                         std::to_string(p.yarns.size()) + ")");
+            }
+            break;
+        }
+        case ParamType::FloatList: {
+            const auto& list = *reinterpret_cast<const std::vector<float>*>(base);
+            checkLength(list.size(), info, kMaxThreadPeriod);
+            for (size_t i = 0; i < list.size(); ++i) checkRange(list[i], info, element(info, i));
+            break;
+        }
+        case ParamType::YarnList:
+            checkLength(p.yarns.size(), info, kMaxYarnTypes);
+            for (size_t i = 0; i < p.yarns.size(); ++i)
+                for (const ParamInfo& field : wovenParamTable())
+                    if (field.yarnField >= 0 && field.yarnSide != YarnSide::Warp && p.yarns[i].set[size_t(field.yarnField)])
+                        checkRange(p.yarns[i].value[size_t(field.yarnField)], field,
+                                   element(info, i) + "." + field.name);
+            break;
+        default: break;
+    }
+}
+
+void validateTile(const std::vector<std::string>& tile) {
+    const size_t width = tile[0].size();
+    if (width == 0) fail("'tile': rows must not be empty");
+    for (const std::string& row : tile) {
+        if (row.size() != width) fail("'tile': all rows must have the same length");
+        for (char ch : row)
+            if (ch != '-' && ch != '|') fail(std::string("'tile': unexpected character '") + ch + "' (use '-' weft, '|' warp)");
+    }
+    if (tile.size() > size_t(kMaxTileSide) || width > size_t(kMaxTileSide) || tile.size() * width > kMaxTileCells)
+        fail("'tile': " + std::to_string(width) + " x " + std::to_string(tile.size()) + " is beyond woven's limit of " +
+             std::to_string(kMaxTileSide) + " threads either way and " + std::to_string(kMaxTileCells) + " cells");
+}
+
+// The lists of one side repeat together every lcm of their lengths threads, the period the
+// model expands them to (ThreadLayout).
+void validatePeriod(const char* side, size_t colors, size_t yarns, size_t spacing) {
+    size_t period = 1;
+    for (size_t n : {colors, yarns, spacing})
+        if (n > 0) period = std::lcm(period, n);
+    if (period > size_t(kMaxThreadPeriod))
+        fail(std::string("'") + side + "_colors' (" + std::to_string(colors) + "), '" + side + "_yarns' (" +
+             std::to_string(yarns) + ") and '" + side + "_spacing' (" + std::to_string(spacing) +
+             " entries) repeat together only every " + std::to_string(period) + " threads, more than " +
+             std::to_string(kMaxThreadPeriod));
+}
+
 }  // namespace
 
 void validate(const WovenParams& p) {
     for (const ParamInfo& info : wovenParamTable()) {
+        if (!isNumeric(info.type)) {
+            validateList(p, info);
+            continue;
+        }
         for (int c = 0; c < componentCount(info.type); ++c) {
-            double v = component(p, info, c);
-            if (!std::isfinite(v) || v < info.min || v > info.max) {
-                std::ostringstream s;
-                s << "'" << info.name << "'";
-                if (componentCount(info.type) > 1) s << "[" << c << "]";
-                s << " = " << v << " is outside [" << info.min << ", " << info.max << "]";
-                fail(s.str());
-            }
+            std::string where = quoted(info);
+            if (componentCount(info.type) > 1) where += "[" + std::to_string(c) + "]";
+            checkRange(component(p, info, c), info, where);
         }
     }
     if (p.tile.empty()) {
         if (p.pattern.x + p.pattern.y < 1) fail("'pattern': i + j must be at least 1");
         if (p.pattern.x + p.pattern.y > 1024) fail("'pattern': i + j must be at most 1024");
     } else {
-        size_t width = p.tile[0].size();
-        if (width == 0) fail("'tile': rows must not be empty");
-        for (const std::string& row : p.tile) {
-            if (row.size() != width) fail("'tile': all rows must have the same length");
-            for (char ch : row)
-                if (ch != '-' && ch != '|')
-                    fail(std::string("'tile': unexpected character '") + ch + "' (use '-' weft, '|' warp)");
-        }
-        if (p.tile.size() > 1024 || width > 1024) fail("'tile': at most 1024 x 1024 cells");
+        validateTile(p.tile);
     }
+    validatePeriod("warp", p.warp_colors.size(), p.warp_yarns.size(), p.warp_spacing.size());
+    validatePeriod("weft", p.weft_colors.size(), p.weft_yarns.size(), p.weft_spacing.size());
+}
+
+bool hasThreadLists(const WovenParams& p) {
+    return !p.warp_colors.empty() || !p.weft_colors.empty() || !p.warp_yarns.empty() || !p.weft_yarns.empty() ||
+           !p.warp_spacing.empty() || !p.weft_spacing.empty();
 }
 
 }  // namespace woven

@@ -41,39 +41,47 @@ glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
 
 }  // namespace
 
-YarnPoint yarnAt(const WeavePattern& pattern, const WovenParams& p, glm::dvec2 uv) {
-    // Double precision and 64-bit element indices keep |u|, |v| up to 1e6 (and repeat counts
-    // far beyond) free of overflow; the fractional position inside the element stays in [0, 1).
+YarnPoint yarnAt(const Weave& weave, const WovenParams& p, bool backSide, glm::dvec2 uv) {
+    // Double precision and 64-bit thread indices keep |u|, |v| up to 1e6 (and repeat counts
+    // far beyond) free of overflow; the position across a thread's cell stays in [0, 1).
     const glm::dvec2 e = uv * glm::dvec2(p.repeat);
-    const double Uf = std::floor(e.x), Vf = std::floor(e.y);
-    const int64_t U = int64_t(Uf), V = int64_t(Vf);
-    const double s = std::fmin(e.x - Uf, 1.0 - 1e-12), t = std::fmin(e.y - Vf, 1.0 - 1e-12);
-
-    const YarnType top = pattern.top(U, V);
-    // Across coordinates of the weft (across = t) and of the warp (across = s) in half widths.
-    const float xWeft = float((t - 0.5) / (0.5 * p.yarn_width));
-    const float xWarp = float((s - 0.5) / (0.5 * p.warp_width));
+    const ThreadLayout::Cell end = weave.warp().locate(e.x), pick = weave.weft().locate(e.y);
+    const YarnType top = weave.pattern(backSide).top(end.thread, pick.thread);
+    const int warpYarn = weave.warp().yarn(end.slot), weftYarn = weave.weft().yarn(pick.slot);
+    const Yarn &warp = weave.yarn(warpYarn), &weft = weave.yarn(weftYarn);
+    // Across coordinates of the weft (across its pick's cell) and of the warp, in half widths.
+    const float xWeft = float((pick.across - 0.5) / (0.5 * weft.width()));
+    const float xWarp = float((end.across - 0.5) / (0.5 * warp.width()));
 
     YarnPoint y;
     auto onWeft = [&](float slope) {
         y.type = YarnType::Weft;
-        y.yarnIndex = V;
+        y.yarnIndex = pick.thread;
+        y.slot = pick.slot;
+        y.yarn = weftYarn;
         y.along = e.x;
-        y.normal = yarnNormal(0, p.cy, xWeft, slope);
+        y.normal = yarnNormal(0, weft.cy(), xWeft, slope);
     };
     auto onWarp = [&](float slope) {
         y.type = YarnType::Warp;
-        y.yarnIndex = U;
+        y.yarnIndex = end.thread;
+        y.slot = end.slot;
+        y.yarn = warpYarn;
         y.along = e.y;
-        y.normal = yarnNormal(1, p.cy, xWarp, slope);
+        y.normal = yarnNormal(1, warp.cy(), xWarp, slope);
+    };
+    // The slope of the top yarn's crimp along its float (no floats: the material has no crimp).
+    auto crimp = [&](double alongInCell) {
+        const WeaveFloats* floats = weave.floats();
+        return floats ? crimpSlope(p.crimp, floats->at(end.thread, pick.thread, top), alongInCell) : 0.0f;
     };
     // The top yarn where it covers the point, else the crossing yarn below it in the gap
     // beside the top yarn (no crimp there: it is dipping under), else a true gap.
     if (top == YarnType::Weft) {
-        if (std::fabs(xWeft) <= 1.0f) onWeft(crimpSlope(p.crimp, pattern.floatAt(U, V), s));
+        if (std::fabs(xWeft) <= 1.0f) onWeft(crimp(end.across));
         else if (std::fabs(xWarp) <= 1.0f) onWarp(0.0f);
     } else {
-        if (std::fabs(xWarp) <= 1.0f) onWarp(crimpSlope(p.crimp, pattern.floatAt(U, V), t));
+        if (std::fabs(xWarp) <= 1.0f) onWarp(crimp(pick.across));
         else if (std::fabs(xWeft) <= 1.0f) onWeft(0.0f);
     }
     return y;

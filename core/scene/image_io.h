@@ -10,6 +10,7 @@
 #include "exact_sum.h"
 #include "sample_range.h"
 #include "scene_description.h"
+#include "srgb.h"  // PNG and JPEG are sRGB-encoded
 
 namespace woven {
 
@@ -77,9 +78,5 @@ void checkFrameFileName(const std::string& path);
 // "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
 // a finished one.
 std::string partialFrameName(const std::string& path);
-
-// The sRGB transfer functions (IEC 61966-2-1), on one channel.
-float srgbToLinear(float encoded);
-float linearToSrgb(float linear);
 
 }  // namespace woven

@@ -36,18 +36,6 @@ void computeVertexNormals(Mesh& mesh) {
     }
 }
 
-float worldPerUv(const Mesh& mesh) {
-    if (mesh.uvs.empty()) return 0.0f;
-    double world = 0.0, uv = 0.0;
-    for (const glm::uvec3& t : mesh.triangles) {
-        world += glm::length(glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]));
-        const glm::vec2 a = mesh.uvs[t.y] - mesh.uvs[t.x], b = mesh.uvs[t.z] - mesh.uvs[t.x];
-        uv += std::abs(double(a.x) * b.y - double(a.y) * b.x);
-    }
-    const double scale = uv > 0.0 ? std::sqrt(world / uv) : 0.0;
-    return std::isfinite(scale) ? float(scale) : 0.0f;
-}
-
 namespace {
 // Appends a copy of vertex v with every per-vertex attribute; returns its index.
 uint32_t duplicateVertex(Mesh& mesh, uint32_t v) {

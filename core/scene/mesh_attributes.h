@@ -14,11 +14,6 @@ size_t removeDegenerateTriangles(Mesh& mesh);
 // A vertex no triangle uses gets +z.
 void computeVertexNormals(Mesh& mesh);
 
-// World length per unit of TEXCOORD_0 (the square root of the mesh's area over its area in uv
-// space), or 0 where the mesh has no usable UVs: how large a weave element repeated n times per
-// uv unit is on the surface.
-float worldPerUv(const Mesh& mesh);
-
 // Fills mesh.tangents from texture coordinate set `uvSet` (0: uvs, 1: uvs1), as MikkTSpace
 // does in what matters for normal maps: dp/du per triangle, accumulated per vertex, made
 // orthogonal to the normal; w = +1 when (n x t) points along dp/dv, -1 when against it. A vertex

@@ -91,6 +91,7 @@ struct Material {
     std::string name;
     // Woven when set: the weave replaces the glTF BSDF; emission and doubleSided still apply.
     std::optional<WovenParams> woven;
+    std::string draft;  // the WIF file the woven parameters were made from ("wif"), if any
     glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};  // linear RGB and alpha
     TextureRef baseColorTexture;
     float metallic = 0.0f, roughness = 0.5f;

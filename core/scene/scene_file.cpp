@@ -115,7 +115,7 @@ private:
             fail("materials", "must be an object from a target (a material, \"mesh:NAME\", \"node:NAME\" or \"*\") to woven parameters");
         std::vector<WovenAssignment> assignments;
         for (const auto& item : materials.items())
-            assignments.push_back({item.key(), item.value(), "materials." + item.key()});
+            assignments.push_back({item.key(), item.value(), "materials." + item.key(), fs::path(path_).parent_path().string()});
         assignWoven(scene, assignments);
     }
 

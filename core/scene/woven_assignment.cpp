@@ -6,8 +6,11 @@
 #include <map>
 #include <set>
 
+#include <iostream>
+
+#include "material_json.h"
 #include "scene_loader.h"
-#include "woven_params_json.h"
+#include "uv_scale.h"
 
 namespace woven {
 
@@ -137,10 +140,27 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         WovenParams params = material.woven.value_or(WovenParams{});
         std::string names;
         for (size_t a : order) {
+            std::vector<std::string> draftWarnings;
             try {
-                params = paramsFromJson(assignments[a].params, params);
-            } catch (const std::exception& e) {
+                const MaterialJson read = materialFromJson(assignments[a].params, params, assignments[a].directory, draftWarnings);
+                params = read.params;
+                if (read.threadsPerCm) {
+                    params.repeat = repeatForThreadsPerCm(scene, meshes, *read.threadsPerCm);
+                    try {
+                        validate(params);
+                    } catch (const std::invalid_argument& e) {
+                        throw std::invalid_argument(std::string("'scale': \"draft\" gives ") + e.what());
+                    }
+                }
+                if (!read.wif.empty()) material.draft = read.wif;
+            } catch (const std::exception& e) {  // a bad key, a draft that cannot be used, no UVs to scale by
                 fail(assignments[a], e.what());
+            }
+            for (const std::string& w : draftWarnings) {
+                const std::string line = scene.source + ": " + assignments[a].where + ": " + w;
+                if (std::find(scene.warnings.begin(), scene.warnings.end(), line) != scene.warnings.end()) continue;
+                scene.warnings.push_back(line);
+                std::cerr << "warning: " << line << "\n";
             }
             names += (names.empty() ? "" : ", ") + assignments[a].target;
         }

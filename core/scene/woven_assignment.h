@@ -26,15 +26,19 @@ namespace woven {
 
 struct WovenAssignment {
     std::string target;
-    nlohmann::json params;  // woven parameters (woven_params_json.h), applied as a layer
+    nlohmann::json params;  // a woven material's JSON (material_json.h, "wif" and "scale" included), a layer
     std::string where;      // for messages: "materials.Cloth", "--woven Cloth"
+    std::string directory;  // where a "wif" path is relative to (the scene file's folder)
 };
 
 // Throws SceneError "<scene.source>: <where>: <problem>" for a target that matches nothing
-// (listing the scene's materials, meshes and nodes) or parameters that are invalid.
+// (listing the scene's materials, meshes and nodes) or parameters that are invalid (a draft
+// that cannot be read included). "scale": "draft" measures each group of primitives it makes.
+// What a draft's reader approximated goes to scene.warnings and stderr, once per line.
 void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& assignments);
 
-// The command line's "TARGET=JSON". Throws SceneError naming scene.source and the option.
+// The command line's "TARGET=JSON" ("wif" paths relative to the working directory). Throws
+// SceneError naming scene.source and the option.
 WovenAssignment parseWovenOption(const SceneDescription& scene, const std::string& option);
 
 // "the scene has materials 'A', 'B'; meshes ...; nodes ... (targets: ...)": for errors.

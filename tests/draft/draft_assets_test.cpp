@@ -77,8 +77,13 @@ TEST(DraftAssets, TwillWithStripesHasThickerStripeThreads) {
     EXPECT_EQ(distinctColours(d.warp.colors), 3u);
     EXPECT_EQ(distinctColours(d.weft.colors), 1u);
     ASSERT_EQ(d.warp.thickness.size(), size_t(d.ends()));
-    for (int e = 0; e < d.ends(); ++e)
-        EXPECT_EQ(d.warp.thickness[size_t(e)] > d.warp.thickness[0], d.warp.colors[size_t(e)] != d.warp.colors[0]) << e;
+    ASSERT_EQ(d.warp.spacing.size(), size_t(d.ends()));
+    for (int e = 0; e < d.ends(); ++e) {
+        const bool stripe = d.warp.colors[size_t(e)] != d.warp.colors[0];
+        EXPECT_EQ(d.warp.thickness[size_t(e)] > d.warp.thickness[0], stripe) << e;
+        EXPECT_EQ(d.warp.spacing[size_t(e)] > d.warp.spacing[0], stripe) << e;
+        EXPECT_LE(d.warp.thickness[size_t(e)], d.warp.spacing[size_t(e)]) << e;  // no yarn wider than its cell
+    }
 }
 
 }  // namespace

@@ -47,6 +47,23 @@ std::vector<WovenParams> hardMaterials() {
     add([](WovenParams& p) { p.pattern = {32, 32, 70}; p.cy = 0.9f; p.crimp = 0.7f; p.noise = 0.5f; p.noise_scale = 1e-3f; });
     add([](WovenParams& p) { p.repeat = {1e6f, 1e-6f}; p.cy = 1.0f; p.noise = 1.0f; p.crimp = 1.0f; });
     add([](WovenParams& p) { p.tile = {"-||-", "|--|", "-|--"}; p.cy = 1.0f; p.crimp = 1.0f; p.rs = 1.0f; p.weft_color = glm::vec3(1.0f); });
+    // Per-thread lists (MODEL.md section 6): spacing from 1e-6 to 1e6 of the mean (the lookup's
+    // worst case), yarn types at the range limits, colours 0 and 1.
+    add([](WovenParams& p) {
+        YarnSpec extreme, flat;
+        extreme.value = {1e5f, 0.0f, 1.0f, 1e-3f, 1.0f, 1.0f};
+        extreme.set.fill(true);
+        flat.value[kYarnCy] = 0.0f;
+        flat.set[kYarnCy] = true;
+        p.yarns = {extreme, flat};
+        p.warp_yarns = {0, 1, 1};
+        p.weft_yarns = {1, 0};
+        p.warp_colors = {glm::vec3(0.0f), glm::vec3(1.0f)};
+        p.warp_spacing = {1e-6f, 1e6f, 1.0f};
+        p.weft_spacing = {1e6f, 1e-6f};
+        p.crimp = 1.0f;
+        p.pattern = {9, 1, 3};
+    });
     return all;
 }
 

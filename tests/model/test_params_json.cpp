@@ -169,5 +169,56 @@ TEST(ParamsJson, RoundTripIsExact) {
     EXPECT_EQ(r.noise_scale, p.noise_scale);
 }
 
+TEST(ParamsJson, PerThreadListsRoundTrip) {
+    const json j = json::parse(R"({
+        "warp_colors": [[0.1, 0.2, 0.3], 0.5],
+        "weft_colors": [[1, 0, 0]],
+        "yarns": [{"ex": 300, "yarn_width": 0.6}, {"noise": 0.2, "cy": 1}],
+        "warp_yarns": [0, 1, 1],
+        "weft_yarns": [1],
+        "warp_spacing": [1, 2],
+        "weft_spacing": [0.5]
+    })");
+    const WovenParams p = paramsFromJson(j);
+    ASSERT_EQ(p.warp_colors.size(), 2u);
+    EXPECT_EQ(p.warp_colors[1], glm::vec3(0.5f));
+    ASSERT_EQ(p.yarns.size(), 2u);
+    EXPECT_TRUE(p.yarns[0].set[kYarnEx] && p.yarns[0].set[kYarnWidth]);
+    EXPECT_FALSE(p.yarns[0].set[kYarnCy]);
+    EXPECT_EQ(p.yarns[1].value[kYarnCy], 1.0f);
+    EXPECT_EQ(p.warp_yarns, (std::vector<int>{0, 1, 1}));
+    EXPECT_EQ(p.warp_spacing, (std::vector<float>{1.0f, 2.0f}));
+    const WovenParams q = paramsFromJson(json::parse(paramsToJson(p).dump()));
+    EXPECT_EQ(q.warp_colors, p.warp_colors);
+    EXPECT_EQ(q.weft_colors, p.weft_colors);
+    EXPECT_EQ(q.yarns, p.yarns);
+    EXPECT_EQ(q.warp_yarns, p.warp_yarns);
+    EXPECT_EQ(q.weft_yarns, p.weft_yarns);
+    EXPECT_EQ(q.warp_spacing, p.warp_spacing);
+    EXPECT_EQ(q.weft_spacing, p.weft_spacing);
+    // A material without lists writes none.
+    EXPECT_FALSE(paramsToJson(WovenParams{}).contains("warp_colors"));
+}
+
+TEST(ParamsJson, PerThreadErrorsNameTheKeyAndTheEntry) {
+    expectRejected(R"({"warp_colors": 0.5})", "'warp_colors' must be an array of colours");
+    expectRejected(R"({"warp_colors": [0.1, [0.1, 1.2, 0.3]]})", "'warp_colors'[1] = 1.2 is outside [0, 1]");
+    expectRejected(R"({"weft_colors": [[0.1, 0.2]]})", "'weft_colors'[0] must be an array of 3 numbers");
+    expectRejected(R"({"warp_yarns": [0]})", "'warp_yarns'[0] = 0 names no yarn type ('yarns' has 0)");
+    expectRejected(R"({"yarns": [{"ex": 1}], "weft_yarns": [0, 1]})", "'weft_yarns'[1] = 1 names no yarn type");
+    expectRejected(R"({"yarns": [{}, {}], "warp_yarns": [1.5]})", "'warp_yarns'[0] must be an integer");
+    expectRejected(R"({"yarns": [{"exx": 1}]})", "'yarns'[0]: unknown yarn field 'exx'");
+    expectRejected(R"({"yarns": [{"warp_ex": 1}]})", "unknown yarn field 'warp_ex'");  // a yarn has one ex
+    expectRejected(R"({"yarns": [{}, {"yarn_width": 0}]})", "'yarns'[1].yarn_width = 0 is outside");
+    expectRejected(R"({"yarns": [3]})", "'yarns'[0] must be an object");
+    expectRejected(R"({"warp_spacing": [1, -2]})", "'warp_spacing'[1] = -2 is outside");
+    expectRejected(R"({"weft_spacing": [1, "a"]})", "'weft_spacing'[1] must be a number");
+    // 256 colours and 257 spacings repeat together every 65792 threads, beyond the limit.
+    json j = {{"warp_colors", json::array()}, {"warp_spacing", json::array()}};
+    for (int k = 0; k < 256; ++k) j["warp_colors"].push_back(0.5);
+    for (int k = 0; k < 257; ++k) j["warp_spacing"].push_back(1.0);
+    expectRejected(j.dump(), "repeat together only every 65792 threads");
+}
+
 }  // namespace
 }  // namespace woven

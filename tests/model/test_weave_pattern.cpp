@@ -23,6 +23,11 @@ bool referenceWarp(int i, int j, int k, int64_t U, int64_t V) {
     return d >= i;
 }
 
+// The float of the top yarn through (U, V), as the crimp looks it up.
+WeavePattern::Float floatAt(const WeavePattern& p, const WeaveFloats& floats, int64_t U, int64_t V) {
+    return floats.at(U, V, p.top(U, V));
+}
+
 std::string drawRows(const std::vector<std::string>& rows) {
     std::string s;
     for (const auto& r : rows) s += r + "\n";
@@ -84,8 +89,9 @@ TEST(WeavePattern, SingleYarnPatterns) {
     EXPECT_EQ(WeavePattern::regular(0, 1, 5).draw(4, 2), "||||\n||||\n");
     // A yarn on top along its whole period: its float is the period.
     const WeavePattern weft = WeavePattern::regular(1, 0, 0);
-    EXPECT_EQ(weft.floatAt(5, -3).length, 1);
-    EXPECT_EQ(weft.floatAt(5, -3).position, 0);
+    const WeaveFloats weftFloats(weft);
+    EXPECT_EQ(floatAt(weft, weftFloats, 5, -3).length, 1);
+    EXPECT_EQ(floatAt(weft, weftFloats, 5, -3).position, 0);
 }
 
 TEST(WeavePattern, LargeTileRowCounts) {
@@ -110,6 +116,7 @@ TEST(WeavePattern, LargeTileRowCounts) {
 
 TEST(WeavePattern, PeriodicAndSafeForHugeAndNegativeIndices) {
     const WeavePattern p = WeavePattern::regular(9, 1, 3);
+    const WeaveFloats pFloats(p);
     const int64_t bigs[] = {1000000, -1000000, 999999937, -999999937, int64_t(1) << 40, -(int64_t(1) << 40),
                             INT64_MAX / 2, INT64_MIN / 2};
     for (int64_t big : bigs)
@@ -121,7 +128,7 @@ TEST(WeavePattern, PeriodicAndSafeForHugeAndNegativeIndices) {
         for (int64_t V = -25; V < 25; ++V) {
             EXPECT_EQ(p.top(U, V), p.top(U + 10, V));
             EXPECT_EQ(p.top(U, V), p.top(U, V + 10));
-            EXPECT_EQ(p.floatAt(U, V).position, p.floatAt(U + 10, V - 20).position);
+            EXPECT_EQ(floatAt(p, pFloats, U, V).position, floatAt(p, pFloats, U + 10, V - 20).position);
         }
 }
 
@@ -141,12 +148,13 @@ TEST(WeavePattern, FloatsStartAndLength) {
     const int triples[][3] = {{9, 1, 3}, {1, 1, 1}, {1, 2, 1}, {3, 2, 1}, {4, 4, 1}, {5, 59, 7}, {2, 1, 0}};
     for (const auto& t : triples) {
         const WeavePattern p = WeavePattern::regular(t[0], t[1], t[2]);
+        const WeaveFloats pFloats(p);
         auto warpAt = [&](int64_t U, int64_t V) { return referenceWarp(t[0], t[1], t[2], U, V); };
         for (int64_t V = -3; V < p.height() + 3; ++V)
             for (int64_t U = -3; U < p.width() + 3; ++U) {
                 const int period = warpAt(U, V) ? p.height() : p.width();
                 const auto expected = referenceFloat(warpAt, U, V, period);
-                const auto f = p.floatAt(U, V);
+                const auto f = floatAt(p, pFloats, U, V);
                 ASSERT_EQ(f.length, expected.length) << t[0] << t[1] << t[2] << " U=" << U << " V=" << V;
                 if (expected.length < period) {
                     ASSERT_EQ(f.position, expected.position) << " U=" << U << " V=" << V;
@@ -157,32 +165,34 @@ TEST(WeavePattern, FloatsStartAndLength) {
     }
     // Satin (9, 1, 3): weft floats of 9 in row 0 start right after the warp at U = 9.
     const WeavePattern satin = WeavePattern::regular(9, 1, 3);
+    const WeaveFloats satinFloats(satin);
     for (int U = 0; U < 9; ++U) {
-        EXPECT_EQ(satin.floatAt(U, 0).length, 9);
-        EXPECT_EQ(satin.floatAt(U, 0).position, U);
+        EXPECT_EQ(floatAt(satin, satinFloats, U, 0).length, 9);
+        EXPECT_EQ(floatAt(satin, satinFloats, U, 0).position, U);
     }
-    EXPECT_EQ(satin.floatAt(9, 0).length, 1);  // the warp crossing over
+    EXPECT_EQ(floatAt(satin, satinFloats, 9, 0).length, 1);  // the warp crossing over
     // Row 1 "------|---------|---": the float through U = 0 started at U = -3 (i.e. 7).
-    EXPECT_EQ(satin.floatAt(0, 1).position, 3);
-    EXPECT_EQ(satin.floatAt(5, 1).position, 8);
+    EXPECT_EQ(floatAt(satin, satinFloats, 0, 1).position, 3);
+    EXPECT_EQ(floatAt(satin, satinFloats, 5, 1).position, 8);
 }
 
 TEST(WeavePattern, GeneralTileFromParams) {
     WovenParams params;
     params.tile = {"-||-", "|--|", "--||"};  // hand-drawn, not of the (i, j, k) family
     const WeavePattern p = WeavePattern::fromParams(params);
+    const WeaveFloats pFloats(p);
     EXPECT_EQ(p.width(), 4);
     EXPECT_EQ(p.height(), 3);
     EXPECT_EQ(p.draw(8, 4), drawRows({"-||--||-", "|--||--|", "--||--||", "-||--||-"}));
     // Row 0 "-||-" wraps: weft float of 2 through U = 3, 0 (starting at U = 3).
-    EXPECT_EQ(p.floatAt(3, 0).length, 2);
-    EXPECT_EQ(p.floatAt(3, 0).position, 0);
-    EXPECT_EQ(p.floatAt(0, 0).position, 1);
+    EXPECT_EQ(floatAt(p, pFloats, 3, 0).length, 2);
+    EXPECT_EQ(floatAt(p, pFloats, 3, 0).position, 0);
+    EXPECT_EQ(floatAt(p, pFloats, 0, 0).position, 1);
     // Column 3 is '-', '|', '|' down V: warp float of 2 starting at V = 1.
-    EXPECT_EQ(p.floatAt(3, 1).length, 2);
-    EXPECT_EQ(p.floatAt(3, 2).position, 1);
+    EXPECT_EQ(floatAt(p, pFloats, 3, 1).length, 2);
+    EXPECT_EQ(floatAt(p, pFloats, 3, 2).position, 1);
     // Column 1 '|', '-', '-': warp float of 1.
-    EXPECT_EQ(p.floatAt(1, 0).length, 1);
+    EXPECT_EQ(floatAt(p, pFloats, 1, 0).length, 1);
 
     // The (i, j, k) family goes through the same tile code: drawing it as a tile gives the same.
     WovenParams twill;
@@ -199,13 +209,14 @@ TEST(WeavePattern, GeneralTileFromParams) {
 TEST(WeavePattern, ReversedIsTheBackFace) {
     const WeavePattern front = WeavePattern::regular(9, 1, 3);
     const WeavePattern back = front.reversed();
+    const WeaveFloats frontFloats(front);  // a run is a run on either face: one table serves both
     EXPECT_EQ(back.width(), front.width());
     EXPECT_EQ(back.height(), front.height());
     for (int V = 0; V < 10; ++V)
         for (int U = 0; U < 10; ++U) {
             EXPECT_NE(back.top(U, V), front.top(U, V));
             // Satin's back: warp floats of 9 along V where the front had weft floats along U.
-            EXPECT_EQ(back.floatAt(U, V).length, back.top(U, V) == YarnType::Warp ? 9 : 1);
+            EXPECT_EQ(floatAt(back, frontFloats, U, V).length, back.top(U, V) == YarnType::Warp ? 9 : 1);
         }
     EXPECT_EQ(back.reversed().draw(10, 10), front.draw(10, 10));
 }
@@ -218,13 +229,13 @@ TEST(WeavePattern, YarnAtHugeAndNegativeCoordinatesMatchesSmallEquivalent) {
     params.yarn_width = 0.8f;
     params.warp_width = 0.7f;
     params.crimp = 0.5f;
-    const WeavePattern p = WeavePattern::fromParams(params);
+    const Weave p(params);
     const double offsets[][2] = {{1e6, 1e6}, {-1e6, -1e6}, {1e6, -1e6}, {-20.0, -30.0}, {1e6 + 10, 3e6}};
     for (const auto& o : offsets) {
         for (int n = 0; n < 2000; ++n) {
             const glm::dvec2 small(0.00731 * n + 0.1234567, 0.0037 * n + 0.0123457 * (n % 13));
             const glm::dvec2 far = small + glm::dvec2(o[0], o[1]);  // offsets are multiples of the 10 x 10 tile
-            const YarnPoint a = yarnAt(p, params, small), b = yarnAt(p, params, far);
+            const YarnPoint a = yarnAt(p, params, false, small), b = yarnAt(p, params, false, far);
             ASSERT_EQ(a.type, b.type) << far.x << "," << far.y;
             ASSERT_NEAR(a.normal.x, b.normal.x, 2e-3f);  // double keeps ~1e-10 of the element at 1e6
             ASSERT_NEAR(a.normal.y, b.normal.y, 2e-3f);
@@ -237,7 +248,7 @@ TEST(WeavePattern, YarnAtHugeAndNegativeCoordinatesMatchesSmallEquivalent) {
     }
     // Repeat counts multiply the coordinates: 1e6 elements per unit at u = 1e6 is element 1e12.
     params.repeat = {1e6f, 1e6f};
-    const YarnPoint far = yarnAt(p, params, glm::dvec2(1e6, -1e6) + glm::dvec2(0.5e-6, 0.5e-6));
+    const YarnPoint far = yarnAt(p, params, false, glm::dvec2(1e6, -1e6) + glm::dvec2(0.5e-6, 0.5e-6));
     const bool warp = referenceWarp(9, 1, 3, 1000000000000LL, -1000000000000LL);
     EXPECT_EQ(far.type, warp ? YarnType::Warp : YarnType::Weft);
     EXPECT_EQ(far.yarnIndex, warp ? 1000000000000LL : -1000000000000LL);

@@ -58,16 +58,16 @@ TEST(YarnGeometry, BumpedNormalAcrossWeftAndWarp) {
     WovenParams p;
     p.pattern = {1, 1, 1};
     p.cy = 0.7f;
-    const WeavePattern weave = WeavePattern::fromParams(p);
+    const Weave weave(p);
     // Element (0, 0) is weft (across = t, along v), element (1, 0) warp (across = s, along u).
     for (double c = 0.0; c < 1.0; c += 0.05) {
         const double x = (c - 0.5) / 0.5;
         const glm::dvec2 section = glm::normalize(glm::dvec2(0.7 * x, std::sqrt(1.0 - x * x)));
-        const YarnPoint weft = yarnAt(weave, p, {0.37, c});
+        const YarnPoint weft = yarnAt(weave, p, false, {0.37, c});
         ASSERT_EQ(weft.type, YarnType::Weft);
         EXPECT_EQ(weft.yarnIndex, 0);
         expectNear(weft.normal, {0.0, section.x, section.y}, 1e-5, "weft t=" + std::to_string(c));
-        const YarnPoint warp = yarnAt(weave, p, {1.0 + c, 0.61});
+        const YarnPoint warp = yarnAt(weave, p, false, {1.0 + c, 0.61});
         ASSERT_EQ(warp.type, YarnType::Warp);
         EXPECT_EQ(warp.yarnIndex, 1);
         expectNear(warp.normal, {section.x, 0.0, section.y}, 1e-5, "warp s=" + std::to_string(c));
@@ -75,9 +75,9 @@ TEST(YarnGeometry, BumpedNormalAcrossWeftAndWarp) {
     // Repeat: 4 elements per unit u, 2 per unit v. Plain weave: (U, V) = (2, 1) has d = 1, warp;
     // (3, 1) has d = 0, weft.
     p.repeat = {4.0f, 2.0f};
-    EXPECT_EQ(yarnAt(weave, p, {2.5 / 4.0, 1.5 / 2.0}).type, YarnType::Warp);
-    EXPECT_EQ(yarnAt(weave, p, {3.5 / 4.0, 1.5 / 2.0}).type, YarnType::Weft);
-    EXPECT_EQ(yarnAt(weave, p, {3.5 / 4.0, 1.5 / 2.0}).yarnIndex, 1);
+    EXPECT_EQ(yarnAt(weave, p, false, {2.5 / 4.0, 1.5 / 2.0}).type, YarnType::Warp);
+    EXPECT_EQ(yarnAt(weave, p, false, {3.5 / 4.0, 1.5 / 2.0}).type, YarnType::Weft);
+    EXPECT_EQ(yarnAt(weave, p, false, {3.5 / 4.0, 1.5 / 2.0}).yarnIndex, 1);
 }
 
 TEST(YarnGeometry, CrossingYarnInTheGapsAndTrueGaps) {
@@ -86,23 +86,23 @@ TEST(YarnGeometry, CrossingYarnInTheGapsAndTrueGaps) {
     p.cy = 0.0f;
     p.yarn_width = 0.6f;   // weft covers t in [0.2, 0.8]
     p.warp_width = 0.5f;   // warp covers s in [0.25, 0.75]
-    const WeavePattern weave = WeavePattern::fromParams(p);
+    const Weave weave(p);
     // Element (0, 0): weft on top.
-    EXPECT_EQ(yarnAt(weave, p, {0.1, 0.5}).type, YarnType::Weft);   // beside the warp, on the weft
-    EXPECT_EQ(yarnAt(weave, p, {0.5, 0.9}).type, YarnType::Warp);   // gap beside the weft: warp below
-    EXPECT_EQ(yarnAt(weave, p, {0.5, 0.9}).yarnIndex, 0);
-    EXPECT_EQ(yarnAt(weave, p, {0.9, 0.9}).type, YarnType::Gap);    // neither yarn
-    EXPECT_EQ(yarnAt(weave, p, {0.1, 0.1}).type, YarnType::Gap);
+    EXPECT_EQ(yarnAt(weave, p, false, {0.1, 0.5}).type, YarnType::Weft);   // beside the warp, on the weft
+    EXPECT_EQ(yarnAt(weave, p, false, {0.5, 0.9}).type, YarnType::Warp);   // gap beside the weft: warp below
+    EXPECT_EQ(yarnAt(weave, p, false, {0.5, 0.9}).yarnIndex, 0);
+    EXPECT_EQ(yarnAt(weave, p, false, {0.9, 0.9}).type, YarnType::Gap);    // neither yarn
+    EXPECT_EQ(yarnAt(weave, p, false, {0.1, 0.1}).type, YarnType::Gap);
     // Element (1, 0): warp on top; weft visible beside it, gap at the corners.
-    EXPECT_EQ(yarnAt(weave, p, {1.5, 0.1}).type, YarnType::Warp);
-    EXPECT_EQ(yarnAt(weave, p, {1.1, 0.5}).type, YarnType::Weft);
-    EXPECT_EQ(yarnAt(weave, p, {1.1, 0.9}).type, YarnType::Gap);
+    EXPECT_EQ(yarnAt(weave, p, false, {1.5, 0.1}).type, YarnType::Warp);
+    EXPECT_EQ(yarnAt(weave, p, false, {1.1, 0.5}).type, YarnType::Weft);
+    EXPECT_EQ(yarnAt(weave, p, false, {1.1, 0.9}).type, YarnType::Gap);
 
     // Coverage: the fraction of gap area is (1 - 0.6)(1 - 0.5) = 0.2 on a fine grid.
     int gaps = 0, total = 0;
     for (int a = 0; a < 200; ++a)
         for (int b = 0; b < 200; ++b, ++total)
-            gaps += yarnAt(weave, p, {(a + 0.5) / 100.0, (b + 0.5) / 100.0}).type == YarnType::Gap;
+            gaps += yarnAt(weave, p, false, {(a + 0.5) / 100.0, (b + 0.5) / 100.0}).type == YarnType::Gap;
     EXPECT_NEAR(double(gaps) / total, 0.2, 0.01);
 
     // A see-through gap: the material returns no BSDF and the ray filter says so; both faces agree.
@@ -142,7 +142,7 @@ TEST(YarnGeometry, CrossingYarnInTheGapsAndTrueGaps) {
         for (int b = 0; b < 100; ++b) {
             const glm::dvec2 uv((a + 0.5) / 50.0, (b + 0.5) / 50.0);
             ASSERT_FALSE(closed.isSeeThrough(uv));
-            ASSERT_NE(yarnAt(closed.pattern(false), p, uv).type, YarnType::Gap);
+            ASSERT_NE(yarnAt(closed.weave(), p, false, uv).type, YarnType::Gap);
         }
 }
 
@@ -154,29 +154,29 @@ TEST(YarnGeometry, CrimpBulgesLongFloatsOnly) {
     flat.crimp = 0.0f;
     // Plain weave: floats of one element stay flat whatever the crimp.
     p.pattern = flat.pattern = {1, 1, 1};
-    const WeavePattern plain = WeavePattern::fromParams(p);
+    const Weave plain(p);
     for (double s = 0.02; s < 2.0; s += 0.05) {
-        const glm::vec3 a = yarnAt(plain, p, {s, 0.5}).normal, b = yarnAt(plain, flat, {s, 0.5}).normal;
+        const glm::vec3 a = yarnAt(plain, p, false, {s, 0.5}).normal, b = yarnAt(plain, flat, false, {s, 0.5}).normal;
         EXPECT_NEAR(glm::length(a - b), 0.0f, 1e-6f) << s;
     }
     // Satin (9, 1, 3), row 0: a weft float over U = 0..8. The yarn rises from its first crossing,
     // so the normal leans back (-u) in the first half and forward (+u) in the second, mirror
     // symmetric about the middle (u = 4.5), where it is straight up.
     p.pattern = flat.pattern = {9, 1, 3};
-    const WeavePattern satin = WeavePattern::fromParams(p);
-    EXPECT_NEAR(yarnAt(satin, p, {4.5, 0.5}).normal.x, 0.0f, 1e-5f);
+    const Weave satin(p);
+    EXPECT_NEAR(yarnAt(satin, p, false, {4.5, 0.5}).normal.x, 0.0f, 1e-5f);
     for (double d = 0.25; d < 4.5; d += 0.5) {
-        const glm::vec3 before = yarnAt(satin, p, {4.5 - d, 0.5}).normal;
-        const glm::vec3 after = yarnAt(satin, p, {4.5 + d, 0.5}).normal;
+        const glm::vec3 before = yarnAt(satin, p, false, {4.5 - d, 0.5}).normal;
+        const glm::vec3 after = yarnAt(satin, p, false, {4.5 + d, 0.5}).normal;
         EXPECT_LT(before.x, 0.0f) << d;
         EXPECT_GT(after.x, 0.0f) << d;
         EXPECT_NEAR(before.x, -after.x, 1e-5f) << d;
         EXPECT_NEAR(glm::length(before), 1.0f, 1e-5f);
-        EXPECT_NEAR(yarnAt(satin, flat, {4.5 - d, 0.5}).normal.x, 0.0f, 1e-6f);
+        EXPECT_NEAR(yarnAt(satin, flat, false, {4.5 - d, 0.5}).normal.x, 0.0f, 1e-6f);
     }
     // Continuous along the float (no jump at element boundaries inside it).
     for (int U = 1; U < 9; ++U) {
-        const glm::vec3 a = yarnAt(satin, p, {U - 1e-7, 0.5}).normal, b = yarnAt(satin, p, {U + 1e-7, 0.5}).normal;
+        const glm::vec3 a = yarnAt(satin, p, false, {U - 1e-7, 0.5}).normal, b = yarnAt(satin, p, false, {U + 1e-7, 0.5}).normal;
         EXPECT_NEAR(glm::length(a - b), 0.0f, 1e-4f) << U;
     }
 }

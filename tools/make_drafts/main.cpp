@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "image_io.h"
+#include "srgb.h"
 #include "wif_writer.h"
 
 namespace {
@@ -96,7 +96,8 @@ Draft gingham() {
     return d;
 }
 
-// 2/2 twill, navy warp with thicker cream and red stripes, slate weft; 50 ends per inch.
+// 2/2 twill, navy warp with thicker, wider-spaced cream and red stripes, slate weft; 50 navy
+// ends per inch.
 Draft twillStripes() {
     const glm::vec3 navy = srgb8(28, 38, 78), cream = srgb8(232, 222, 196), red = srgb8(170, 30, 40),
                     slate = srgb8(104, 116, 142);
@@ -104,8 +105,12 @@ Draft twillStripes() {
     d.title = "2/2 twill with stripes: navy warp with thick cream and red stripes, slate weft";
     d.shafts = d.treadles = 4;
     d.warp = threads(stripes({{12, navy}, {4, cream}, {12, navy}, {4, red}}), 0.02f, 0.018f, woven::LengthUnit::Inches);
+    // The stripe yarns are thicker and take more room: the reed spreads them wider.
     for (int e = 0; e < d.warp.count; ++e)
-        if (d.warp.colors[size_t(e)] != navy) d.warp.thickness[size_t(e)] = 0.024f;
+        if (d.warp.colors[size_t(e)] != navy) {
+            d.warp.thickness[size_t(e)] = 0.024f;
+            d.warp.spacing[size_t(e)] = 0.026f;
+        }
     d.weft = threads(stripes({{4, slate}}), 0.02f, 0.018f, woven::LengthUnit::Inches);
     d.threading = straightDraw(d.warp.count, 4);
     d.tieup = twillTieup(4, 2);

@@ -1,0 +1,49 @@
+#pragma once
+// Everything about a material's weave that a shading point looks up, built once per material:
+// the tile of each face, the floats (only when the crimp needs them), the threads of each side
+// (ThreadLayout) and the yarns they name. A material with no per-thread lists has one thread a
+// side, carrying the material's colours and its two default yarns.
+#include <memory>
+#include <vector>
+
+#include "thread_layout.h"
+#include "weave_pattern.h"
+#include "yarn.h"
+
+namespace woven {
+
+class Weave {
+public:
+    explicit Weave(const WovenParams& p);  // `p` must be valid (validate())
+
+    const WeavePattern& pattern(bool backSide) const { return backSide ? back_ : front_; }
+    const WeaveFloats* floats() const { return floats_.get(); }  // null for a material without crimp
+    const ThreadLayout& warp() const { return warp_; }
+    const ThreadLayout& weft() const { return weft_; }
+
+    // The resolved yarns: 0 the warp's own, 1 the weft's own, then each yarn type on the warp,
+    // then each on the weft (yarnOfType()).
+    const Yarn& yarn(int index) const { return yarns_[size_t(index)]; }
+    static int yarnOfType(int type, YarnSide side, int typeCount) {
+        return 2 + type + (side == YarnSide::Weft ? typeCount : 0);
+    }
+    // The parts of a weave that are cheap to build alone (the preview rebuilds them as sliders move).
+    static std::vector<Yarn> resolvedYarns(const WovenParams& p);
+    static ThreadLayout threads(const WovenParams& p, YarnSide side);  // Warp or Weft
+
+private:
+    WeavePattern front_, back_;
+    std::unique_ptr<const WeaveFloats> floats_;
+    std::vector<Yarn> yarns_;
+    ThreadLayout warp_, weft_;
+};
+
+// The distinct yarns the threads of `side` (Warp or Weft) use: the side's own yarn, or the
+// yarn types its list names, resolved on that side.
+std::vector<Yarn> usedYarns(const WovenParams& p, YarnSide side);
+// Gaps between yarns exist only where both crossing yarns are narrower than their cells.
+bool mayShowGaps(const WovenParams& p);
+// Whether any thread's yarn has colour noise.
+bool hasNoise(const WovenParams& p);
+
+}  // namespace woven

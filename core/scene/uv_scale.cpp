@@ -1,0 +1,40 @@
+#include "uv_scale.h"
+
+#include <cmath>
+
+#include <stdexcept>
+
+namespace woven {
+
+glm::dvec2 worldLengthPerUv(const SceneDescription& scene, const std::vector<size_t>& meshes) {
+    glm::dvec2 sum(0.0);
+    double area = 0.0;
+    for (size_t m : meshes) {
+        const Mesh& mesh = scene.meshes.at(m);
+        if (mesh.uvs.empty()) continue;
+        for (const glm::uvec3& t : mesh.triangles) {
+            const glm::dvec3 p0(mesh.positions[t.x]), e1 = glm::dvec3(mesh.positions[t.y]) - p0,
+                                                      e2 = glm::dvec3(mesh.positions[t.z]) - p0;
+            const glm::dvec2 uv0(mesh.uvs[t.x]), d1 = glm::dvec2(mesh.uvs[t.y]) - uv0, d2 = glm::dvec2(mesh.uvs[t.z]) - uv0;
+            const double det = d1.x * d2.y - d2.x * d1.y;
+            const double a = 0.5 * glm::length(glm::cross(e1, e2));
+            if (!(std::fabs(det) > 1e-20) || !(a > 0.0)) continue;  // no UV mapping, or no area
+            const glm::dvec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
+            const glm::dvec2 lengths(glm::length(dpdu), glm::length(dpdv));
+            if (!std::isfinite(lengths.x) || !std::isfinite(lengths.y)) continue;
+            sum += a * lengths;
+            area += a;
+        }
+    }
+    if (!(area > 0.0))
+        throw std::invalid_argument("no triangle with texture coordinates to measure, which \"scale\": \"draft\" needs");
+    return sum / area;
+}
+
+glm::vec2 repeatForThreadsPerCm(const SceneDescription& scene, const std::vector<size_t>& meshes,
+                                const glm::vec2& threadsPerCm) {
+    // Threads per UV unit = threads per cm x cm per UV unit (100 x the world length in metres).
+    return glm::vec2(glm::dvec2(threadsPerCm) * 100.0 * worldLengthPerUv(scene, meshes));
+}
+
+}  // namespace woven
