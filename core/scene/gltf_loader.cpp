@@ -31,7 +31,7 @@ namespace {
 const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
-    "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "WOVEN_fabric",
+    "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
@@ -514,7 +514,9 @@ private:
     }
 
     static int tangentTexCoord(const Material& m) {
-        return m.normalTexture ? m.normalTexture.texCoord : (m.clearcoat.normalTexture ? m.clearcoat.normalTexture.texCoord : 0);
+        for (const TextureRef* t : {&m.normalTexture, &m.clearcoat.normalTexture, &m.anisotropy.texture})
+            if (*t) return t->texCoord;
+        return 0;
     }
 
     std::string path_;
