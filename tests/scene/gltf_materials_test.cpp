@@ -199,11 +199,12 @@ TEST(GltfExtensions, UnsupportedOnesAreNamedRequiredOnesRefused) {
     EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("ignores the optional extension KHR_materials_iridescence")));
     EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("KHR_materials_volume: rendered thin-walled")));
     TexturedFile g;
-    g.b.useExtension("KHR_materials_anisotropy", true);
-    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension KHR_materials_anisotropy, which woven does not support"));
+    g.b.useExtension("KHR_materials_iridescence", true);
+    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension KHR_materials_iridescence, which woven does not support"));
     // The extensions woven renders can be required.
     TexturedFile h;
-    for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit"})
+    for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit",
+                          "KHR_materials_anisotropy"})
         h.b.useExtension(e, true);
     EXPECT_NO_THROW(h.load(json::object()));
 }
