@@ -208,20 +208,15 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     return baked;
 }
 
-Material bakedInto(SceneDescription& scene, const Material& original, const BakedMaterial& baked) {
+Material bakedMaterial(const Material& original, const BakedMaterial& baked, int firstTexture) {
     Material m = baked.material;
     m.name = original.name;
     m.draft = original.draft;
     m.emission = original.emission;
     m.emissiveTexture = original.emissiveTexture;
     m.doubleSided = original.doubleSided;
-    const int first = int(scene.textures.size());
     for (TextureRef* ref : {&m.baseColorTexture, &m.normalTexture, &m.metallicRoughnessTexture, &m.anisotropy.texture})
-        ref->image += first;
-    for (const TextureImage& t : baked.textures) {
-        scene.textures.push_back(t);
-        scene.textures.back().name = original.name + " " + t.name;
-    }
+        ref->image += firstTexture;
     return m;
 }
 

@@ -46,7 +46,7 @@ struct BakedMaterial {
 BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& options = {});
 
 // `baked` standing in for the woven material `original` of a scene: the baked glTF material with
-// the original's name, emission and sides, its textures appended to scene.textures.
-Material bakedInto(SceneDescription& scene, const Material& original, const BakedMaterial& baked);
+// the original's name, emission and sides, its textures at scene.textures[firstTexture...].
+Material bakedMaterial(const Material& original, const BakedMaterial& baked, int firstTexture);
 
 }  // namespace woven

@@ -264,6 +264,28 @@ void writePng(const std::string& path, const Image& image, const DisplayTransfor
     });
 }
 
+std::vector<unsigned char> encodeTexturePng(const TextureImage& texture) {
+    if (texture.width <= 0 || texture.height <= 0 || texture.bytes.size() != size_t(texture.width) * texture.height)
+        fail(texture.name, "cannot encode an empty or float texture as an 8-bit PNG");
+    std::vector<unsigned char> png;
+    const auto append = [](void* out, void* data, int size) {
+        auto* bytes = static_cast<unsigned char*>(data);
+        static_cast<std::vector<unsigned char>*>(out)->insert(static_cast<std::vector<unsigned char>*>(out)->end(), bytes, bytes + size);
+    };
+    if (!stbi_write_png_to_func(append, &png, texture.width, texture.height, 4, &texture.bytes[0].x, texture.width * 4))
+        fail(texture.name, "cannot encode the PNG data");
+    return png;
+}
+
+void writeTexturePng(const std::string& path, const TextureImage& texture) {
+    const std::vector<unsigned char> png = encodeTexturePng(texture);
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+        if (!out.flush()) throw ImageError("cannot write the file");
+    });
+}
+
 void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precision) {
     const Image& image = exr.image;
     const size_t count = size_t(image.width) * image.height;

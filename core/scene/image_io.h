@@ -36,6 +36,12 @@ Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encodi
 // sources kept as bytes (see TextureImage). `name` identifies it in error messages.
 TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name);
 
+// An 8-bit texture (TextureImage::bytes, RGBA) encoded as a PNG as it is: no colour transform,
+// since a glTF texture's bytes are already what its use decodes (sRGB colour or linear data).
+// Throws ImageError for a float or empty texture.
+std::vector<unsigned char> encodeTexturePng(const TextureImage& texture);
+void writeTexturePng(const std::string& path, const TextureImage& texture);  // atomic
+
 // Linear radiance to 8-bit display colour: scale by 2^exposure, tone-map, then sRGB-encode.
 // PNG output, the previewer's window (and shaders/display.frag) all go through this.
 enum class ToneMap {
