@@ -26,6 +26,7 @@
 #include "material_file.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
+#include "scene_export.h"
 #include "scene_loader.h"
 #include "scene_picker.h"
 #include "uv_scale.h"
@@ -131,6 +132,7 @@ private:
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
+    char exportPath_[512] = "scene.glb";
 
     // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
     // parameters at once, so the next frame shows it.
@@ -527,6 +529,23 @@ void PreviewWindow::drawRenderControls() {
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) final_.cancel();
     }
+    // Export: the scene as the window shows it, through its camera, woven materials baked.
+    ImGui::SameLine();
+    if (ImGui::Button("Export")) {
+        SceneDescription shown = scene();
+        shown.camera = camera_.camera();
+        shown.hasCamera = true;
+        try {
+            const std::vector<std::string> warnings = exportScene(shown, exportPath_, ExportOptions{});
+            for (const std::string& w : warnings) std::cerr << "warning: " << exportPath_ << ": " << w << "\n";
+            status_ = "exported " + std::string(exportPath_) + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputText("##export file", exportPath_, sizeof exportPath_);
     const RenderProgress progress = final_.progress();
     if (final_.running() || finalImage_) {
         char text[96];
