@@ -22,7 +22,7 @@ struct ExportCommand {
     std::string scene, out;
     std::vector<std::string> woven;  // TARGET=JSON
     ExportOptions options;
-    bool noSheen = false;
+    bool noSheen = false, isotropic = false;
     bool report = false, mips = false;
     ReportOptions reportOptions;
 };
@@ -42,6 +42,8 @@ void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
     cmd.add_option("--repeats", o.options.bake.repeats, "weave repeats each texture holds along u and v (default 1)")
         ->check(CLI::Range(1, 1024));
     cmd.add_flag("--no-sheen", o.noSheen, "fit no KHR_materials_sheen layer");
+    cmd.add_flag("--isotropic", o.isotropic,
+                 "no KHR_materials_anisotropy: one roughness a texel, for renderers that ignore the extension (Blender 3.4)");
 }
 
 // "Cloth [mesh:Sofa]" -> "Cloth__mesh_Sofa_": a file name from a material name.
@@ -54,6 +56,7 @@ std::string fileStem(const std::string& name) {
 void runBake(ExportCommand o) {
     namespace fs = std::filesystem;
     o.options.bake.sheen = !o.noSheen;
+    o.options.bake.anisotropy = !o.isotropic;
     if (!fs::is_directory(o.out)) throw ExportError(o.out + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
     std::cerr << "bake: baking the woven materials of " << o.scene << "\n";
@@ -97,14 +100,16 @@ void runBake(ExportCommand o) {
 
 void runExport(ExportCommand o) {
     o.options.bake.sheen = !o.noSheen;
+    o.options.bake.anisotropy = !o.isotropic;
+    if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
+        throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
     std::cerr << "export: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
     for (const std::string& w : exportScene(scene, o.out, o.options, &bakes)) std::cerr << "warning: " << o.out << ": " << w << "\n";
     std::cerr << "wrote " << o.out << "\n";
     if (!o.report) return;
-    if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
-        throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
+    o.reportOptions.imagePrefix = std::filesystem::path(o.out).stem().string() + "_";
     for (const MaterialBake& b : bakes) {
         std::cerr << "export: rendering the model and the bake of '" << scene.materials[size_t(b.material)].name << "'\n";
         std::cout << formatReport(reportBake(scene.materials[size_t(b.material)], b.baked, o.reportOptions), o.reportOptions);
@@ -122,7 +127,7 @@ void addExportCommands(CLI::App& app) {
     cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
     cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
     cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(CLI::Range(1, 1 << 16));
-    cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder");
+    cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder (OUT_MATERIAL_near_model.png, ...)");
     cmd->callback([e] { runExport(*e); });
 
     auto b = std::make_shared<ExportCommand>();

@@ -81,4 +81,12 @@ TexelFit fitTexel(const TexelSums& s) {
     return t;
 }
 
+TexelFit isotropic(TexelFit t) {
+    const double smooth = double(t.roughness) * t.roughness;
+    const double rough = smooth + (1.0 - smooth) * double(t.anisotropy) * t.anisotropy;
+    t.roughness = float(std::sqrt(std::sqrt(smooth * rough)));
+    t.anisotropy = 0.0f;
+    return t;
+}
+
 }  // namespace woven

@@ -40,4 +40,8 @@ struct TexelFit {
 // Throws nothing; a footprint without a covered point gives coverage 0 and the defaults.
 TexelFit fitTexel(const TexelSums& sums);
 
+// The fit with one width for renderers without anisotropy: the isotropic lobe of the same peak
+// height, alpha = sqrt(alpha_along alpha_across).
+TexelFit isotropic(TexelFit fit);
+
 }  // namespace woven

@@ -165,6 +165,9 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
         levelSizes.emplace_back(std::max(1, size.x >> level), std::max(1, size.y >> level));
         levels.push_back(fitAll(downsample(sums, size, levelSizes.back()), levelSizes.back()));
     }
+    if (!o.anisotropy)
+        for (std::vector<TexelFit>& level : levels)
+            for (TexelFit& t : level) t = isotropic(t);
     baked.textures = encode(levels[0], size, 0, 1.0f);
 
     // The material: every texture over one tile of the bake, repeated across the mesh's uv.
@@ -181,9 +184,11 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     m.roughness = 1.0f;
     m.metallicRoughnessTexture = ref;
     m.metallicRoughnessTexture.image = BakedMaterial::kMetallicRoughness;
-    m.anisotropy.strength = 1.0f;
-    m.anisotropy.texture = ref;
-    m.anisotropy.texture.image = BakedMaterial::kAnisotropy;
+    if (o.anisotropy) {
+        m.anisotropy.strength = 1.0f;
+        m.anisotropy.texture = ref;
+        m.anisotropy.texture.image = BakedMaterial::kAnisotropy;
+    }
     m.alphaMode = gaps ? AlphaMode::Mask : AlphaMode::Opaque;
     m.alphaCutoff = 0.5f;
     const double rs = rsMax >= rsMin ? 0.5 * (rsMin + rsMax) : params.rs;
@@ -216,7 +221,7 @@ Material bakedMaterial(const Material& original, const BakedMaterial& baked, int
     m.emissiveTexture = original.emissiveTexture;
     m.doubleSided = original.doubleSided;
     for (TextureRef* ref : {&m.baseColorTexture, &m.normalTexture, &m.metallicRoughnessTexture, &m.anisotropy.texture})
-        ref->image += firstTexture;
+        if (*ref) ref->image += firstTexture;
     return m;
 }
 

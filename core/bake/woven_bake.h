@@ -22,6 +22,9 @@ struct BakeOptions {
     int repeats = 1;       // weave repeats the texture holds along u and along v
     int supersamples = 4;  // model points per texel side
     bool sheen = true;     // fit KHR_materials_sheen to the far field (else none)
+    // KHR_materials_anisotropy; without it one roughness a texel (texel_fit.h's isotropic()), for
+    // renderers that ignore the extension and would show the smoother width alone.
+    bool anisotropy = true;
 };
 
 struct BakedMaterial {

@@ -161,7 +161,7 @@ BakeReport reportBake(const Material& wovenMaterial, const BakedMaterial& baked,
         change(m);
         variants.push_back({what, m});
     };
-    without("without anisotropy", [](Material& m) { m.anisotropy = AnisotropyParams{}; });
+    if (baked.material.anisotropy.strength > 0.0f) without("without anisotropy", [](Material& m) { m.anisotropy = AnisotropyParams{}; });
     without("without the normal map (bump)", [](Material& m) { m.normalTexture = TextureRef{}; });
     if (baked.material.alphaMode == AlphaMode::Mask)
         without("without the gaps (opaque)", [](Material& m) { m.alphaMode = AlphaMode::Opaque; });
@@ -187,7 +187,7 @@ BakeReport reportBake(const Material& wovenMaterial, const BakedMaterial& baked,
             (view == 0 ? rows[v].nearError : rows[v].farError) = std::sqrt(std::max(0.0, raw * raw - noise * noise));
             if (v == 0 && !o.imageFolder.empty()) {
                 for (const auto& [image, kind] : {std::make_pair(&model, "model"), std::make_pair(&bake, "bake")}) {
-                    const std::string path = (std::filesystem::path(o.imageFolder) / (report.material + "_" + name + "_" + kind + ".png")).string();
+                    const std::string path = (std::filesystem::path(o.imageFolder) / (o.imagePrefix + report.material + "_" + name + "_" + kind + ".png")).string();
                     writePng(path, *image);
                     report.images.push_back(path);
                 }

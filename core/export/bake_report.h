@@ -27,7 +27,8 @@ struct ReportOptions {
     int threads = 0;              // 0: all cores
     double nearThreads = 12.0;    // threads across the near frame
     double farThreads = 1200.0;   // and across the far one
-    std::string imageFolder;      // when not empty: PNGs of the model and the bake, near and far
+    std::string imageFolder;      // when not empty: PNGs of the model and the bake, near and far,
+    std::string imagePrefix;      // named PREFIX_MATERIAL_near_model.png ...
 };
 
 struct ReportRow {
