@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <mutex>
 
 namespace woven {
 
@@ -13,10 +11,10 @@ constexpr double kPi = 3.14159265358979323846;
 
 double pow5(double x) { return (x * x) * (x * x) * x; }
 
-// The bi-hemispherical albedo of glTF's diffuse term (1 - F(v.h)) / pi with F0 = rs, F90 = 1,
+// The bi-hemispherical albedo of glTF's diffuse term (1 - F(v.h)) / pi with F0 = 0, F90 = 1,
 // by the midpoint rule in (cos theta_o, cos theta_i, phi): v.h = sqrt((1 + wo.wi) / 2) is smooth,
 // so 64 nodes a dimension give it to far better than 1e-4.
-double gltfDiffuseAlbedo(double rs) {
+double gltfDiffuseAlbedo() {
     constexpr int n = 64;
     double sum = 0.0;
     for (int a = 0; a < n; ++a) {
@@ -26,8 +24,7 @@ double gltfDiffuseAlbedo(double rs) {
             for (int c = 0; c < n; ++c) {
                 const double phi = kPi * (c + 0.5) / n;  // symmetric in phi: half the circle, twice
                 const double vh = std::sqrt(std::max(0.0, 0.5 * (1.0 + co * ci + so * si * std::cos(phi))));
-                const double fresnel = rs + (1.0 - rs) * pow5(1.0 - vh);
-                sum += (1.0 - fresnel) * co * ci;
+                sum += (1.0 - pow5(1.0 - vh)) * co * ci;
             }
         }
     }
@@ -36,29 +33,21 @@ double gltfDiffuseAlbedo(double rs) {
     return sum * (2.0 * kPi) * (2.0 * kPi / n) / (double(n) * n) / (kPi * kPi);
 }
 
-// A-S's: 28 R_d / (23 pi) (1 - rs) g(cos_o) g(cos_i), g(c) = 1 - (1 - c / 2)^5, whose integral
+// A-S's at rs = 0: 28 R_d / (23 pi) g(cos_o) g(cos_i), g(c) = 1 - (1 - c / 2)^5, whose integral
 // int_0^1 g(c) c dc = 1/2 - 4 (63/384 - 127/896) is exact.
-double ashikhminShirleyDiffuseAlbedo(double rs) {
+double ashikhminShirleyDiffuseAlbedo() {
     const double g = 0.5 - 4.0 * (63.0 / 384.0 - 127.0 / 896.0);
     const double hemisphere = 2.0 * kPi * g;
-    return 28.0 / (23.0 * kPi) * (1.0 - rs) * hemisphere * hemisphere / kPi;
+    return 28.0 / (23.0 * kPi) * hemisphere * hemisphere / kPi;
 }
 
 }  // namespace
 
 float ggxAlphaForExponent(float e) { return std::min(1.0f, std::sqrt(2.0f / (std::max(e, 0.0f) + 2.0f))); }
 
-float diffuseScale(float rs) {
-    // A few distinct rs per material: each integral once.
-    static std::mutex mutex;
-    static std::map<float, float> cache;
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(rs);
-    if (it != cache.end()) return it->second;
-    const double rsd = std::clamp(double(rs), 0.0, 1.0);
-    const double gltf = gltfDiffuseAlbedo(rsd);
-    const float k = gltf > 0.0 ? float(ashikhminShirleyDiffuseAlbedo(rsd) / gltf) : 0.0f;
-    return cache[rs] = k;
+float diffuseScale() {
+    static const float k = float(ashikhminShirleyDiffuseAlbedo() / gltfDiffuseAlbedo());
+    return k;
 }
 
 float iorForF0(float rs) {

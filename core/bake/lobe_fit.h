@@ -10,10 +10,10 @@ namespace woven {
 float ggxAlphaForExponent(float e);
 
 // k such that a glTF base colour k R_d reflects as much diffuse light as the A-S diffuse term of
-// R_d with specular reflectance rs, both averaged over every pair of directions (cosine-weighted,
-// the bi-hemispherical albedo): glTF's diffuse is Lambert weighted by 1 - F(v.h), A-S's is
-// darker at grazing angles.
-float diffuseScale(float rs);
+// R_d, both averaged over every pair of directions (cosine-weighted, the bi-hemispherical albedo):
+// glTF's diffuse is Lambert weighted by 1 - F(v.h), A-S's is darker at grazing angles. Both scale
+// with 1 - rs, so k is the same for every rs: 0.824.
+float diffuseScale();
 
 // The IOR whose dielectric F0 ((ior - 1) / (ior + 1))^2 is rs (KHR_materials_ior).
 float iorForF0(float rs);

@@ -34,7 +34,7 @@ void TexelSums::add(const std::optional<WovenShading>& shading) {
     const AshikhminShirley& lobe = shading->bsdf.lobe();
     const Frame& frame = shading->bsdf.frame();
     covered += 1.0;
-    color += glm::dvec3(diffuseScale(lobe.rs()) * lobe.rd());
+    color += glm::dvec3(diffuseScale() * lobe.rd());
     rs += lobe.rs();
     const glm::dvec3 n(frame.z);
     normal += n;

@@ -107,7 +107,7 @@ TEST_P(BakedMaps, AgreeWithTheModelAtPointsInsideTheYarnsAndGaps) {
         // Colour noise never repeats: the bake holds the first tile's.
         const bool firstTile = uv.x < baked.uvSize.x && uv.y < baked.uvSize.y;
         for (int c = 0; c < 3 && firstTile; ++c)
-            if (lobe.rd()[c] > 0.05f) colourRatios.push_back(in.baseColor[c] / (diffuseScale(lobe.rs()) * lobe.rd()[c]));
+            if (lobe.rd()[c] > 0.05f) colourRatios.push_back(in.baseColor[c] / (diffuseScale() * lobe.rd()[c]));
         worstNormal = std::max(worstNormal, angle(gltf.shadingNormal(hit), frame.z));
         if (!smooth) continue;
         ++smoothChecked;
