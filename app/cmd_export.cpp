@@ -7,6 +7,7 @@
 
 #include "bake_report.h"
 #include "commands.h"
+#include "flat_cloth.h"
 #include "gltf_writer.h"
 #include "image_io.h"
 #include "scene_camera.h"
@@ -75,16 +76,7 @@ void runBake(ExportCommand o) {
         // A square of one texture tile in the material, for any glTF viewer.
         SceneDescription square;
         square.source = o.scene;
-        Mesh m;
-        m.name = m.meshName = fileStem(original.name);
-        m.nodePath = {m.name};
-        const glm::vec2 size(b.baked.uvSize);
-        m.positions = {{0, 0, 0}, {size.x, 0, 0}, {size.x, 0, -size.y}, {0, 0, -size.y}};
-        m.normals.assign(4, glm::vec3(0, 1, 0));
-        m.uvs = {{0, 0}, {size.x, 0}, {size.x, size.y}, {0, size.y}};
-        m.tangents.assign(4, glm::vec4(1, 0, 0, 1));
-        m.triangles = {{0, 1, 2}, {0, 2, 3}};
-        m.material = 0;
+        const Mesh m = flatCloth(glm::vec2(b.baked.uvSize), fileStem(original.name));
         square.meshes.push_back(m);
         square.materials.push_back(bakedMaterial(original, b.baked, 0));
         square.textures = b.baked.textures;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "far_field.h"
+#include "flat_cloth.h"
 #include "gltf_material.h"
 #include "image_io.h"
 #include "render_job.h"
@@ -30,17 +31,8 @@ SceneDescription clothScene(const Material& material, const std::vector<TextureI
                             double aspect) {
     const double distance = threads / repeat / (2.0 * std::tan(0.5 * kYfov) * aspect);
     // Wide enough that the frame sees cloth only, also towards the horizon at 45 degrees.
-    const float half = float(8.0 * distance + 1.0);
-    Mesh m;
-    m.name = "cloth";
-    m.meshName = "cloth";
-    m.nodePath = {"cloth"};
-    m.positions = {{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}};
-    m.normals.assign(4, glm::vec3(0, 1, 0));
-    m.uvs = {{0, 0}, {2 * half, 0}, {2 * half, 2 * half}, {0, 2 * half}};
-    m.tangents.assign(4, glm::vec4(1, 0, 0, 1));  // +u; n x t = -z runs along +v
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    m.material = 0;
+    const float side = float(16.0 * distance + 2.0);
+    const Mesh m = flatCloth(glm::vec2(side), "cloth");
 
     SceneDescription scene;
     scene.source = "the report's flat cloth";
@@ -111,13 +103,6 @@ TextureImage boxFiltered(const TextureImage& t, bool srgb) {
             out.bytes.push_back(glm::u8vec4(glm::round(glm::clamp(mean, 0.0f, 1.0f) * 255.0f)));
         }
     return out;
-}
-
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << v;
-    return s.str();
 }
 
 }  // namespace
@@ -208,15 +193,16 @@ std::string formatReport(const BakeReport& r, const ReportOptions& o) {
     char line[160];
     std::snprintf(line, sizeof line, "  %-34s %14s %14s\n", "", "near", "far");
     s << line;
-    std::snprintf(line, sizeof line, "  %-34s %14s %14s\n", "", (fixed(o.nearThreads, 0) + " threads").c_str(),
-                  (fixed(o.farThreads, 0) + " threads").c_str());
+    std::snprintf(line, sizeof line, "  %-34s %6.0f threads %6.0f threads\n", "", o.nearThreads, o.farThreads);
     s << line;
     for (const ReportRow& row : r.rows) {
         std::snprintf(line, sizeof line, "  %-34s %14.4f %14.4f\n", row.what.c_str(), row.nearError, row.farError);
         s << line;
     }
-    s << "  far field (1280 direction pairs): level 0 " << fixed(r.farField.level0, 4) << "; the 1 x 1 level fitted in the model "
-      << fixed(r.farField.coarsestFitted, 4) << ", box-filtered " << fixed(r.farField.coarsestBoxFiltered, 4) << "\n";
+    std::snprintf(line, sizeof line,
+                  "  far field (1280 direction pairs): level 0 %.4f; the 1 x 1 level fitted in the model %.4f, box-filtered %.4f\n",
+                  r.farField.level0, r.farField.coarsestFitted, r.farField.coarsestBoxFiltered);
+    s << line;
     for (const std::string& image : r.images) s << "  wrote " << image << "\n";
     return s.str();
 }

@@ -309,7 +309,7 @@ private:
 
     // --- camera and lights --------------------------------------------------------------------
 
-    // A node at `position`, turned so that its -z axis points along `forward` (and its +y up when given).
+    // A node at `position`, turned by `rotation` (glTF: a camera or light looks down its -z axis).
     json placedNode(const glm::vec3& position, const glm::quat& rotation) {
         const glm::quat q = glm::normalize(rotation);
         return {{"translation", vec(position)}, {"rotation", {q.x, q.y, q.z, q.w}}};
