@@ -5,6 +5,7 @@
 // they repeat together. Finding the thread at a point costs the same for any period: evenly
 // spaced threads are a floor; spaced ones a lookup of the unit interval the point falls in,
 // then a binary search among the few threads that start inside it.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -35,7 +36,7 @@ public:
         if (!spaced()) {
             const double f = std::floor(e);
             const int64_t thread = int64_t(f);
-            return {thread, std::fmin(e - f, kBelowOne), period_ == 1 ? 0 : int(WeavePattern::positiveMod(thread, period_))};
+            return {thread, std::min(e - f, kBelowOne), period_ == 1 ? 0 : int(WeavePattern::positiveMod(thread, period_))};
         }
         return locateSpaced(e);
     }

@@ -69,7 +69,7 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in) const {
     }
     const glm::vec3 bumped = tangent.toWorld(y.normal);
     const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
-    const AshikhminShirley lobe(yarn.ex(), yarn.ey(), yarn.rs(), color);
+    const AshikhminShirley lobe(weave_.lobeShape(y.yarn), color);
     return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
 }
 

@@ -1,15 +1,16 @@
 #include "yarn_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace woven {
 
 glm::vec2 crossSectionNormal(float cy, float x) {
-    const float up = std::sqrt(std::fmax(0.0f, 1.0f - x * x));
-    const glm::vec2 n(cy * x, up);
-    const float len = glm::length(n);
+    const float up2 = std::max(0.0f, 1.0f - x * x);
+    const glm::vec2 n(cy * x, std::sqrt(up2));
+    const float len2 = n.x * n.x + up2;
     // c_y = 0 at |x| = 1 is 0/0: a flat yarn's normal is straight up everywhere.
-    return len > 1e-12f ? n / len : glm::vec2(0.0f, 1.0f);
+    return len2 > 1e-24f ? n * (1.0f / std::sqrt(len2)) : glm::vec2(0.0f, 1.0f);
 }
 
 namespace {
