@@ -25,8 +25,8 @@ float crimpSlope(float crimp, WeavePattern::Float f, double alongInElement) {
     return float(crimp * (1.0 - 1.0 / L) * M_PI / L * std::cos(M_PI * q));
 }
 
-// The normal of a yarn whose along axis is `alongAxis` (0 = u, 1 = v) at across position x,
-// tilted along the yarn by the crimp slope.
+}  // namespace
+
 glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
     const glm::vec2 section = crossSectionNormal(cy, x);  // (across, up)
     // Rotate the section normal about the across axis by atan(slope): norm is preserved.
@@ -39,8 +39,6 @@ glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
     n.z = upComp;
     return n;
 }
-
-}  // namespace
 
 YarnPoint yarnAt(const Weave& weave, const WovenParams& p, bool backSide, glm::dvec2 uv) {
     // Double precision and 64-bit thread indices keep |u|, |v| up to 1e6 (and repeat counts
