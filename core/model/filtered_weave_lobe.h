@@ -6,7 +6,8 @@
 //
 // Each lobe has its own bumped normal, and the integrators multiply eval() by the cosine to the
 // shading normal (z here): eval() returns sum_k w_k f_k cos_k / |cos|, so that product is the
-// mixture of the lobes each with its own cosine, as the exact model has at each point.
+// mixture of the lobes each with its own cosine, as the exact model has at each point (|cos|
+// bounded below, filtered_weave_lobe.cpp).
 #include <optional>
 
 #include "ashikhmin_shirley.h"
