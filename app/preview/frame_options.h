@@ -19,13 +19,14 @@ struct FrameOptions {
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
+    bool noFilter = false;               // point-sample the weave everywhere (the preview's too)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --woven --environment
-// --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --no-filter --woven
+// --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

@@ -146,7 +146,8 @@ private:
     RenderSettings render_;  // the Render button's, but for the camera
 };
 
-PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(options) {
+PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
+    : options_(options), filterWeave_(!options.frame.noFilter) {
     if (!glfwInit()) {
         const char* why = nullptr;
         glfwGetError(&why);
@@ -519,6 +520,7 @@ void PreviewWindow::drawRenderControls() {
     if (ImGui::Button("Render")) {
         RenderSettings settings = render_;
         settings.camera = camera_.camera();
+        settings.filterWeave = filterWeave_;  // the panel's "filter distant weave", --no-filter at start
         final_.start(scene(), settings);
         finalImage_.reset();
         showFinal_ = true;

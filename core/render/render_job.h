@@ -25,6 +25,7 @@ struct RenderSettings {
     uint64_t seed = 0;
     int threads = 0;           // 0 = all cores
     int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
+    bool filterWeave = true;   // woven materials filtered over each pixel's footprint (--no-filter: off)
     std::optional<Camera> camera;  // overrides the scene's
 };
 
