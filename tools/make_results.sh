@@ -50,7 +50,7 @@ figure() {
   echo
   echo "## Time to a clean frame: the weave filter"
   echo
-  echo "Path, BDPT and auto with the weave filter on (the default) and off (\\`--no-filter\\`), against an"
+  echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), against an"
   echo "unfiltered reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
   for scene in default_scene paper_d_satin; do
     echo

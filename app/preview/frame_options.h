@@ -19,13 +19,14 @@ struct FrameOptions {
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
-    bool noFilter = false;               // point-sample the weave everywhere (the preview's too)
+    bool noFilter = false;               // the preview point-samples the weave everywhere
+    bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --no-filter --woven
+// Registers --width --height --spp --integrator --seed --max-depth --no-filter --filter --woven
 // --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 

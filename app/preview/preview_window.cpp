@@ -520,7 +520,6 @@ void PreviewWindow::drawRenderControls() {
     if (ImGui::Button("Render")) {
         RenderSettings settings = render_;
         settings.camera = camera_.camera();
-        settings.filterWeave = filterWeave_;  // the panel's "filter distant weave", --no-filter at start
         final_.start(scene(), settings);
         finalImage_.reset();
         showFinal_ = true;
