@@ -31,7 +31,7 @@ struct PreviewCommandOptions {
 };
 
 SceneDescription openScene(const PreviewCommandOptions& o) {
-    SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene);
+    SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene, o.frame.load);
     applySceneOptions(scene, o.frame);
     return scene;
 }

@@ -33,6 +33,8 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_flag("--filter", o.filterRender,
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
+    command.add_flag("--allow-any-path", o.load.anyPath,
+                     "let a glTF file's buffers and images come from anywhere, not only from its own folder");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "

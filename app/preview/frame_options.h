@@ -11,6 +11,7 @@
 
 #include "image_io.h"
 #include "render_job.h"
+#include "scene_loader.h"
 
 namespace woven {
 
@@ -23,10 +24,11 @@ struct FrameOptions {
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
+    LoadOptions load;                    // --allow-any-path
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --no-filter --filter --woven
+// Registers --width --height --spp --integrator --seed --max-depth --no-filter --filter --allow-any-path --woven
 // --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 

@@ -194,7 +194,7 @@ PreviewWindow::~PreviewWindow() {
 }
 
 void PreviewWindow::openScene(const std::string& path) {
-    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path);
+    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path, options_.frame.load);
     // The command line's --woven edits name the command line's scene's materials.
     FrameOptions sceneOptions = options_.frame;
     if (path != options_.scene) sceneOptions.woven.clear();
