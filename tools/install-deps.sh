@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
-  libembree-dev libtinygltf-dev libtinyexr-dev
+  libembree-dev libtinygltf-dev libopenimageio-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   libgtest-dev libbenchmark-dev xvfb xauth gnuplot-nox
   slurm-wlm munge

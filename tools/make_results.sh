@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md and its pictures: convergence of both integrators on the two
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
-# render benchmarks, preview frame time, the paper's figures, the sample drafts and the bakes.
-# About 14 minutes on 2 cores.
+# render benchmarks, preview frame time, the paper's figures and the sample drafts, the weave
+# filter's time to a clean frame on the default scene and the paper's satin, and the bakes. About
+# 29 minutes on 2 cores.
 # Usage: tools/make_results.sh [build-dir]   (builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,8 +60,22 @@ bake_figure() {
     echo
     echo "### $scene"
     echo
-    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 \
+    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 --filter on --integrators path,bdpt \
         --width 320 --height 240 --out-dir "$out"
+    echo
+    echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
+  done
+  echo
+  echo "## Time to a clean frame: the weave filter"
+  echo
+  echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), against an"
+  echo "unfiltered reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
+  for scene in default_scene paper_d_satin; do
+    echo
+    echo "### $scene"
+    echo
+    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 200 \
+        --width 160 --height 120 --out-dir "$out"
     echo
     echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
   done

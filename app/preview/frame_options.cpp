@@ -29,6 +29,12 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
+    command.add_flag("--no-filter", o.noFilter, "the preview point-samples the weave even where it is finer than a pixel");
+    command.add_flag("--filter", o.filterRender,
+                     "experimental: the final render filters woven materials over each pixel's footprint, blending "
+                     "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
+    command.add_flag("--allow-any-path", o.load.anyPath,
+                     "let a glTF file's buffers and images come from anywhere, not only from its own folder");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
@@ -70,6 +76,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     if (!o.integrator.empty()) settings.integrator = o.integrator;
     settings.seed = o.seed;
     settings.maxDepth = o.maxDepth;
+    settings.filterWeave = o.filterRender;
     return settings;
 }
 

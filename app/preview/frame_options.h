@@ -11,6 +11,7 @@
 
 #include "image_io.h"
 #include "render_job.h"
+#include "scene_loader.h"
 
 namespace woven {
 
@@ -19,13 +20,16 @@ struct FrameOptions {
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
+    bool noFilter = false;               // the preview point-samples the weave everywhere
+    bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
+    LoadOptions load;                    // --allow-any-path
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --woven --environment
-// --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --no-filter --filter --allow-any-path --woven
+// --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

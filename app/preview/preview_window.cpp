@@ -148,7 +148,8 @@ private:
     RenderSettings render_;  // the Render button's, but for the camera
 };
 
-PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(options) {
+PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
+    : options_(options), filterWeave_(!options.frame.noFilter) {
     if (!glfwInit()) {
         const char* why = nullptr;
         glfwGetError(&why);
@@ -195,7 +196,7 @@ PreviewWindow::~PreviewWindow() {
 }
 
 void PreviewWindow::openScene(const std::string& path) {
-    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path);
+    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path, options_.frame.load);
     // The command line's --woven edits name the command line's scene's materials.
     FrameOptions sceneOptions = options_.frame;
     if (path != options_.scene) sceneOptions.woven.clear();

@@ -25,6 +25,9 @@ struct RenderSettings {
     uint64_t seed = 0;
     int threads = 0;           // 0 = all cores
     int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
+    // Woven materials filtered over each pixel's footprint (--filter). Off by default: its bias
+    // (about 2 % per pixel on the paper's satin) exceeds the noise it removes (docs/RESULTS.md).
+    bool filterWeave = false;
     std::optional<Camera> camera;  // overrides the scene's
 };
 
