@@ -35,7 +35,7 @@ void TexelSums::add(const std::optional<WovenShading>& shading) {
     const Frame& frame = shading->bsdf.frame();
     covered += 1.0;
     color += glm::dvec3(diffuseScale() * lobe.rd());
-    rs += lobe.rs();
+    rs += lobe.shape().rs;
     const glm::dvec3 n(frame.z);
     normal += n;
     // The lobe's microfacet normals about n: a GGX (Beckmann) lobe of width alpha spreads them
@@ -44,7 +44,7 @@ void TexelSums::add(const std::optional<WovenShading>& shading) {
     const double length = glm::length(along);
     along = length > 1e-12 ? along / length : glm::dvec2(1.0, 0.0);
     const glm::dvec2 across(-along.y, along.x);
-    const double ax = ggxAlphaForExponent(lobe.ex()), ay = ggxAlphaForExponent(lobe.ey());
+    const double ax = ggxAlphaForExponent(lobe.shape().ex), ay = ggxAlphaForExponent(lobe.shape().ey);
     spread += glm::outerProduct(glm::dvec2(n), glm::dvec2(n)) + 0.5 * ax * ax * glm::outerProduct(along, along) +
               0.5 * ay * ay * glm::outerProduct(across, across);
 }

@@ -38,9 +38,7 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
 
     bool transmits() const { return false; }
-    float ex() const { return ex_; }
-    float ey() const { return ey_; }
-    float rs() const { return rs_; }
+    const LobeShape& shape() const { return shape_; }
     const glm::vec3& rd() const { return rd_; }  // the diffuse reflectance R_d
     float specularProbability() const { return specularProb_; }
     // Density of half vector h for the specular lobe (the source's eq. 1, p_h).

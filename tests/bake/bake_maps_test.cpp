@@ -117,8 +117,8 @@ TEST_P(BakedMaps, AgreeWithTheModelAtPointsInsideTheYarnsAndGaps) {
         worstDirection = std::max(worstDirection, std::abs(glm::dot(glm::normalize(glm::vec2(direction)), yarn)));
         const float alpha = in.roughness * in.roughness;
         const float alphaT = alpha + (1.0f - alpha) * in.anisotropy * in.anisotropy;
-        worstSmooth = std::max(worstSmooth, std::abs(alpha / ggxAlphaForExponent(lobe.ex()) - 1.0f));
-        worstRough = std::max(worstRough, std::abs(alphaT / ggxAlphaForExponent(lobe.ey()) - 1.0f));
+        worstSmooth = std::max(worstSmooth, std::abs(alpha / ggxAlphaForExponent(lobe.shape().ex) - 1.0f));
+        worstRough = std::max(worstRough, std::abs(alphaT / ggxAlphaForExponent(lobe.shape().ey) - 1.0f));
     }
     std::printf("[ maps ] %s: %d interior points (%d smooth); normal within %.2f deg, direction |cos| %.3f, "
                 "alpha along %.1f %%, across %.1f %%\n",
