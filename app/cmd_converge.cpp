@@ -308,7 +308,7 @@ void addConvergeCommand(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));
     cmd->add_option("--height", o->height, "image height")->check(CLI::Range(8, 8192));
-    cmd->add_option("--threads", o->threads, "threads (0 = all cores)");
+    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--out-dir", o->outDir, "where the reference, CSV and plot go");
     cmd->callback([o] { runConverge(*o); });
 }

@@ -3,12 +3,14 @@
 // keeps the exact sums of its samples and its sample range (image_io.h), so the merge is the
 // frame one render of the union gives, bit for bit, and overlaps and gaps are seen.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 
 #include "commands.h"
+#include "atomic_file.h"
 #include "image_io.h"
 
 namespace woven {
@@ -29,6 +31,13 @@ ExrImage readPart(const std::string& path) {
     if (part.sampleCount.empty()) throw missing("sample-count channel N");
     if (part.sampleSums.empty()) throw missing("sample sums (channels sum.R0-sum.B3)");
     if (!part.samples) throw missing("sample range (attributes wovenFirstSample, wovenSampleCount)");
+    // A count is what the sums are divided by: NaN or a negative one would write NaN or
+    // negate the pixel.
+    for (size_t i = 0; i < part.sampleCount.size(); ++i)
+        if (!(part.sampleCount[i] >= 0.0f && std::isfinite(part.sampleCount[i])))
+            throw std::invalid_argument(path + ": pixel (" + std::to_string(i % size_t(part.image.width)) + ", " +
+                                        std::to_string(i / size_t(part.image.width)) + ") has the sample count N = " +
+                                        std::to_string(part.sampleCount[i]) + ", which is not a finite number >= 0");
     return part;
 }
 
@@ -68,7 +77,28 @@ std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int expected
     return missing;
 }
 
+// Before any part is read: the output is an EXR that can be written, and no file is named
+// twice (its samples would count twice) or as both a part and the output (which would replace it).
+void checkFiles(const std::vector<std::string>& inputs, const std::string& out) {
+    if (lowerExtension(out) != ".exr")
+        throw std::invalid_argument(out + ": merge writes OpenEXR: the output's name must end in .exr");
+    checkWritable(out);
+    const auto same = [](const std::string& a, const std::string& b) {
+        std::error_code error;
+        return std::filesystem::equivalent(a, b, error) && !error;
+    };
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        if (same(inputs[i], out))
+            throw std::invalid_argument(inputs[i] + " is both a part and the output: merging would replace it");
+        for (size_t j = 0; j < i; ++j)
+            if (same(inputs[i], inputs[j]))
+                throw std::invalid_argument(inputs[j] + " and " + inputs[i] +
+                                            " are the same file: its samples would count twice");
+    }
+}
+
 void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int> expected) {
+    checkFiles(inputs, out);
     // One part in memory at a time: the sum is added up as they are read, and the ranges are
     // checked once all are known (a merge with overlapping parts writes nothing).
     ExrImage sum;

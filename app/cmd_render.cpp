@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "frame_limits.h"
 #include "image_io.h"
 #include "progress_bar.h"
 #include "render_options.h"
@@ -76,6 +77,9 @@ int runRender(RenderCommand o) {
     if (timeLimited && !sppGiven) settings.spp = std::numeric_limits<int>::max() - o.firstSample;
     settings.timeLimit = o.time;
     settings.threads = o.options.threads;
+    if (settings.threads > workerThreads(settings.threads))
+        std::cerr << "warning: --threads " << settings.threads << ": this machine has " << workerThreads(0)
+                  << " hardware threads for woven; using " << workerThreads(0) << "\n";
     settings.firstSample = o.firstSample;
 
     RenderJob job(scene, settings);

@@ -42,7 +42,8 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->type_name("FILE|GREY");
     static const std::map<std::string, ToneMap> toneMaps = {
         {"clamp", ToneMap::Clamp}, {"reinhard", ToneMap::Reinhard}, {"aces", ToneMap::Aces}};
-    command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops");
+    // 2^40 either way takes any radiance to the display's range; beyond, the scale overflows.
+    command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops")->check(CLI::Range(-40.0f, 40.0f));
     command.add_option("--tone-map", o.display.toneMap, "PNG and display tone curve: aces (default), clamp or reinhard")
         ->transform(CLI::CheckedTransformer(toneMaps, CLI::ignore_case).description(""))
         ->type_name("aces|clamp|reinhard");

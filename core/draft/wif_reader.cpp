@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <tuple>
 
 #include "drawdown.h"
+#include "file_reading.h"
 #include "srgb.h"
 #include "text_encoding.h"
 #include "wif_sections.h"
@@ -430,15 +430,13 @@ Draft parseWif(std::string_view text, const std::string& name, std::vector<std::
 }
 
 Draft readWif(const std::string& path, std::vector<std::string>& warnings) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) throw DraftError(path + ": cannot open the file (missing or unreadable)");
-    const std::streamoff size = in.tellg();
-    if (size < 0 || size_t(size) > kMaxWifFileBytes)
-        throw DraftError(path + ": larger than woven's limit of " + std::to_string(kMaxWifFileBytes >> 20) + " MiB for a WIF file");
-    std::string text(size_t(size), '\0');
-    in.seekg(0);
-    if (!in.read(text.data(), size)) throw DraftError(path + ": cannot read the file");
-    return parseWif(text, path, warnings);
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = readRegularFile(path, kMaxWifFileBytes);
+    } catch (const FileReadError& e) {
+        throw DraftError(e.what());
+    }
+    return parseWif(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, warnings);
 }
 
 }  // namespace woven

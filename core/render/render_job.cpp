@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "film.h"
+#include "frame_limits.h"
 #include "integrator.h"
 #include "render_scene.h"
 #include "scene_camera.h"
@@ -77,7 +78,7 @@ struct RenderJob::Impl {
 
     Impl(std::shared_ptr<const SceneDescription> scene_, RenderSettings settings_)
         : description(std::move(scene_)), settings(std::move(settings_)),
-          arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic),
+          arena(workerThreads(settings.threads)),
           film(settings.width, settings.height) {}
 
     // "auto": the more efficient integrator (1 / (variance x time) per pass) in a pilot of
@@ -157,6 +158,7 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     if (settings.spp < 0) throw std::invalid_argument("samples per pixel must not be negative");
     if (settings.firstSample < 0) throw std::invalid_argument("the first sample index must not be negative");
     if (settings.maxDepth < 1) throw std::invalid_argument("the maximum depth must be at least 1");
+    checkFrameFitsInMemory(settings.width, settings.height);
     impl_ = std::make_unique<Impl>(std::move(scene), std::move(settings));
     Impl& im = *impl_;
     im.scene = std::make_unique<RenderScene>(im.description);

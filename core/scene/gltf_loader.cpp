@@ -21,6 +21,7 @@
 #include "gltf_material_reader.h"
 #include "untrusted_json.h"
 #include "image_io.h"
+#include "light_limits.h"
 #include "mesh_attributes.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
@@ -84,6 +85,10 @@ constexpr size_t kMaxGltfFileBytes = size_t(4) << 30;
 // radiometric (W/sr, W/m^2). Blender's importer divides by 683 lm/W (its default "Standard"
 // lighting mode), and so does woven, so a file lights the same in both.
 constexpr float kLumensPerWatt = 683.0f;
+
+// A camera's aspectRatio (width / height) outside [kMinCameraAspect, 1 / kMinCameraAspect] is
+// no picture anyone means: a line of pixels.
+constexpr double kMinCameraAspect = 1.0 / 64.0;
 
 bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -284,12 +289,25 @@ private:
         }
         if (!(camera.perspective.yfov > 0.0 && camera.perspective.yfov < M_PI))
             fail("camera '" + nameOr(camera.name, "camera", node.camera) + "': yfov must be in (0, pi)");
-        // Scale in the node transform would scale the view frustum: keep rotation and position only.
+        // aspectRatio is optional (tinygltf reads a missing one as 0: the image decides).
+        const double aspect = camera.perspective.aspectRatio;
+        if (!(aspect == 0.0 || (aspect >= kMinCameraAspect && aspect <= 1.0 / kMinCameraAspect)))
+            fail("camera '" + nameOr(camera.name, "camera", node.camera) + "': aspectRatio " + std::to_string(aspect) +
+                 " is not a width / height between " + std::to_string(kMinCameraAspect) + " and " +
+                 std::to_string(1.0 / kMinCameraAspect));
+        // Scale in the node transform would scale the view frustum: keep rotation and position
+        // only. A zero scale or a non-finite matrix leaves no frame to look through (NaN rays).
         glm::mat4 cameraToWorld = world;
         for (int axis = 0; axis < 3; ++axis) cameraToWorld[axis] = glm::vec4(glm::normalize(glm::vec3(world[axis])), 0.0f);
+        const bool degenerate = !allFinite(glm::vec3(cameraToWorld[0])) || !allFinite(glm::vec3(cameraToWorld[1])) ||
+                                !allFinite(glm::vec3(cameraToWorld[2])) || !allFinite(glm::vec3(cameraToWorld[3])) ||
+                                !(std::abs(glm::determinant(glm::mat3(cameraToWorld))) > 1e-3f);
+        if (degenerate)
+            fail("node '" + nodeName + "': the camera's transform is degenerate (a zero scale, parallel axes or a "
+                 "non-finite value): it has no view to render");
         scene_.camera.cameraToWorld = cameraToWorld;
         scene_.camera.yfov = float(camera.perspective.yfov);
-        scene_.camera.aspect = float(camera.perspective.aspectRatio);
+        scene_.camera.aspect = float(aspect);
         scene_.hasCamera = true;
     }
 
@@ -305,11 +323,20 @@ private:
         else fail("light '" + nameOr(source.name, "light", lightIndex) + "': unknown type '" + source.type + "'");
         light.position = glm::vec3(world[3]);
         light.direction = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f));
-        light.intensity = color3(source.color, glm::vec3(1.0f)) * float(source.intensity) / kLumensPerWatt;
-        light.innerConeAngle = float(source.spot.innerConeAngle);
-        light.outerConeAngle = float(source.spot.outerConeAngle);
-        if (!allFinite(light.direction) || !allFinite(light.position) || !allFinite(light.intensity))
-            fail("node '" + nodeName + "': light has a degenerate transform or a non-finite intensity");
+        const std::string lightName = "light '" + nameOr(source.name, "light", lightIndex) + "'";
+        light.intensity = color3(source.color, glm::vec3(1.0f)) * float(source.intensity / kLumensPerWatt);
+        if (const std::string problem = lightValueProblem(light.intensity); !problem.empty())
+            fail(lightName + ": intensity " + std::to_string(source.intensity) + " times its colour, divided by " +
+                 std::to_string(int(kLumensPerWatt)) + " lm/W, " + problem);
+        if (light.type == PunctualLight::Type::Spot) {
+            light.innerConeAngle = float(source.spot.innerConeAngle);
+            light.outerConeAngle = float(source.spot.outerConeAngle);
+            if (!(light.innerConeAngle >= 0.0f && light.innerConeAngle < light.outerConeAngle &&
+                  light.outerConeAngle <= float(M_PI / 2)))
+                fail(lightName + ": the cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
+        }
+        if (!allFinite(light.direction) || !allFinite(light.position))
+            fail("node '" + nodeName + "': " + lightName + " has a degenerate transform (a zero scale or a non-finite value)");
         scene_.lights.push_back(light);
     }
 

@@ -382,18 +382,17 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     });
 }
 
-namespace {
 std::string lowerExtension(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     return extension;
 }
-}  // namespace
 
 void checkFrameFileName(const std::string& path) {
     const std::string extension = lowerExtension(path);
     if (extension != ".exr" && extension != ".png")
         fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
+    checkWritable(path);
 }
 
 std::string partialFrameName(const std::string& path) {

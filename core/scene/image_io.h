@@ -87,10 +87,14 @@ void writeExr(const std::string& path, const ExrImage& exr,
               ExrPrecision precision = ExrPrecision::Half);
 ExrImage readExr(const std::string& path);
 
+// ".exr" for "out/Frame.EXR": the extension with its dot, in lower case; "" for none.
+std::string lowerExtension(const std::string& path);
+
 // A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
 // 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
-// Throws the ImageError writeFrame would for `path`'s extension: check before a long render.
+// Throws the ImageError writeFrame would for `path`'s extension, or the FileWriteError for a
+// folder that is missing or not writable (atomic_file.h): check before a long render.
 void checkFrameFileName(const std::string& path);
 // "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
 // a finished one.

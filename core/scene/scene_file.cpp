@@ -10,8 +10,10 @@
 #include "gltf_loader.h"
 #include "untrusted_json.h"
 #include "image_io.h"
+#include "light_limits.h"
 #include "woven_assignment.h"
 #include "scene_camera.h"
+#include "scene_lighting.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
 
@@ -93,7 +95,9 @@ private:
     }
 
     float number(const json& v, const std::string& where) const {
-        if (!v.is_number() || !std::isfinite(v.get<double>())) fail(where, "must be a finite number");
+        // Finite as a float too: 1e39 is a finite double but an infinite float.
+        if (!v.is_number() || !std::isfinite(v.get<double>()) || !std::isfinite(v.get<float>()))
+            fail(where, "must be a finite number");
         return v.get<float>();
     }
 
@@ -129,13 +133,17 @@ private:
         if (env.contains("image")) {
             const std::string image = resolve(string(env["image"], "environment.image"));
             try {
-                environment.image = std::make_shared<Image>(readImage(image, ChannelEncoding::Srgb));
+                environment.image = readEnvironmentImage(image);
             } catch (const ImageError& e) {
                 fail("environment.image", e.what());
             }
             environment.color = glm::vec3(1.0f);  // the image as it is unless a colour scales it
         }
-        if (env.contains("color")) environment.color = color(env["color"], "environment.color");
+        if (env.contains("color")) {
+            environment.color = color(env["color"], "environment.color");
+            if (const std::string problem = lightValueProblem(environment.color); !problem.empty())
+                fail("environment.color", problem);
+        }
         if (env.contains("rotation")) environment.rotation = glm::radians(number(env["rotation"], "environment.rotation"));
     }
 
@@ -168,6 +176,8 @@ private:
             const float intensity = l.contains("intensity") ? number(l["intensity"], where + ".intensity") : 1.0f;
             if (intensity < 0.0f) fail(where + ".intensity", "must not be negative");
             light.intensity = c * intensity;
+            if (const std::string problem = lightValueProblem(light.intensity); !problem.empty())
+                fail(where, "color times intensity " + problem);
             const bool coned = l.contains("inner_cone_degrees") || l.contains("outer_cone_degrees");
             if (coned && light.type != PunctualLight::Type::Spot) fail(where, "cone angles are for spot lights");
             if (l.contains("inner_cone_degrees"))

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 
 #include "environment_mapping.h"
 #include "image_io.h"
+#include "light_limits.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
 
@@ -102,6 +104,22 @@ bool lightByDefault(SceneDescription& scene) {
     return true;
 }
 
+std::shared_ptr<Image> readEnvironmentImage(const std::string& path) {
+    auto image = std::make_shared<Image>(readImage(path, ChannelEncoding::Srgb));
+    size_t negative = 0;
+    for (size_t i = 0; i < image->pixels.size(); ++i) {
+        glm::vec3& p = image->pixels[i];
+        negative += p.r < 0.0f || p.g < 0.0f || p.b < 0.0f;
+        p = glm::max(p, glm::vec3(0.0f));
+        if (const std::string problem = lightValueProblem(p); !problem.empty())
+            throw ImageError(path + ": pixel (" + std::to_string(i % size_t(image->width)) + ", " +
+                             std::to_string(i / size_t(image->width)) + ") " + problem);
+    }
+    if (negative)
+        std::cerr << "warning: " << path << ": " << negative << " pixels with negative values read as 0\n";
+    return image;
+}
+
 Environment environmentFromOption(const std::string& value) {
     char* end = nullptr;
     const float grey = std::strtof(value.c_str(), &end);
@@ -113,7 +131,7 @@ Environment environmentFromOption(const std::string& value) {
         return env;
     }
     try {
-        env.image = std::make_shared<Image>(readImage(value, ChannelEncoding::Srgb));
+        env.image = readEnvironmentImage(value);
     } catch (const ImageError& e) {
         throw SceneError(std::string("--environment: ") + e.what());
     }

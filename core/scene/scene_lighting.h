@@ -3,6 +3,7 @@
 // environment built into woven (a soft grey dome over a darker floor, a key, a fill and a rim
 // soft box); and the command line's --environment, which replaces a scene's environment with an
 // image or a uniform grey.
+#include <memory>
 #include <string>
 
 #include "scene_description.h"
@@ -25,6 +26,12 @@ Environment studioEnvironment();
 // Lights a scene without light sources with studioEnvironment(), unless a woven scene file set
 // its lighting; returns whether it did.
 bool lightByDefault(SceneDescription& scene);
+
+// An equirectangular environment image (readImage(), .png/.jpg decoded from sRGB), its pixels
+// checked as light: a non-finite or too bright one (light_limits.h) throws ImageError naming
+// the file and the pixel; negative ones, which resampling filters leave in HDR files, become 0
+// with one warning on stderr.
+std::shared_ptr<Image> readEnvironmentImage(const std::string& path);
 
 // --environment's value: an image file (.hdr, .exr; .png/.jpg decoded from sRGB) or a number,
 // the radiance of a uniform grey environment. Throws SceneError naming the option and the file.

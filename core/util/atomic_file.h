@@ -1,7 +1,9 @@
 #pragma once
 // Writing a file so that its final name only ever holds a complete file: the content goes to
-// "<path>.tmp-<pid>" and is renamed over <path> once written. A reader (or a crash, or Ctrl-C)
-// never sees a half-written file under the final name.
+// "<path>.tmp-<host>-<pid>" and is renamed over <path> once written. A reader (or a crash, or
+// Ctrl-C) never sees a half-written file under the final name. A process killed outright
+// (SIGKILL, a node lost) leaves its temporary file behind: the next write of the same path on
+// the same host removes those whose process is gone.
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -19,5 +21,10 @@ std::string temporaryPathFor(const std::string& path);
 // the temporary file is removed and FileWriteError (naming `path`) is thrown.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& write);
+
+// Throws the FileWriteError a write of `path` would meet for want of a folder or permission
+// (or a directory by that name), by creating and removing its temporary file: what a command
+// checks before a long render.
+void checkWritable(const std::string& path);
 
 }  // namespace woven

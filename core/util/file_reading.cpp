@@ -9,6 +9,15 @@
 
 namespace woven {
 
+namespace {
+// "64 MiB", "2 GiB", or a count of bytes.
+std::string byteSize(size_t bytes) {
+    if (bytes >= (size_t(1) << 30) && bytes % (size_t(1) << 30) == 0) return std::to_string(bytes >> 30) + " GiB";
+    if (bytes >= (size_t(1) << 20) && bytes % (size_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+    return std::to_string(bytes) + " bytes";
+}
+}  // namespace
+
 std::vector<unsigned char> readRegularFile(const std::string& path, size_t maxBytes) {
     const auto fail = [&](const std::string& problem) { throw FileReadError(path + ": " + problem); };
     // O_NONBLOCK: opening a FIFO must not wait for a writer; fstat then says what it is.
@@ -21,8 +30,7 @@ std::vector<unsigned char> readRegularFile(const std::string& path, size_t maxBy
     }
     if (size_t(info.st_size) > maxBytes) {
         ::close(fd);
-        fail("the file has " + std::to_string(info.st_size) + " bytes, more than the " + std::to_string(maxBytes) +
-             " woven reads");
+        fail("larger than woven's limit of " + byteSize(maxBytes) + " (" + std::to_string(info.st_size) + " bytes)");
     }
     std::vector<unsigned char> bytes(size_t(info.st_size));
     size_t done = 0;

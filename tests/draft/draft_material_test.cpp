@@ -124,7 +124,7 @@ TEST_F(DraftMaterial, ScaleDraftGivesThreadsPerCentimetre) {
 
 TEST_F(DraftMaterial, MistakesNameTheKeyOrTheFile) {
     EXPECT_EQ(error({{"wif", 3}}), "'wif' must be the path of a WIF file");
-    EXPECT_NE(error({{"wif", "missing.wif"}}).find(dir.file("missing.wif") + ": cannot open"), std::string::npos);
+    EXPECT_NE(error({{"wif", "missing.wif"}}).find(dir.file("missing.wif") + ": no such file"), std::string::npos);
     EXPECT_EQ(error({{"scale", "draft"}}), "'scale': \"draft\" needs a draft: give \"wif\"");
     EXPECT_NE(error({{"wif", "twill.wif"}, {"scale", "real"}}).find("'scale' must be \"draft\""), std::string::npos);
     EXPECT_NE(error({{"wif", "twill.wif"}, {"scale", "draft"}, {"repeat", {1, 1}}}).find("'scale'"), std::string::npos);

@@ -144,7 +144,7 @@ TEST_F(SceneDraft, ScaleDraftUsesTheMeshsUvToWorldScale) {
 TEST_F(SceneDraft, MistakesNameTheSceneFileTheKeyAndTheDraft) {
     const std::string scene = dir.file("sub/scene.json");
     EXPECT_EQ(error({{"Cloth", {{"wif", "drafts/none.wif"}}}}),
-              scene + ": materials.Cloth: " + dir.file("sub/drafts/none.wif") + ": cannot open the file (missing or unreadable)");
+              scene + ": materials.Cloth: " + dir.file("sub/drafts/none.wif") + ": no such file");
     EXPECT_EQ(error({{"Bare", {{"wif", "drafts/plain.wif"}, {"scale", "draft"}}}}),
               scene + ": materials.Bare: no triangle with texture coordinates to measure, which "
                       "\"scale\": \"draft\" needs");
@@ -190,7 +190,7 @@ TEST_F(SceneDraft, WovenOptionResolvesAgainstTheWorkingDirectory) {
             return std::string(e.what());
         }
         return std::string("(no error)");
-    }(), HasSubstr("--woven Cloth: plain.wif: cannot open the file"));
+    }(), HasSubstr("--woven Cloth: plain.wif: no such file"));
 }
 
 // The draft scenes of assets/: they load without a warning, their cloth carries its draft, and

@@ -1,0 +1,31 @@
+#pragma once
+// `woven bsdf-eval`'s answer to one line of its input: a JSON query
+//   {"material": {...}, "uv": [u, v], "wi": [x, y, z], "wo": [x, y, z]}
+// in, {"f": [r, g, b], "pdf": p, "yarn": "weft|warp|gap"} out. The lines come from anyone's
+// program, so each is bounded (length, JSON depth) and every problem is an exception with a
+// message, never a crash.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace woven {
+
+// Longer lines are refused unread: a query with a material is well under a kilobyte.
+constexpr size_t kMaxBsdfEvalLineBytes = size_t(1) << 20;
+
+class BsdfEval {
+public:
+    BsdfEval();
+    ~BsdfEval();
+
+    // The answer's JSON text; throws std::exception whose message says what is wrong with the
+    // query. Materials are built once and kept for the lines that follow.
+    std::string answer(std::string_view line);
+
+private:
+    class MaterialCache;
+    std::unique_ptr<MaterialCache> materials_;
+};
+
+}  // namespace woven

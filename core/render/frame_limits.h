@@ -1,0 +1,26 @@
+#pragma once
+// What a frame may ask of the machine that renders it, checked before anything is allocated:
+// the command line allows frames of 32768 x 32768, whose film alone would take hundreds of
+// gigabytes, and any thread count.
+#include <cstddef>
+
+namespace woven {
+
+// What a frame holds per pixel while it renders and is written, rounded up: the film's exact
+// sums and count (52 bytes), a pass and its combined estimate (24), the snapshot (64), and the
+// EXR's interleaved channels with OpenImageIO's copy (128), plus room for per-pixel statistics.
+constexpr size_t kFrameBytesPerPixel = 320;
+
+// This machine's physical memory in bytes.
+size_t physicalMemoryBytes();
+
+// Throws std::invalid_argument naming the size, the estimate and the memory when a width x
+// height frame's estimate exceeds this machine's physical memory.
+void checkFrameFitsInMemory(int width, int height);
+
+// The worker threads for RenderSettings::threads: 0, and anything above the hardware threads
+// this process may use, give all of those (more would only oversubscribe the cores, and TBB
+// fails at exit with tens of thousands).
+int workerThreads(int requested);
+
+}  // namespace woven
