@@ -14,18 +14,22 @@
 
 namespace woven {
 
+// --noise-threshold's default: docs/ADAPTIVE_SAMPLING.md gives the measurements it rests on.
+constexpr double kDefaultNoiseThreshold = 0.0;
+
 struct FrameOptions {
     int width = 0, height = 0, spp = 0;  // 0: the scene's, else defaultRenderSettings()'
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
+    double noiseThreshold = kDefaultNoiseThreshold;  // RenderSettings::noiseThreshold; 0: off
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --woven --environment
-// --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --woven
+// --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

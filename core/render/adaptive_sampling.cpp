@@ -52,7 +52,8 @@ double AdaptiveSampling::relativeError(int x, int y) const {
     for (int v = std::max(y - 1, 0); v <= std::min(y + 1, height_ - 1); ++v)
         for (int u = std::max(x - 1, 0); u <= std::min(x + 1, width_ - 1); ++u, ++n)
             pooled += variance_[size_t(v) * width_ + u];
-    return std::sqrt(pooled / n / count_[size_t(y) * width_ + x]);
+    const size_t i = size_t(y) * width_ + x;
+    return std::sqrt(std::max(variance_[i], pooled / n) / count_[i]);
 }
 
 }  // namespace woven

@@ -6,14 +6,15 @@
 // pass values alone (no clock, no thread order), so a render stays a pure function of (scene,
 // seed, settings), and the samples of every pixel are the first N of the render's range.
 //
-// The error estimate of pixel j after n_j samples: e_j^2 = vbar_j / n_j, where v_k, pixel k's
-// relative variance per sample, is sum_c s_c^2 / sum_c (m_c^2 + eps) with s_c^2 the sample
-// variance of channel c's pass values and m_c their mean, and vbar_j is the mean of v_k over the
-// 3 x 3 pixels around j. eps = 0.01 as in woven converge's relMSE, so a dark pixel's error is
-// measured against 0.1, not its own tiny value. The sample variance has n - 1 degrees of
-// freedom where the difference of two half buffers has one; pooling it over the neighbourhood,
-// where the integrand is much the same, steadies it further, so that a pixel seldom stops on a
-// lucky run of samples.
+// The error estimate of pixel j after n_j samples: e_j^2 = max(v_j, vbar_j) / n_j, where v_k,
+// pixel k's relative variance per sample, is sum_c s_c^2 / sum_c (m_c^2 + eps) with s_c^2 the
+// sample variance of channel c's pass values and m_c their mean, and vbar_j is the mean of v_k
+// over the 3 x 3 pixels around j. eps = 0.01 as in woven converge's relMSE, so a dark pixel's
+// error is measured against 0.1, not its own tiny value. The sample variance has n - 1 degrees
+// of freedom where the difference of two half buffers has one; the neighbourhood, where the
+// integrand is much the same, steadies it further, so that a pixel seldom stops on a lucky run of
+// samples; and the maximum keeps an edge pixel from stopping early because its neighbours on
+// one side (a flat sky) have no variance.
 #include <cstdint>
 #include <vector>
 
