@@ -33,7 +33,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         .add_option("--noise-threshold", o.noiseThreshold,
                      "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
                      "--spp is then its most; 0: every pixel takes every sample")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,

@@ -2,14 +2,18 @@
 // headless GL (llvmpipe here; the GPU through EGL where there is one), with the woven features,
 // the far-field weave filter and the shadows compiled in or out; and the frame time while a
 // light moves, which re-renders the shadow maps every frame. Also prints the number of lights
-// the shader loops over, which the frame time is proportional to where the filter is on.
+// the shader loops over, which the frame time is proportional to where the filter is on. And the
+// window's frames as the user sees them, while the camera moves (InteractiveResolution renders
+// smaller) and idle (full size): render, display into the window-sized target, glFinish.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 
 #include "demo_scene.h"
 #include "headless_gl.h"
+#include "interactive_resolution.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
 #include "scene_loader.h"
@@ -77,6 +81,51 @@ void previewFrameLightMoving(benchmark::State& state) {
     }
 }
 BENCHMARK(previewFrameLightMoving)->Args({640, 480})->ArgNames({"w", "h"})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The window's frame, orbiting the camera a little every frame while `interacting`: sized by
+// InteractiveResolution from the frames' measured times (after 30 frames to settle), rendered,
+// and shown at the window's size through the display transform, as PreviewWindow::run() does.
+void previewWindowFrame(benchmark::State& state) {
+    static auto gl = HeadlessGl::create();
+    const SceneDescription scene = benchScene(true);
+    PreviewRenderer renderer;
+    renderer.setMeshes(scene);
+    const PreviewLights lights = PreviewLights::fromScene(scene);
+    OrbitCamera orbit = OrbitCamera::forScene(scene);
+    const glm::ivec2 window(int(state.range(0)), int(state.range(1)));
+    const bool interacting = state.range(2) != 0;
+    GLuint target = 0, framebuffer = 0;
+    glGenTextures(1, &target);
+    glBindTexture(GL_TEXTURE_2D, target);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, window.x, window.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    InteractiveResolution resolution;
+    const auto frame = [&] {
+        const Clock::time_point begin = Clock::now();
+        if (interacting) orbit.orbit(0.01f, 0.0f);
+        Camera camera = orbit.camera();
+        camera.aspect = float(window.x) / float(window.y);
+        const double now = std::chrono::duration<double>(begin - start).count();
+        renderer.render(scene, lights, camera, resolution.frameSize(window, interacting, now), {});
+        renderer.display(framebuffer, {0, 0}, window, {});
+        glFinish();
+        resolution.frameTook(std::chrono::duration<double>(Clock::now() - begin).count());
+    };
+    for (int i = 0; i < 30; ++i) frame();
+    for (auto _ : state) frame();
+    state.counters["scale"] = resolution.scale();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &target);
+}
+BENCHMARK(previewWindowFrame)
+    ->Args({1280, 720, 1})->Args({1280, 720, 0})
+    ->ArgNames({"w", "h", "interacting"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace woven
