@@ -14,7 +14,9 @@ public:
     struct Settings {
         double targetSeconds = 1.0 / 24.0;  // per interactive frame: 24 fps leaves a margin over 20
         double settleSeconds = 0.25;        // after the last interaction, still interactive (a wheel's clicks)
-        float minScale = 0.25f;             // of the window's width and height
+        // Of the window's width and height. As low as Blender's viewport goes (pixel size 8): on
+        // llvmpipe the weave's far-field filter makes a pixel dearer the smaller the frame.
+        float minScale = 0.125f;
     };
 
     InteractiveResolution() : InteractiveResolution(Settings{}) {}

@@ -98,7 +98,7 @@ TEST(InteractiveResolution, NeverSmallerThanTheFloor) {
     gpu.fullFrameSeconds = 0.5;
     double now = 0.0;
     const glm::ivec2 size = runFrames(r, gpu, &now, 30, [](int) { return true; });
-    EXPECT_EQ(size, glm::ivec2(320, 180));
+    EXPECT_EQ(size, glm::ivec2(160, 90));
 }
 
 TEST(InteractiveResolution, FramesItDidNotSizeDoNotCount) {
