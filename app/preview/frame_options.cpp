@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "woven_assignment.h"
 #include "scene_lighting.h"
@@ -29,12 +30,11 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
-    command
-        .add_option("--noise-threshold", o.noiseThreshold,
-                     "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
-                     "--spp is then its most; 0: every pixel takes every sample")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
+    std::ostringstream threshold;
+    threshold << "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
+                 "--spp is then its most; 0: every pixel takes every sample (default: "
+              << kDefaultNoiseThreshold << ")";
+    command.add_option("--noise-threshold", o.noiseThreshold, threshold.str())->check(CLI::NonNegativeNumber);
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
@@ -76,7 +76,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     if (!o.integrator.empty()) settings.integrator = o.integrator;
     settings.seed = o.seed;
     settings.maxDepth = o.maxDepth;
-    settings.noiseThreshold = o.noiseThreshold;
+    if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
     return settings;
 }
 

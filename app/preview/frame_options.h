@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,15 +15,12 @@
 
 namespace woven {
 
-// --noise-threshold's default: docs/ADAPTIVE_SAMPLING.md gives the measurements it rests on.
-constexpr double kDefaultNoiseThreshold = 0.0;
-
 struct FrameOptions {
     int width = 0, height = 0, spp = 0;  // 0: the scene's, else defaultRenderSettings()'
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
-    double noiseThreshold = kDefaultNoiseThreshold;  // RenderSettings::noiseThreshold; 0: off
+    std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     DisplayTransform display;

@@ -56,16 +56,24 @@ struct RayLog {
     std::atomic<RTCScene> scene{nullptr};  // the renderer's
     std::mutex mutex;
     std::vector<std::unique_ptr<std::vector<RecordedRay>>> threads;
+    int generation = 0;  // of `threads`: a thread's list from an earlier recording is gone
 
     void note(RTCScene s, const RTCRay& ray, bool occlusion) {
         thread_local std::vector<RecordedRay>* mine = nullptr;
-        if (!mine) {
+        thread_local int myGeneration = -1;
+        if (myGeneration != generation) {
             std::lock_guard<std::mutex> lock(mutex);
             threads.push_back(std::make_unique<std::vector<RecordedRay>>());
             mine = threads.back().get();
+            myGeneration = generation;
         }
         scene.store(s, std::memory_order_relaxed);
         mine->push_back({ray, occlusion});
+    }
+    // Between recordings only, when no thread traces.
+    void clear() {
+        threads.clear();
+        ++generation;
     }
 };
 RayLog rayLog;
@@ -281,7 +289,7 @@ ReplayRates replayRenderersRays(const std::shared_ptr<const SceneDescription>& s
     s.threads = threads;
     RenderJob job(scene, s);
     std::atomic<bool> cancel{false};
-    rayLog.threads.clear();
+    rayLog.clear();
     rayLog.recording = true;
     job.run(cancel);
     rayLog.recording = false;
@@ -296,7 +304,7 @@ ReplayRates replayRenderersRays(const std::shared_ptr<const SceneDescription>& s
     r.bare = replayRate(bare, rayLog.threads, threads);
     rtcReleaseScene(bare);
     rtcReleaseDevice(device);
-    rayLog.threads.clear();
+    rayLog.clear();
     return r;
 }
 

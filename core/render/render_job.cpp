@@ -150,6 +150,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
 
 RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     RenderSettings settings;
+    settings.noiseThreshold = kDefaultNoiseThreshold;
     if (scene.render.width > 0) settings.width = scene.render.width;
     if (scene.render.height > 0) settings.height = scene.render.height;
     if (scene.render.spp > 0) settings.spp = scene.render.spp;

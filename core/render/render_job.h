@@ -26,13 +26,19 @@ struct RenderSettings {
     int threads = 0;           // 0 = all cores
     int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
     // Adaptive sampling (adaptive_sampling.h): a pixel stops once the estimated relative error
-    // of its mean is below this; spp is then each pixel's most. 0: every pixel takes spp samples.
+    // of its mean is below this; spp is then each pixel's most. 0: every pixel takes spp samples
+    // (woven render's default is defaultRenderSettings()').
     double noiseThreshold = 0.0;
     std::optional<Camera> camera;  // overrides the scene's
 };
 
-// The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto): what
-// `woven render` and the previewer's Render button start from.
+// --noise-threshold's default: at equal time it did best of those measured, on every scene,
+// integrator and the two halves of the examples (docs/ADAPTIVE_SAMPLING.md).
+constexpr double kDefaultNoiseThreshold = 0.05;
+
+// The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto, noise
+// threshold kDefaultNoiseThreshold): what `woven render` and the previewer's Render button
+// start from.
 RenderSettings defaultRenderSettings(const SceneDescription& scene);
 
 struct RenderProgress {
