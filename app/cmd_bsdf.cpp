@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "untrusted_json.h"
 #include "material_json.h"
 #include "woven_material.h"
 #include "woven_params_json.h"
@@ -106,7 +107,7 @@ int runBsdfEval() {
         ++lineNumber;
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         try {
-            std::cout << evalLine(cache, nlohmann::json::parse(line)).dump() << "\n";
+            std::cout << evalLine(cache, parseUntrustedJson(line)).dump() << "\n";
         } catch (const std::exception& e) {
             // One output line per input line, so a caller can still pair them up.
             const std::string message = "stdin line " + std::to_string(lineNumber) + ": " + e.what();
@@ -138,9 +139,9 @@ std::optional<glm::dvec2> elementCentre(const WovenMaterial& m, YarnType type) {
 void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, int size, const std::string& out) {
     nlohmann::json j;
     try {
-        j = materialText.empty() ? nlohmann::json::object() : nlohmann::json::parse(materialText);
+        j = materialText.empty() ? nlohmann::json::object() : parseUntrustedJson(materialText);
     } catch (const std::exception& e) {
-        throw std::invalid_argument(std::string("--material: not valid JSON: ") + e.what());
+        throw std::invalid_argument(std::string("--material: ") + e.what());
     }
     const WovenMaterial material(paramsFromJson(j));
     const float theta = glm::radians(thetaDeg), phi = glm::radians(phiDeg);

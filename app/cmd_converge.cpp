@@ -1,6 +1,7 @@
-// `woven converge`: error against a converged reference versus render time, per integrator.
-// It answers "which integrator, and how long for a given error" on a user's own scene, and
-// checks that `--integrator auto` picks the efficient one.
+// `woven converge`: error against a converged reference versus render time, per integrator and
+// with the weave filter on and off. It answers "which integrator, and how long for a given error"
+// on a user's own scene, checks that `--integrator auto` picks the efficient one, and measures what
+// the weave filter gains (less noise) and costs (its bias: the reference is unfiltered).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,7 +26,8 @@ namespace {
 struct ConvergeOptions {
     std::string scene, outDir = "converge";
     std::vector<double> budgets{1, 2, 4, 8, 16};
-    std::vector<std::string> integrators{"path", "bdpt"};
+    std::vector<std::string> integrators{"path", "bdpt", "auto"};
+    std::vector<std::string> filters{"on", "off"};  // the weave filter (--no-filter is "off")
     double referenceTime = 300;
     int width = 320, height = 240;
     int threads = 0;
@@ -59,7 +61,7 @@ struct Timed {
 };
 
 Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o, const std::string& integrator,
-                double seconds, uint64_t seed) {
+                double seconds, uint64_t seed, bool filterWeave) {
     RenderSettings s;
     s.width = o.width;
     s.height = o.height;
@@ -68,6 +70,7 @@ Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     s.integrator = integrator;
     s.seed = seed;
     s.threads = o.threads;
+    s.filterWeave = filterWeave;
     RenderJob job(scene, s);
     std::atomic<bool> cancel{false};
     const auto start = std::chrono::steady_clock::now();
@@ -76,14 +79,14 @@ Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     return {job.snapshot(), elapsed, job.integratorName()};
 }
 
-// The reference: path tracing and BDPT (both unbiased, so neither is favoured) merged by
+// The reference: unfiltered path tracing and BDPT (both unbiased, so neither is favoured) merged by
 // inverse variance, each integrator's variance estimated from two independent halves of its
 // render; cached next to the results and reused when its settings match. An equal-weight merge
 // would let the noisier integrator's error dominate the reference on scenes where it is poor.
 Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o, const std::string& stem) {
     namespace fs = std::filesystem;
     std::ostringstream key;
-    key << stem << "_" << o.width << "x" << o.height << "_" << int(o.referenceTime) << "s_reference.exr";
+    key << stem << "_unfiltered_" << o.width << "x" << o.height << "_" << int(o.referenceTime) << "s_reference.exr";
     const fs::path path = fs::path(o.outDir) / key.str();
     if (fs::exists(path)) {
         std::cerr << "converge: reusing reference " << path.string() << "\n";
@@ -94,8 +97,8 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     std::vector<Part> parts;
     uint64_t seed = 0x5eed0001;
     for (const char* integrator : {"path", "bdpt"}) {
-        const Timed a = renderFor(scene, o, integrator, o.referenceTime / 4, seed++);
-        const Timed b = renderFor(scene, o, integrator, o.referenceTime / 4, seed++);
+        const Timed a = renderFor(scene, o, integrator, o.referenceTime / 4, seed++, false);
+        const Timed b = renderFor(scene, o, integrator, o.referenceTime / 4, seed++, false);
         Part part;
         const size_t n = a.film.radiance.pixels.size();
         // The mean of two independent halves has a quarter of their squared difference as variance.
@@ -124,16 +127,64 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     return exr.image;
 }
 
-void plot(const std::string& csv, const std::string& png, const std::string& title) {
+void plot(const std::string& csv, const std::string& png, const std::string& title, const std::string& names) {
     // gnuplot draws the log-log plot; without it the CSV is still there.
     std::ostringstream cmd;
     cmd << "gnuplot -e \"set terminal pngcairo size 640,420 noenhanced; set output '" << png << "'; "
         << "set datafile separator ','; set logscale xy; set grid; set key top right; "
         << "set xlabel 'time (s)'; set ylabel 'relative RMSE'; set title '" << title << "'; "
-        << "plot for [name in 'path bdpt'] '" << csv << "' using (strcol(1) eq name ? \\$2 : 1/0):5 "
+        << "plot for [name in '" << names << "'] '" << csv << "' using (strcol(1) eq name ? \\$2 : 1/0):5 "
         << "with linespoints lw 2 title name\" 2>/dev/null";
     if (std::system(cmd.str().c_str()) != 0)
         std::cerr << "converge: gnuplot not available, wrote " << csv << " only\n";
+}
+
+// One integrator with the filter on or off, as a row of the tables and a line of the plot.
+struct Variant {
+    std::string integrator;
+    bool filter;
+    std::string name() const { return integrator + (filter ? "" : "-nofilter"); }
+};
+
+// Squared relative RMSE against time, e^2(t) = B + V / t, fitted by least squares weighted by
+// 1 / e^2 (each run's error is known to a relative precision): V is the noise, B what does not
+// fall with time: the filter's bias squared plus the reference's own noise (equal for every
+// variant, so the difference of B between filter on and off is the filter's bias squared).
+struct ErrorFit {
+    double B = 0.0, V = 0.0;
+    // Seconds to reach relative RMSE `target`; infinity where the floor B is above it.
+    double timeTo(double target) const { return target * target > B ? V / (target * target - B) : INFINITY; }
+};
+
+ErrorFit fitError(const std::vector<std::pair<double, double>>& timeAndSquaredError) {
+    double s00 = 0, s01 = 0, s11 = 0, r0 = 0, r1 = 0;
+    for (const auto& [t, e2] : timeAndSquaredError) {
+        const double w = 1.0 / (e2 * e2), x = 1.0 / t;
+        s00 += w;
+        s01 += w * x;
+        s11 += w * x * x;
+        r0 += w * e2;
+        r1 += w * e2 * x;
+    }
+    const double det = s00 * s11 - s01 * s01;
+    ErrorFit f;
+    if (timeAndSquaredError.size() >= 2 && det > 0.0) {
+        f.B = (s11 * r0 - s01 * r1) / det;
+        f.V = (s00 * r1 - s01 * r0) / det;
+    }
+    if (!(f.B > 0.0) || !(f.V > 0.0)) {
+        // Noise alone (or too few runs): through the longest run with B = 0.
+        const auto& [t, e2] = timeAndSquaredError.back();
+        f = {0.0, e2 * t};
+    }
+    return f;
+}
+
+std::string seconds(double t) {
+    if (!std::isfinite(t)) return "not reached (bias)";
+    std::ostringstream s;
+    s << std::setprecision(3) << t;
+    return s.str();
 }
 
 void runConverge(const ConvergeOptions& o) {
@@ -143,42 +194,98 @@ void runConverge(const ConvergeOptions& o) {
     const std::string stem = fs::path(o.scene).stem().string();
     const Image ref = reference(scene, o, stem);
 
+    std::vector<Variant> variants;
+    for (const std::string& filter : o.filters)
+        for (const std::string& integrator : o.integrators) variants.push_back({integrator, filter == "on"});
+
     const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
     std::ofstream csv(csvPath);
-    csv << "integrator,seconds,spp,rel_mse,rel_rmse,efficiency\n";
-    std::cout << "| integrator | time (s) | spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) |\n"
-              << "|---|---:|---:|---:|---:|---:|\n";
-    struct Best { double efficiency = 0, timeToOnePercent = 0; };
-    std::map<std::string, Best> best;
+    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter\n";
+    std::cout << "| integrator | filter | time (s) | spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) |\n"
+              << "|---|---|---:|---:|---:|---:|---:|\n";
+    struct Runs {
+        std::vector<std::pair<double, double>> squaredError;  // (seconds, rel. RMSE^2)
+        std::vector<double> relMse;                            // per budget
+        double efficiency = 0.0;                               // of the longest run
+        std::string picked;                                    // what auto chose
+    };
+    std::map<std::string, Runs> runs;
     uint64_t seed = 1;
-    for (const std::string& integrator : o.integrators)
+    for (const Variant& v : variants)
         for (double budget : o.budgets) {
-            const Timed t = renderFor(scene, o, integrator, budget, seed++);
+            const Timed t = renderFor(scene, o, v.integrator, budget, seed++, v.filter);
             const ErrorMetrics e = compare(t.film.radiance, ref);
             const double efficiency = 1.0 / (e.relMse * t.seconds);
             const double spp = t.film.sampleCount.empty() ? 0.0 : t.film.sampleCount[0];
-            csv << integrator << "," << t.seconds << "," << spp << "," << e.relMse << "," << e.relRmse << ","
-                << efficiency << "\n";
-            std::cout << "| " << integrator << " | " << std::fixed << std::setprecision(2) << t.seconds << " | "
-                      << int(spp) << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
-                      << e.relRmse << " | " << efficiency << " |\n" << std::defaultfloat;
-            // Unbiased Monte Carlo: RMSE falls as 1/sqrt(time); the longest run extrapolates best.
-            best[integrator].efficiency = efficiency;
-            best[integrator].timeToOnePercent = t.seconds * std::pow(e.relRmse / 0.01, 2.0);
+            csv << v.name() << "," << t.seconds << "," << spp << "," << e.relMse << "," << e.relRmse << ","
+                << efficiency << "," << v.integrator << "," << (v.filter ? "on" : "off") << "\n";
+            std::cout << "| " << v.integrator << (v.integrator == "auto" ? " (" + t.integrator + ")" : "") << " | "
+                      << (v.filter ? "on" : "off") << " | " << std::fixed << std::setprecision(2) << t.seconds
+                      << " | " << int(spp) << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
+                      << e.relRmse << " | " << efficiency << " |\n" << std::defaultfloat << std::flush;
+            Runs& r = runs[v.name()];
+            r.squaredError.emplace_back(t.seconds, e.relRmse * e.relRmse);
+            r.relMse.push_back(e.relMse);
+            r.efficiency = efficiency;
+            r.picked = t.integrator;
         }
     csv.close();
-    plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem);
+    std::string names;
+    for (const Variant& v : variants) names += (names.empty() ? "" : " ") + v.name();
+    plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
 
+    std::cout << "\nTime to a relative RMSE, from the fit e^2(t) = B + V/t over the runs above (B: what does not "
+                 "fall with time, the filter's bias and the reference's noise)\n\n"
+              << "| integrator | filter | adaptive | time to 5% (s) | time to 1% (s) | floor sqrt(B) |\n"
+              << "|---|---|---|---:|---:|---:|\n";
+    std::map<std::string, ErrorFit> fits;
+    for (const Variant& v : variants) {
+        const ErrorFit f = fits[v.name()] = fitError(runs[v.name()].squaredError);
+        std::cout << "| " << v.integrator << " | " << (v.filter ? "on" : "off") << " | n/a | " << seconds(f.timeTo(0.05))
+                  << " | " << seconds(f.timeTo(0.01)) << " | " << std::setprecision(3) << std::sqrt(f.B) << " |\n";
+    }
+
+    // Before (filter off) against after (on), from the same run: relMSE at equal time, and the bias.
+    bool header = false;
+    for (const std::string& integrator : o.integrators) {
+        const auto on = runs.find(Variant{integrator, true}.name()), off = runs.find(Variant{integrator, false}.name());
+        if (on == runs.end() || off == runs.end()) continue;
+        if (!header) {
+            std::cout << "\nThe weave filter, before (off) and after (on), from the same run: relMSE off / on at equal "
+                         "time (per budget), and the filter's bias as relative RMSE, sqrt(B_on - B_off)\n\n"
+                      << "| integrator | relMSE off / on at";
+            for (double b : o.budgets) std::cout << " " << b << " s |";
+            std::cout << " time to 1%, off / on | bias (rel. RMSE) |\n|---|";
+            for (size_t i = 0; i <= o.budgets.size(); ++i) std::cout << "---:|";
+            std::cout << "---:|\n";
+            header = true;
+        }
+        std::cout << "| " << integrator << " |";
+        for (size_t i = 0; i < o.budgets.size(); ++i)
+            std::cout << " " << std::setprecision(3) << off->second.relMse[i] / on->second.relMse[i] << " |";
+        const ErrorFit &fOn = fits[on->first], &fOff = fits[off->first];
+        std::cout << " " << std::setprecision(3) << fOff.timeTo(0.01) / fOn.timeTo(0.01) << " | "
+                  << std::sqrt(std::max(0.0, fOn.B - fOff.B)) << " |\n";
+    }
+    std::cout << "\nadaptive sampling (--noise-threshold): not on this branch yet; its column stays n/a\n";
+
+    // Which integrator is most efficient with the default filter setting, and what auto picks.
+    const bool defaultFilter = std::find(o.filters.begin(), o.filters.end(), "on") != o.filters.end();
     std::string winner;
     double top = -1;
-    std::cout << "\n| integrator | time to 1% relative RMSE (s, extrapolated from the longest run) |\n|---|---:|\n";
-    for (const auto& [name, b] : best) {
-        std::cout << "| " << name << " | " << std::setprecision(3) << b.timeToOnePercent << " |\n";
-        if (b.efficiency > top) { top = b.efficiency; winner = name; }
+    for (const std::string& integrator : {std::string("path"), std::string("bdpt")}) {
+        const auto r = runs.find(Variant{integrator, defaultFilter}.name());
+        if (r != runs.end() && r->second.efficiency > top) {
+            top = r->second.efficiency;
+            winner = integrator;
+        }
     }
-    const Timed autoRun = renderFor(scene, o, "auto", 0.5, 99);
-    std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << autoRun.integrator
-              << (autoRun.integrator == winner ? " (agrees)" : " (DISAGREES)") << "\n";
+    if (winner.empty()) return;
+    const auto autoRuns = runs.find(Variant{"auto", defaultFilter}.name());
+    const std::string picked =
+        autoRuns != runs.end() ? autoRuns->second.picked : renderFor(scene, o, "auto", 0.5, 99, defaultFilter).integrator;
+    std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << picked
+              << (picked == winner ? " (agrees)" : " (DISAGREES)") << "\n";
 }
 
 }  // namespace
@@ -186,10 +293,17 @@ void runConverge(const ConvergeOptions& o) {
 void addConvergeCommand(CLI::App& app) {
     auto o = std::make_shared<ConvergeOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "converge", "Error against a converged reference versus time for each integrator (table, CSV, log-log PNG)");
+        "converge",
+        "Error against an unfiltered converged reference versus time for each integrator, with the weave filter on "
+        "and off (tables, CSV, log-log PNG)");
     cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
     cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',');
-    cmd->add_option("--integrators", o->integrators, "integrators to compare")->delimiter(',');
+    cmd->add_option("--integrators", o->integrators, "integrators to compare (path, bdpt, auto)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"path", "bdpt", "auto"}));
+    cmd->add_option("--filter", o->filters, "the weave filter: on, off or on,off (both, compared)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));

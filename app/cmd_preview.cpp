@@ -24,7 +24,6 @@ struct PreviewCommandOptions {
     bool final = false;
     std::string screenshot;
     FrameOptions frame;  // --width/--height: also the window's and the screenshot's size
-    bool noFilter = false;
     bool noShadows = false;
     int frames = 0;
     std::string windowScreenshot;
@@ -32,7 +31,7 @@ struct PreviewCommandOptions {
 };
 
 SceneDescription openScene(const PreviewCommandOptions& o) {
-    SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene);
+    SceneDescription scene = o.scene.empty() ? wavyClothScene() : loadScene(o.scene, o.frame.load);
     applySceneOptions(scene, o.frame);
     return scene;
 }
@@ -57,7 +56,7 @@ void runHeadless(const PreviewCommandOptions& o) {
     PreviewRenderer renderer;
     renderer.setMeshes(scene);
     PreviewOptions options;
-    options.filterWeave = !o.noFilter;
+    options.filterWeave = !o.frame.noFilter;
     options.shadows = !o.noShadows;
     // The size the Render button's frame would have, so both frame the scene alike.
     const RenderSettings settings = frameSettings(scene, o.frame);
@@ -76,7 +75,6 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_flag("--final", o->final, "With --headless: the path-traced frame of the Render button");
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
-    cmd->add_flag("--no-filter", o->noFilter, "Point-sample the weave even where it is finer than a pixel");
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
     cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");

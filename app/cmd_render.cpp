@@ -80,7 +80,7 @@ int runRender(RenderCommand o) {
     if (o.out.empty()) o.out = std::filesystem::path(o.scene).stem().string() + ".exr";
     checkFrameFileName(o.out);
 
-    auto scene = std::make_shared<SceneDescription>(loadScene(o.scene));
+    auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
     applySceneOptions(*scene, o.options.frame);
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);

@@ -114,7 +114,7 @@ SlurmJob planJob(const SubmitOptions& o) {
 
     // The first frame's scene, with the --woven edits: bad options fail here rather than in
     // every task, and it gives the samples per pixel when --spp does not.
-    SceneDescription scene = loadScene(job.frames.front().scene);
+    SceneDescription scene = loadScene(job.frames.front().scene, o.render.frame.load);
     applySceneOptions(scene, o.render.frame);
     const RenderSettings settings = frameSettings(scene, o.render.frame);
     job.spp = settings.spp;

@@ -11,5 +11,6 @@ void addRenderCommand(CLI::App& app);
 void addConvergeCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
 void addSubmitCommand(CLI::App& app);  // docs/CLUSTER.md
+void addExportCommands(CLI::App& app);  // export, bake (docs/EXPORT.md)
 
 }  // namespace woven

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     woven::addConvergeCommand(app);
     woven::addMergeCommand(app);
     woven::addSubmitCommand(app);
+    woven::addExportCommands(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -23,6 +23,8 @@ uniform float specularFactor;
 uniform vec3 specularColorFactor;
 uniform vec3 sheenColorFactor;
 uniform float sheenRoughnessFactor;
+uniform float anisotropyStrength;
+uniform vec2 anisotropyRotation;  // (cos, sin) of KHR_materials_anisotropy's rotation
 uniform float clearcoatFactor, clearcoatRoughnessFactor;
 uniform float transmissionFactor;
 
@@ -85,7 +87,19 @@ void main() {
     roughness *= mr.g;
 #endif
     g.metallic = clamp(metallic, 0.0, 1.0);
+    roughness = clamp(roughness, 0.0, 1.0);
     g.alpha = clamp(roughness * roughness, 1e-3, 1.0);
+    float anisotropy = anisotropyStrength;
+    vec2 direction = vec2(1.0, 0.0);  // in (tangent, bitangent) space, as core's anisotropyDirection()
+#ifdef MAP_ANISOTROPY
+    vec3 anisotropyTexel = lookup(MAP_ANISOTROPY).rgb;
+    anisotropy *= anisotropyTexel.b;
+    vec2 textureDirection = anisotropyTexel.rg * 2.0 - 1.0;
+    if (dot(textureDirection, textureDirection) > 1e-24) direction = normalize(textureDirection);
+#endif
+    direction = mat2(anisotropyRotation.x, anisotropyRotation.y, -anisotropyRotation.y, anisotropyRotation.x) * direction;
+    anisotropy = clamp(anisotropy, 0.0, 1.0);
+    g.alphaX = clamp(mix(roughness * roughness, 1.0, anisotropy * anisotropy), 1e-3, 1.0);
     float specular = specularFactor;
     vec3 specularColor = specularColorFactor;
 #ifdef MAP_SPECULAR
@@ -125,12 +139,13 @@ void main() {
     if (through > 0.0 && 1.0 - through < ditherThreshold()) discard;
 
     vec3 n = ns;
-#ifdef MAP_NORMAL
     // The tangent frame of the file's normal; handedness from the tangent's w, as core.
     vec3 t = vTangent.xyz - dot(vTangent.xyz, ns) * ns;
-    if (dot(t, t) > 1e-20) {
-        t = normalize(t);
-        vec3 b = (vTangent.w < 0.0 ? -1.0 : 1.0) * cross(ns, t);
+    bool tangents = dot(t, t) > 1e-20;
+    t = tangents ? normalize(t) : vec3(0.0);
+    vec3 b = (vTangent.w < 0.0 ? -1.0 : 1.0) * cross(ns, t);
+#ifdef MAP_NORMAL
+    if (tangents) {
         vec3 m = lookup(MAP_NORMAL).xyz * 2.0 - 1.0;
         vec3 perturbed = m.x * normalScale * t + m.y * normalScale * b + m.z * ns;
         if (dot(perturbed, perturbed) > 1e-20) n = normalize(perturbed);
@@ -140,7 +155,8 @@ void main() {
 #ifdef MAP_NORMAL
     n = keepReflectionAbove(ng, wo, n);  // ng faces the viewer already
 #endif
-    Frame f = frameFromNormal(n);
+    // The lobe's x axis along the anisotropy direction (any axis when isotropic).
+    Frame f = anisotropy > 0.0 && tangents ? frameFromNormalAndAxis(n, direction.x * t + direction.y * b) : frameFromNormal(n);
     vec3 woLocal = toLocal(f, wo);
     float occlusion = 1.0;
 #ifdef MAP_OCCLUSION

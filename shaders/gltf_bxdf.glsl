@@ -1,10 +1,12 @@
 // core/bsdf/gltf_bxdf.cpp's eval() in GLSL (reflection; the preview draws transmission as
-// partial coverage): Lambert + GGX with the height-correlated Smith term, dielectric and metal
-// Fresnel, the Charlie sheen layer with its albedo scaling (the albedo table is core's, uploaded
-// as a texture) and the clearcoat layer. Local frame: z = the shading normal.
+// partial coverage): Lambert + GGX (anisotropic) with the height-correlated Smith term, dielectric
+// and metal Fresnel, the Charlie sheen layer with its albedo scaling (the albedo table is core's,
+// uploaded as a texture) and the clearcoat layer. Local frame: z = the shading normal, x = the
+// anisotropy direction.
 struct GltfInputs {
     vec3 baseColor;
-    float metallic, alpha;     // alpha = roughness^2, clamped as core clamps it
+    float metallic;
+    float alphaX, alpha;       // alpha = roughness^2 (along y), alphaX = mix(alpha, 1, anisotropy^2), clamped as core
     vec3 f0;                   // dielectric F0 (KHR_materials_ior, KHR_materials_specular)
     float f90;
     float transmission;
@@ -15,17 +17,17 @@ struct GltfInputs {
 
 uniform sampler2D sheenAlbedoTable;  // SheenLobe::albedoTable(): x = cos theta, y = roughness
 
-float ggxD(float alpha, vec3 h) {
+float ggxD(float ax, float ay, vec3 h) {
     if (h.z <= 0.0) return 0.0;
-    float a2 = alpha * alpha;
-    float d = a2 * h.z * h.z + (h.x * h.x + h.y * h.y);
-    return a2 / (PI * d * d);
+    float a2 = ax * ay;
+    vec3 f = vec3(ay * h.x, ax * h.y, a2 * h.z);
+    float w2 = a2 / dot(f, f);
+    return a2 * w2 * w2 / PI;
 }
 
-float ggxVisibility(float alpha, float no, float ni) {
-    if (!(no > 0.0) || !(ni > 0.0)) return 0.0;
-    float a2 = alpha * alpha;
-    return 0.5 / (ni * sqrt(no * no * (1.0 - a2) + a2) + no * sqrt(ni * ni * (1.0 - a2) + a2));
+float ggxVisibility(float ax, float ay, vec3 wo, vec3 wi) {
+    if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+    return 0.5 / (wi.z * length(vec3(ax * wo.x, ay * wo.y, wo.z)) + wo.z * length(vec3(ax * wi.x, ay * wi.y, wi.z)));
 }
 
 float sheenFitL(float x, float alpha) {
@@ -55,7 +57,7 @@ vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
     if (!(len > 1e-12)) return vec3(0.0);
     vec3 h = H / len;
     float fresnel = pow5(clamp(1.0 - 0.5 * len, 0.0, 1.0));
-    float specular = ggxD(g.alpha, h) * ggxVisibility(g.alpha, wo.z, wi.z);
+    float specular = ggxD(g.alphaX, g.alpha, h) * ggxVisibility(g.alphaX, g.alpha, wo, wi);
     vec3 dielectricF = g.f0 + (vec3(g.f90) - g.f0) * fresnel;
     vec3 dielectric = (1.0 - dielectricF) * (1.0 - g.transmission) * g.baseColor / PI + dielectricF * specular;
     vec3 metal = (g.baseColor + (1.0 - g.baseColor) * fresnel) * specular;
@@ -71,7 +73,8 @@ vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
         f = f * min(scaleO, scaleI) + g.sheenColor * D * V;
     }
     if (g.clearcoat > 0.0) {
-        float coat = g.clearcoat * coatFresnel(0.5 * len) * ggxD(g.clearcoatAlpha, h) * ggxVisibility(g.clearcoatAlpha, wo.z, wi.z);
+        float coat = g.clearcoat * coatFresnel(0.5 * len) * ggxD(g.clearcoatAlpha, g.clearcoatAlpha, h) *
+                     ggxVisibility(g.clearcoatAlpha, g.clearcoatAlpha, wo, wi);
         f = f * (1.0 - g.clearcoat * max(coatFresnel(wo.z), coatFresnel(wi.z))) + vec3(coat);
     }
     return f;
@@ -87,10 +90,10 @@ vec2 ggxAlbedoTerms(float roughness, float cosO) {
 }
 
 // The BSDF's reflectance towards wo under uniform light (the preview's ambient term), with the
-// same layering as gltfBsdf().
+// same layering as gltfBsdf(); an anisotropic lobe as the isotropic one of the mean alpha.
 vec3 gltfAlbedo(GltfInputs g, float cosO) {
     if (cosO <= 0.0) return vec3(0.0);
-    vec2 terms = ggxAlbedoTerms(sqrt(g.alpha), cosO);
+    vec2 terms = ggxAlbedoTerms(sqrt(sqrt(g.alphaX * g.alpha)), cosO);
     vec3 dielectricSpec = g.f0 * terms.x + g.f90 * terms.y;
     vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * g.baseColor + dielectricSpec;
     vec3 metal = g.baseColor * terms.x + terms.y;

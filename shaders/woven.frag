@@ -74,9 +74,9 @@ vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
 }
 
 #ifdef WOVEN_FILTER
-// Across positions per yarn type for the element-averaged reflectance.
-const int FILTER_SAMPLES = 8;
-
+// core's far field (core/model/weave_far_field.h, WeaveFarField) for a footprint of whole
+// repeats: FILTER_SAMPLES (core's kFarFieldSections, #defined by woven_gl_material.cpp) across
+// positions x_k = (k + 1/2) 2 / FILTER_SAMPLES - 1 per yarn, each yarn by the share it covers.
 // The reflectance averaged over the weave, for pixels that cover several elements: each yarn
 // type weighted by the area it covers, its cross-section sampled uniformly across (crimp and
 // noise average out and are left out). Returns radiance x coverage; `coverage` = the opaque

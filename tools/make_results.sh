@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md and its pictures: convergence of both integrators on the two
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
-# render benchmarks, preview frame time, the paper's figures and the sample drafts. About 12
-# minutes on 2 cores.
+# render benchmarks, preview frame time, the paper's figures and the sample drafts, the weave
+# filter's time to a clean frame on the default scene and the paper's satin, and the bakes. About
+# 29 minutes on 2 cores.
 # Usage: tools/make_results.sh [build-dir]   (builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,6 +29,24 @@ figure() {
   "$woven" render "assets/$1.json" --width 480 --height 360 --time 20 -o "$out/$1.png" 2>/dev/null
 }
 
+# A scene of assets/ exported with `woven export --report`: the bake's error against the model
+# and the report's renders of both, near and far, side by side.
+bake_figure() {
+  local scene=$1 name=$2; shift 2
+  echo
+  echo "### $name"
+  echo
+  echo '```'
+  echo "$woven export assets/$scene.json$([ $# -eq 0 ] || printf " '%s'" "$@") -o /tmp/$name.glb --report --report-images $out"
+  echo '```'
+  echo '```'
+  "$woven" export "assets/$scene.json" "$@" -o "/tmp/$name.glb" --report --report-images "$out" 2>/dev/null | grep -v '^  wrote'
+  echo '```'
+  echo
+  echo "model and bake, near: ![model](results/${name}_Cloth_near_model.png) ![bake](results/${name}_Cloth_near_bake.png)"
+  echo "far: ![model](results/${name}_Cloth_far_model.png) ![bake](results/${name}_Cloth_far_bake.png)"
+}
+
 {
   echo "# woven: results"
   echo
@@ -41,8 +60,22 @@ figure() {
     echo
     echo "### $scene"
     echo
-    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 \
+    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 --filter on --integrators path,bdpt \
         --width 320 --height 240 --out-dir "$out"
+    echo
+    echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
+  done
+  echo
+  echo "## Time to a clean frame: the weave filter"
+  echo
+  echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), against an"
+  echo "unfiltered reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
+  for scene in default_scene paper_d_satin; do
+    echo
+    echo "### $scene"
+    echo
+    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 200 \
+        --width 160 --height 120 --out-dir "$out"
     echo
     echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
   done
@@ -111,6 +144,17 @@ figure() {
   echo "the houndstooth at its real scale (\"scale\": \"draft\": 20 threads per cm through the mesh's"
   echo "measured UV-to-world scale), seen from 37 cm with a 6 degree field of view."
   for scene in houndstooth gingham twill_stripes houndstooth_real_scale; do figure "$scene"; done
+  echo
+  echo "## Baked to glTF: the model beside its bake"
+  echo
+  echo "\`woven export --report\` (docs/EXPORT.md): a flat cloth of the material from 45 degrees under a sun"
+  echo "near its view's mirror direction and a sky, rendered by woven's path tracer with the model and"
+  echo "with the baked glTF material, near (12 threads across) and far (1200 threads across); relative"
+  echo "RMSE with the renders' noise taken out, then with one feature of the bake taken away at a time."
+  bake_figure paper_d_satin bake_satin
+  bake_figure paper_c_twill bake_twill
+  bake_figure houndstooth bake_houndstooth
+  bake_figure default_scene bake_gaps --woven 'Cloth={"yarn_width":0.75,"warp_width":0.7,"cy":0.8}'
 } > "$tmp"
 mv "$tmp" "$md"
 trap - EXIT

@@ -35,6 +35,12 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
                  "--spp is then its most; 0: every pixel takes every sample (default: "
               << kDefaultNoiseThreshold << ")";
     command.add_option("--noise-threshold", o.noiseThreshold, threshold.str())->check(CLI::NonNegativeNumber);
+    command.add_flag("--no-filter", o.noFilter, "the preview point-samples the weave even where it is finer than a pixel");
+    command.add_flag("--filter", o.filterRender,
+                     "experimental: the final render filters woven materials over each pixel's footprint, blending "
+                     "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
+    command.add_flag("--allow-any-path", o.load.anyPath,
+                     "let a glTF file's buffers and images come from anywhere, not only from its own folder");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
@@ -77,6 +83,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     settings.seed = o.seed;
     settings.maxDepth = o.maxDepth;
     if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
+    settings.filterWeave = o.filterRender;
     return settings;
 }
 

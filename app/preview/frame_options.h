@@ -12,6 +12,7 @@
 
 #include "image_io.h"
 #include "render_job.h"
+#include "scene_loader.h"
 
 namespace woven {
 
@@ -21,13 +22,16 @@ struct FrameOptions {
     uint64_t seed = 0;
     int maxDepth = 8;
     std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
+    bool noFilter = false;               // the preview point-samples the weave everywhere
+    bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
+    LoadOptions load;                    // --allow-any-path
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --woven
-// --environment --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --no-filter --filter
+// --allow-any-path --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

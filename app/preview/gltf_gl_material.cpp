@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
+
 namespace woven {
 
 std::vector<MapUse> gltfMaps(const Material& m) {
@@ -18,6 +20,7 @@ std::vector<MapUse> gltfMaps(const Material& m) {
         {"MAP_CLEARCOAT", &m.clearcoat.texture},
         {"MAP_CLEARCOAT_ROUGHNESS", &m.clearcoat.roughnessTexture},
         {"MAP_TRANSMISSION", &m.transmission.texture},
+        {"MAP_ANISOTROPY", &m.anisotropy.texture},
     };
     std::vector<MapUse> used;
     for (const MapUse& map : all)
@@ -57,6 +60,8 @@ void uploadGltfMaterial(const ShaderProgram& program, const Material& m, GpuText
     glUniform3fv(program.uniform("specularColorFactor"), 1, glm::value_ptr(m.specularColor));
     glUniform3fv(program.uniform("sheenColorFactor"), 1, glm::value_ptr(m.sheen.color));
     glUniform1f(program.uniform("sheenRoughnessFactor"), m.sheen.roughness);
+    glUniform1f(program.uniform("anisotropyStrength"), m.anisotropy.strength);
+    glUniform2f(program.uniform("anisotropyRotation"), std::cos(m.anisotropy.rotation), std::sin(m.anisotropy.rotation));
     glUniform1f(program.uniform("clearcoatFactor"), m.clearcoat.factor);
     glUniform1f(program.uniform("clearcoatRoughnessFactor"), m.clearcoat.roughness);
     glUniform1f(program.uniform("transmissionFactor"), m.transmission.factor);

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "atomic_file.h"
+#include "file_reading.h"
+#include "untrusted_json.h"
 #include "draft_material.h"
 #include "woven_params_json.h"
 
@@ -14,13 +16,16 @@ namespace woven {
 
 namespace {
 
+constexpr size_t kMaxMaterialFileBytes = size_t(64) << 20;
+
 nlohmann::json readJson(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open");
     try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+        const std::vector<unsigned char> bytes = readRegularFile(path, kMaxMaterialFileBytes);
+        return parseUntrustedJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    } catch (const FileReadError& e) {
+        throw std::runtime_error(e.what());
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path + ": " + e.what());
     }
 }
 

@@ -27,6 +27,7 @@
 #include "material_file.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
+#include "scene_export.h"
 #include "scene_loader.h"
 #include "scene_picker.h"
 #include "uv_scale.h"
@@ -134,6 +135,7 @@ private:
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
+    char exportPath_[512] = "scene.glb";
 
     // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
     // parameters at once, so the next frame shows it.
@@ -149,7 +151,8 @@ private:
     RenderSettings render_;  // the Render button's, but for the camera
 };
 
-PreviewWindow::PreviewWindow(const PreviewWindowOptions& options) : options_(options) {
+PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
+    : options_(options), filterWeave_(!options.frame.noFilter) {
     if (!glfwInit()) {
         const char* why = nullptr;
         glfwGetError(&why);
@@ -196,7 +199,7 @@ PreviewWindow::~PreviewWindow() {
 }
 
 void PreviewWindow::openScene(const std::string& path) {
-    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path);
+    SceneDescription loaded = path.empty() ? wavyClothScene() : loadScene(path, options_.frame.load);
     // The command line's --woven edits name the command line's scene's materials.
     FrameOptions sceneOptions = options_.frame;
     if (path != options_.scene) sceneOptions.woven.clear();
@@ -536,6 +539,23 @@ void PreviewWindow::drawRenderControls() {
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) final_.cancel();
     }
+    // Export: the scene as the window shows it, through its camera, woven materials baked.
+    ImGui::SameLine();
+    if (ImGui::Button("Export")) {
+        SceneDescription shown = scene();
+        shown.camera = camera_.camera();
+        shown.hasCamera = true;
+        try {
+            const std::vector<std::string> warnings = exportScene(shown, exportPath_, ExportOptions{});
+            for (const std::string& w : warnings) std::cerr << "warning: " << exportPath_ << ": " << w << "\n";
+            status_ = "exported " + std::string(exportPath_) + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputText("##export file", exportPath_, sizeof exportPath_);
     if (final_.running() || finalImage_)
         ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
     if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "weave.h"
+#include "weave_far_field.h"
 
 namespace woven {
 
@@ -103,7 +104,8 @@ std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     if (mayShowGaps(p)) d += "#define WOVEN_GAPS\n";
     if (hasThreadLists(p)) d += "#define WOVEN_THREADS\n";
     if (!p.warp_spacing.empty() || !p.weft_spacing.empty()) d += "#define WOVEN_SPACING\n";
-    if (filterWeave) d += "#define WOVEN_FILTER\n";
+    // The far field's cross-section count is core's (weave_far_field.h), so both average alike.
+    if (filterWeave) d += "#define WOVEN_FILTER\n#define FILTER_SAMPLES " + std::to_string(kFarFieldSections) + "\n";
     return d;
 }
 

@@ -166,6 +166,24 @@ void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
     }
 }
 
+// The weave filter's BSDF (shadeFiltered + eval) over a footprint of `elements` weave elements:
+// from one element on the far field alone (a mixture of 8 cross-section lobes per yarn, fewer for
+// flat yarns), below it blended with the exact lobe.
+void BM_WovenFilteredShadeEval(benchmark::State& state, const WovenParams& params, double elements) {
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        ShadingInput in = hitAt(q.uv[i]);
+        in.duvdx = glm::dvec2(2.0 * elements / params.repeat.x, 0.0);  // the filter takes half the pixel
+        in.duvdy = glm::dvec2(0.0, 2.0 * elements / params.repeat.y);
+        auto s = material.shadeFiltered(in);
+        if (s) benchmark::DoNotOptimize(s->eval(q.wo[i], q.wi[i]));
+        benchmark::DoNotOptimize(s);
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
 }  // namespace
 
 BENCHMARK(BM_BareEval);
@@ -182,3 +200,6 @@ BENCHMARK_CAPTURE(BM_WovenShadeEval, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_on, featuresOn());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_on, featuresOn());
+BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, far_flat, featuresOff(), 4.0);
+BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, far_cy_075, featuresOn(), 4.0);
+BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, blend_cy_075, featuresOn(), 0.5);

@@ -3,6 +3,7 @@
 // value type (a variant, no allocation per hit), so a path keeps its vertices' BSDFs by value.
 #include <variant>
 
+#include "filtered_weave_lobe.h"
 #include "gltf_bxdf.h"
 #include "surface_bsdf.h"
 
@@ -12,6 +13,7 @@ class Bxdf {
 public:
     Bxdf(const AshikhminShirley& lobe) : lobe_(lobe) {}
     Bxdf(const GltfBxdf& lobe) : lobe_(lobe) {}
+    Bxdf(const FilteredWeaveLobe& lobe) : lobe_(lobe) {}
 
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
         return std::visit([&](const auto& l) { return l.eval(wo, wi); }, lobe_);
@@ -27,12 +29,14 @@ public:
     }
 
 private:
-    std::variant<AshikhminShirley, GltfBxdf> lobe_;
+    std::variant<AshikhminShirley, GltfBxdf, FilteredWeaveLobe> lobe_;
 };
 
 using Bsdf = FramedLobe<Bxdf>;
 
 // The woven model's per-yarn BSDF as a Bsdf.
 inline Bsdf toBsdf(const SurfaceBsdf& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
+// The woven model filtered over a footprint as a Bsdf.
+inline Bsdf toBsdf(const FramedLobe<FilteredWeaveLobe>& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
 
 }  // namespace woven

@@ -1,7 +1,8 @@
 #pragma once
-// The isotropic Trowbridge-Reitz (GGX) microfacet distribution of the glTF BRDF (glTF 2.0
-// appendix B), in a local frame with z = the normal: D, the height-correlated Smith visibility
-// V = G2 / (4 |n.wo| |n.wi|), and sampling of the visible normals (Heitz 2018).
+// The Trowbridge-Reitz (GGX) microfacet distribution of the glTF BRDF (glTF 2.0 appendix B), with
+// KHR_materials_anisotropy's two roughnesses, in a local frame with z = the normal and x = the
+// direction of alphaX: D, the height-correlated Smith visibility V = G2 / (4 |n.wo| |n.wi|), and
+// sampling of the visible normals (Heitz 2018).
 #include <glm/glm.hpp>
 
 namespace woven {
@@ -10,10 +11,13 @@ class TrowbridgeReitz {
 public:
     // alpha = roughness^2, clamped to kMinAlpha: a mirror is approximated by a very sharp lobe,
     // since no BSDF in woven is a delta function.
-    explicit TrowbridgeReitz(float alpha);
+    explicit TrowbridgeReitz(float alpha) : TrowbridgeReitz(alpha, alpha) {}
+    // alphaX along the frame's x axis, alphaY along y, each clamped to [kMinAlpha, 1].
+    TrowbridgeReitz(float alphaX, float alphaY);
     static constexpr float kMinAlpha = 1e-3f;
 
-    float alpha() const { return alpha_; }
+    float alphaX() const { return alphaX_; }
+    float alphaY() const { return alphaY_; }
     float D(const glm::vec3& h) const;
     float lambda(const glm::vec3& w) const;
     float G1(const glm::vec3& w) const { return 1.0f / (1.0f + lambda(w)); }
@@ -27,7 +31,10 @@ public:
     float reflectionPdf(const glm::vec3& wo, const glm::vec3& wi) const;
 
 private:
-    float alpha_;
+    // |(alphaX w.x, alphaY w.y, w.z)|: the length of w in the stretched configuration.
+    float stretchedLength(const glm::vec3& w) const;
+
+    float alphaX_, alphaY_;
 };
 
 // Schlick's Fresnel from the cosine between the view and the half vector.

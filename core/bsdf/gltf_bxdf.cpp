@@ -15,12 +15,17 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0
 glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
 float clamp01(float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 0.0f; }
 glm::vec3 mirrorThroughSurface(const glm::vec3& w) { return {w.x, w.y, -w.z}; }
+// KHR_materials_anisotropy: the alpha along the anisotropy direction, mix(alpha, 1, strength^2).
+float anisotropicAlpha(float roughness, float strength) {
+    const float alpha = clamp01(roughness) * clamp01(roughness), s = clamp01(strength);
+    return alpha + (1.0f - alpha) * s * s;
+}
 }  // namespace
 
 GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
     : baseColor_(clamp01(in.baseColor)),
       metallic_(clamp01(in.metallic)),
-      ggx_(clamp01(in.roughness) * clamp01(in.roughness)),
+      ggx_(anisotropicAlpha(in.roughness, in.anisotropy), clamp01(in.roughness) * clamp01(in.roughness)),
       f0_(clamp01(in.specularF0)),
       f90_(clamp01(in.specularF90)),
       transmission_(clamp01(in.transmission)),

@@ -1,12 +1,14 @@
 #pragma once
 // The glTF 2.0 metallic-roughness BSDF (the specification's appendix B) with the KHR material
 // extensions woven renders, at one shading point, in a local frame with z = the shading normal
-// on the viewer's side:
+// on the viewer's side and x = KHR_materials_anisotropy's direction:
 //   base  = mix(dielectric, metal, metallic)
 //   dielectric = fresnel_mix(F0, F90; (1 - T) Lambert(baseColor) + T thinBtdf, GGX)
 //   metal = conductor_fresnel(baseColor; GGX)
 //   f = clearcoat over (sheen over base), each layer scaling the one below by what it reflects.
-// F0 and F90 come from KHR_materials_ior and KHR_materials_specular. Transmission is thin-walled
+// F0 and F90 come from KHR_materials_ior and KHR_materials_specular. KHR_materials_anisotropy
+// makes the GGX lobe (of the base, not of the coat) rougher along x: alpha_x =
+// mix(roughness^2, 1, strength^2), alpha_y = roughness^2. Transmission is thin-walled
 // (KHR_materials_transmission without refraction): the GGX lobe mirrored through the surface,
 // tinted by the base colour and by KHR_materials_volume's attenuation. GGX's energy loss to
 // multiple scattering at high roughness is not compensated, as in the specification's
@@ -26,6 +28,7 @@ namespace woven {
 struct GltfBxdfInputs {
     glm::vec3 baseColor{1.0f};
     float metallic = 1.0f, roughness = 1.0f;
+    float anisotropy = 0.0f;  // KHR_materials_anisotropy's strength, along the local x axis
     glm::vec3 specularF0{0.04f};  // dielectric reflectance at normal incidence
     float specularF90 = 1.0f;
     float transmission = 0.0f;

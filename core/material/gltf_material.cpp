@@ -50,6 +50,7 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
       specularColorTexture_(material.specularColorTexture, textures),
       sheenColorTexture_(material.sheen.colorTexture, textures),
       sheenRoughnessTexture_(material.sheen.roughnessTexture, textures),
+      anisotropyTexture_(material.anisotropy.texture, textures),
       clearcoatTexture_(material.clearcoat.texture, textures),
       clearcoatRoughnessTexture_(material.clearcoat.roughnessTexture, textures),
       clearcoatNormalTexture_(material.clearcoat.normalTexture, textures),
@@ -70,6 +71,7 @@ GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     const glm::vec4 mr = metallicRoughnessTexture_.eval(tc);
     in.metallic = m_.metallic * mr.b;
     in.roughness = m_.roughness * mr.g;
+    if (m_.anisotropy.strength > 0.0f) in.anisotropy = m_.anisotropy.strength * anisotropyTexture_.eval(tc).b;
     const float specular = m_.specular * specularTexture_.eval(tc).a;
     const glm::vec3 specularColor = m_.specularColor * glm::vec3(specularColorTexture_.eval(tc));
     in.specularF0 = glm::min(dielectricF0_ * specularColor, glm::vec3(1.0f)) * specular;
@@ -90,17 +92,26 @@ GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     return in;
 }
 
-glm::vec3 GltfMaterial::perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const {
+std::optional<Frame> GltfMaterial::tangentSpace(const SurfaceHit& hit) {
     // The tangent frame of the file's normal (before ns was turned to ng's side): the tangents'
     // handedness is defined against it.
-    const glm::vec3 n = hit.nsFlipped ? -hit.ns : hit.ns;
-    const glm::vec3 t = projectOut(hit.dpdu, n), b = projectOut(hit.dpdv, n);
+    Frame f;
+    f.z = hit.nsFlipped ? -hit.ns : hit.ns;
+    const glm::vec3 t = projectOut(hit.dpdu, f.z), b = projectOut(hit.dpdv, f.z);
     const float tl = glm::length(t), bl = glm::length(b);
-    if (!usableLength(tl) || !usableLength(bl)) return hit.ns;
+    if (!usableLength(tl) || !usableLength(bl)) return std::nullopt;
+    f.x = t / tl;
+    f.y = b / bl;
+    return f;
+}
+
+glm::vec3 GltfMaterial::perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const {
+    const std::optional<Frame> tbn = tangentSpace(hit);
+    if (!tbn) return hit.ns;
     glm::vec3 m = glm::vec3(map.eval(hit.tex)) * 2.0f - 1.0f;
     m.x *= map.scale();
     m.y *= map.scale();
-    const glm::vec3 perturbed = m.x * (t / tl) + m.y * (b / bl) + m.z * n;
+    const glm::vec3 perturbed = tbn->toWorld(m);
     const float length = glm::length(perturbed);
     if (!usableLength(length)) return hit.ns;
     return (hit.nsFlipped ? -perturbed : perturbed) / length;
@@ -110,14 +121,30 @@ glm::vec3 GltfMaterial::shadingNormal(const SurfaceHit& hit) const {
     return normalTexture_ ? perturbedNormal(normalTexture_, hit) : hit.ns;
 }
 
+glm::vec3 GltfMaterial::anisotropyDirection(const SurfaceHit& hit) const {
+    const std::optional<Frame> tbn = tangentSpace(hit);
+    if (!tbn) return Frame::fromNormal(hit.ns).x;
+    // The texture's direction (the tangent where it has none, or where it is zero), turned by
+    // the rotation: the extension's reference implementation.
+    glm::vec2 d(1.0f, 0.0f);
+    if (anisotropyTexture_) {
+        const glm::vec2 t = glm::vec2(anisotropyTexture_.eval(hit.tex)) * 2.0f - 1.0f;
+        const float length = glm::length(t);
+        if (usableLength(length)) d = t / length;
+    }
+    const float c = std::cos(m_.anisotropy.rotation), s = std::sin(m_.anisotropy.rotation);
+    return tbn->toWorld(glm::vec3(c * d.x - s * d.y, s * d.x + c * d.y, 0.0f));
+}
+
 std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
     if (m_.unlit) return std::nullopt;
     const float side = glm::dot(wo, hit.ng) < 0.0f ? -1.0f : 1.0f;
     const glm::vec3 ng = side * hit.ng;
     glm::vec3 n = side * shadingNormal(hit);
     if (normalTexture_) n = keepReflectionAbove(ng, wo, n);
-    const Frame frame = Frame::fromNormal(n);
     GltfBxdfInputs in = inputs(hit.tex);
+    // The lobe's x axis is the anisotropy direction (any axis when isotropic).
+    const Frame frame = in.anisotropy > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);
     if (in.clearcoat > 0.0f) {
         // The coat follows the geometry's normal unless it has a normal map of its own.
         glm::vec3 coat = side * hit.ns;

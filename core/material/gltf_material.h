@@ -23,9 +23,15 @@ public:
     GltfBxdfInputs inputs(const TexCoords& tc) const;
     // The shading normal at a hit after the normal map, on the side of hit.ns.
     glm::vec3 shadingNormal(const SurfaceHit& hit) const;
+    // KHR_materials_anisotropy's direction at a hit, in world space along the tangent plane
+    // (rotation and texture applied); meaningful where inputs() gives a strength above 0.
+    glm::vec3 anisotropyDirection(const SurfaceHit& hit) const;
 
 private:
     glm::vec4 baseColor(const TexCoords& tc) const;  // linear RGB and alpha, vertex colour included
+    // (tangent, bitangent, normal) of the file's normal at a hit, unit length; nullopt where the
+    // tangents are degenerate.
+    static std::optional<Frame> tangentSpace(const SurfaceHit& hit);
     // A tangent-space normal texture applied to the hit's interpolated normal.
     glm::vec3 perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const;
 
@@ -33,6 +39,7 @@ private:
     TextureSampler baseColorTexture_, metallicRoughnessTexture_, normalTexture_;
     TextureSampler specularTexture_, specularColorTexture_;
     TextureSampler sheenColorTexture_, sheenRoughnessTexture_;
+    TextureSampler anisotropyTexture_;
     TextureSampler clearcoatTexture_, clearcoatRoughnessTexture_, clearcoatNormalTexture_;
     TextureSampler transmissionTexture_, thicknessTexture_;
     float dielectricF0_;  // from the IOR

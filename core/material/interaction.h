@@ -25,6 +25,10 @@ struct SurfaceHit {
     int mesh = -1, triangle = -1;
     int material = -1;
     float pError = 0.0f;  // bound on p's rounding error along ng: how far spawnRay lifts the origin
+    // The pixel's footprint at this point in TEXCOORD_0: how uv changes from one pixel to the next
+    // along x and y (setUvFootprint(), footprint.h). Zero: no footprint (a point sample); only
+    // materials that filter by it (filtersByFootprint()) get one.
+    glm::vec2 duvdx{0.0f}, duvdy{0.0f};
 };
 
 // A reflection-only BSDF may only connect directions on the same side of the geometric

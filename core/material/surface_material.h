@@ -21,6 +21,9 @@ public:
     // The BSDF seen from wo (unit, pointing away from the surface); nullopt where the surface
     // reflects nothing (a see-through point, an unlit material).
     virtual std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const = 0;
+    // Whether bsdf() reads the hit's pixel footprint (SurfaceHit::duvdx): only then do the
+    // integrators compute it.
+    virtual bool filtersByFootprint() const { return false; }
 
     // Whether any point of `mesh` can let a ray through: only then does the ray tracer ask
     // passesThrough() for every candidate hit.

@@ -12,6 +12,11 @@ std::optional<Bsdf> WovenSurfaceMaterial::bsdf(const SurfaceHit& hit, const glm:
     in.dpdu = hit.dpdu;
     in.dpdv = hit.dpdv;
     in.backSide = glm::dot(wo, hit.ng) < 0.0f;
+    if (hit.tex.hasUv && (hit.duvdx != glm::vec2(0.0f) || hit.duvdy != glm::vec2(0.0f))) {
+        in.duvdx = glm::dvec2(hit.duvdx);
+        in.duvdy = glm::dvec2(hit.duvdy);
+        if (const auto filtered = model_.shadeFiltered(in)) return toBsdf(*filtered);
+    }
     const auto shading = model_.shade(in);
     if (!shading) return std::nullopt;
     return toBsdf(shading->bsdf);

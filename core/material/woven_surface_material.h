@@ -12,7 +12,9 @@ public:
     // Throws std::invalid_argument for parameters the model rejects.
     WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures);
 
+    // The weave filtered over the hit's footprint where it has one (WovenMaterial::shadeFiltered).
     std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
+    bool filtersByFootprint() const override { return true; }
     bool mayPassThrough(const Mesh& mesh) const override;
     bool passesThrough(const TexCoords& tc, float u) const override;
 

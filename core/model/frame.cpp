@@ -21,7 +21,7 @@ Frame Frame::fromNormalAndAxis(const glm::vec3& n, const glm::vec3& axis) {
     if (!(len2 > 1e-20f) || !std::isfinite(len2)) return fromNormal(n);
     Frame f;
     f.z = n;
-    f.x = t / std::sqrt(len2);
+    f.x = t * (1.0f / std::sqrt(len2));  // one division, not one per component
     f.y = glm::cross(f.z, f.x);
     return f;
 }

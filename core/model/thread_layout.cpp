@@ -18,8 +18,12 @@ ThreadLayout::ThreadLayout(const std::vector<glm::vec3>& colors, const std::vect
         if (!colors.empty()) colors_[k] = colors[k % colors.size()];
         if (!yarns.empty()) yarns_[k] = firstTypeYarn + yarns[k % yarns.size()];
     }
-    if (spacing.empty() || std::all_of(spacing.begin(), spacing.end(), [&](float s) { return s == spacing[0]; }))
-        return;  // even spacing: locate() is a floor
+    const bool even =
+        spacing.empty() || std::all_of(spacing.begin(), spacing.end(), [&](float s) { return s == spacing[0]; });
+    if (even) {  // locate() is a floor
+        integrateColors();
+        return;
+    }
 
     // Cells scaled so that the period spans `period` mean thread widths, as `repeat` counts.
     double total = 0.0;
@@ -42,6 +46,27 @@ ThreadLayout::ThreadLayout(const std::vector<glm::vec3>& colors, const std::vect
         while (slot + 1 < period_ && start_[size_t(slot) + 1] <= double(b)) ++slot;
         firstInInterval_[size_t(b)] = slot;
     }
+    integrateColors();
+}
+
+void ThreadLayout::integrateColors() {
+    colorSum_.assign(size_t(period_) + 1, glm::dvec3(0.0));
+    for (int k = 0; k < period_; ++k)
+        colorSum_[size_t(k) + 1] = colorSum_[size_t(k)] + glm::dvec3(colors_[size_t(k)]) * (spaced() ? width(k) : 1.0);
+}
+
+glm::dvec3 ThreadLayout::integratedColor(double e) const {
+    const Cell c = locate(e);
+    const double width = spaced() ? this->width(c.slot) : 1.0;
+    const double periods = double((c.thread - c.slot) / period_);  // exact: thread - slot is a multiple of the period
+    return periods * colorSum_[size_t(period_)] + colorSum_[size_t(c.slot)] +
+           glm::dvec3(colors_[size_t(c.slot)]) * (c.across * width);
+}
+
+glm::vec3 ThreadLayout::meanColor(double e0, double e1) const {
+    if (period_ == 1) return colors_[0];
+    if (!(e1 - e0 > 1e-9)) return colors_[size_t(locate(e0).slot)];
+    return glm::vec3((integratedColor(e1) - integratedColor(e0)) / (e1 - e0));
 }
 
 ThreadLayout::Cell ThreadLayout::locateSpaced(double e) const {

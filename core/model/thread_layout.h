@@ -5,6 +5,7 @@
 // they repeat together. Finding the thread at a point costs the same for any period: evenly
 // spaced threads are a floor; spaced ones a lookup of the unit interval the point falls in,
 // then a binary search among the few threads that start inside it.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -35,10 +36,14 @@ public:
         if (!spaced()) {
             const double f = std::floor(e);
             const int64_t thread = int64_t(f);
-            return {thread, std::fmin(e - f, kBelowOne), period_ == 1 ? 0 : int(WeavePattern::positiveMod(thread, period_))};
+            return {thread, std::min(e - f, kBelowOne), period_ == 1 ? 0 : int(WeavePattern::positiveMod(thread, period_))};
         }
         return locateSpaced(e);
     }
+
+    // The mean colour over [e0, e1] (mean thread widths, e0 < e1), each thread weighted by how much
+    // of its cell the interval covers: the weave filter's colour over a pixel's footprint.
+    glm::vec3 meanColor(double e0, double e1) const;
 
     int period() const { return period_; }
     const glm::vec3& color(int slot) const { return colors_[size_t(slot)]; }
@@ -55,6 +60,7 @@ public:
 private:
     static constexpr double kBelowOne = 1.0 - 1e-12;  // keeps `across` below 1 where e rounds up
     Cell locateSpaced(double e) const;
+    void integrateColors();
 
     int period_ = 1;
     std::vector<glm::vec3> colors_;  // per slot
@@ -62,6 +68,9 @@ private:
     std::vector<double> start_, width_, inverseWidth_;
     double inversePeriod_ = 1.0, belowPeriod_ = 0.0;
     std::vector<int> firstInInterval_;
+    std::vector<glm::dvec3> colorSum_;  // colour x cell width summed over the slots before each, period + 1 entries
+
+    glm::dvec3 integratedColor(double e) const;  // the colour integrated from 0 to e
 };
 
 }  // namespace woven

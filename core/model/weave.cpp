@@ -25,7 +25,9 @@ Weave::Weave(const WovenParams& p)
       floats_(p.crimp > 0.0f ? std::make_unique<const WeaveFloats>(front_) : nullptr),
       yarns_(resolvedYarns(p)),
       warp_(threads(p, YarnSide::Warp)),
-      weft_(threads(p, YarnSide::Weft)) {}
+      weft_(threads(p, YarnSide::Weft)) {
+    for (const Yarn& y : yarns_) shapes_.emplace_back(y.ex(), y.ey(), y.rs());
+}
 
 std::vector<Yarn> usedYarns(const WovenParams& p, YarnSide side) {
     const Yarn own = sideYarn(p, side);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "ashikhmin_shirley.h"
 #include "thread_layout.h"
 #include "weave_pattern.h"
 #include "yarn.h"
@@ -24,6 +25,9 @@ public:
     // The resolved yarns: 0 the warp's own, 1 the weft's own, then each yarn type on the warp,
     // then each on the weft (yarnOfType()).
     const Yarn& yarn(int index) const { return yarns_[size_t(index)]; }
+    // Its lobe without the colour (exponents, R_s and their roots), precomputed per yarn.
+    const LobeShape& lobeShape(int index) const { return shapes_[size_t(index)]; }
+    int yarnCount() const { return int(yarns_.size()); }
     static int yarnOfType(int type, YarnSide side, int typeCount) {
         return 2 + type + (side == YarnSide::Weft ? typeCount : 0);
     }
@@ -35,6 +39,7 @@ private:
     WeavePattern front_, back_;
     std::unique_ptr<const WeaveFloats> floats_;
     std::vector<Yarn> yarns_;
+    std::vector<LobeShape> shapes_;
     ThreadLayout warp_, weft_;
 };
 

@@ -3,6 +3,7 @@
 // rest is gap), the weights of a far-field average (MODEL.md section 7; the preview's weave
 // filter).
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "weave.h"
 
@@ -10,6 +11,10 @@ namespace woven {
 
 struct WeaveCoverage {
     float weft = 0.0f, warp = 0.0f;  // fractions of the surface
+    std::vector<float> yarns;        // the fraction each yarn covers (Weave::yarn() indices)
+    // The same split by the cells' top yarn: what the cells with the warp on top hold, and the
+    // fraction of the surface those cells are.
+    float weftInWarpCells = 0.0f, warpInWarpCells = 0.0f, warpCells = 0.0f;
 };
 
 // Over the cells of one repeat of the tile and both sides' thread periods together, at most

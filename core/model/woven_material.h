@@ -3,6 +3,7 @@
 // cloth, its threads and yarns), built once per material, so a hit only looks things up.
 #include <optional>
 
+#include "filtered_weave_lobe.h"
 #include "surface_bsdf.h"
 #include "yarn_geometry.h"
 
@@ -16,6 +17,9 @@ struct ShadingInput {
     glm::vec3 dpdu{1, 0, 0};  // may be zero or parallel to ns (degenerate UVs): handled
     glm::vec3 dpdv{0, 1, 0};
     bool backSide = false;
+    // How uv changes from this pixel to the next along x and y at this point (the pixel's
+    // footprint, from ray differentials): what the filtered BSDF averages over. Zero: a point.
+    glm::dvec2 duvdx{0.0}, duvdy{0.0};
 };
 
 struct WovenShading {
@@ -33,6 +37,12 @@ public:
 
     // nullopt where the point is a see-through gap: the ray passes on as through an alpha cut-out.
     std::optional<WovenShading> shade(const ShadingInput& in) const;
+    // The BSDF filtered over the footprint (in.duvdx, in.duvdy; MODEL.md section 7) where it
+    // covers a quarter of a weave element or more, in the tangent frame; nullopt where it is
+    // smaller (shade() is the model there) or the point is a see-through gap.
+    std::optional<FramedLobe<FilteredWeaveLobe>> shadeFiltered(const ShadingInput& in) const;
+    // The far field of a face, for the filtered BSDF and the preview's twin.
+    const WeaveFarField& farField(bool backSide) const { return farField_[backSide ? 1 : 0]; }
     // Cheap test for the ray-tracing filter: no yarn and no backing at this uv.
     bool isSeeThrough(const glm::dvec2& uv) const;
     // Whether any uv is see-through: both yarns narrower than their element, and no backing.
@@ -41,7 +51,11 @@ public:
 private:
     WovenParams params_;
     Weave weave_;
+    WeaveFarField farField_[2];  // front, back
     bool mayHaveGaps_;
+
+    // shade() in a given tangent frame (x = +u, y = +v, z = the normal of the face seen).
+    std::optional<WovenShading> shade(const ShadingInput& in, const Frame& tangent) const;
 };
 
 // The tangent frame (x along +u, y along +v, z = n) from possibly degenerate dp/du and dp/dv.

@@ -1,15 +1,16 @@
 #include "yarn_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace woven {
 
 glm::vec2 crossSectionNormal(float cy, float x) {
-    const float up = std::sqrt(std::fmax(0.0f, 1.0f - x * x));
-    const glm::vec2 n(cy * x, up);
-    const float len = glm::length(n);
+    const float up2 = std::max(0.0f, 1.0f - x * x);
+    const glm::vec2 n(cy * x, std::sqrt(up2));
+    const float len2 = n.x * n.x + up2;
     // c_y = 0 at |x| = 1 is 0/0: a flat yarn's normal is straight up everywhere.
-    return len > 1e-12f ? n / len : glm::vec2(0.0f, 1.0f);
+    return len2 > 1e-24f ? n * (1.0f / std::sqrt(len2)) : glm::vec2(0.0f, 1.0f);
 }
 
 namespace {
@@ -24,8 +25,8 @@ float crimpSlope(float crimp, WeavePattern::Float f, double alongInElement) {
     return float(crimp * (1.0 - 1.0 / L) * M_PI / L * std::cos(M_PI * q));
 }
 
-// The normal of a yarn whose along axis is `alongAxis` (0 = u, 1 = v) at across position x,
-// tilted along the yarn by the crimp slope.
+}  // namespace
+
 glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
     const glm::vec2 section = crossSectionNormal(cy, x);  // (across, up)
     // Rotate the section normal about the across axis by atan(slope): norm is preserved.
@@ -38,8 +39,6 @@ glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
     n.z = upComp;
     return n;
 }
-
-}  // namespace
 
 YarnPoint yarnAt(const Weave& weave, const WovenParams& p, bool backSide, glm::dvec2 uv) {
     // Double precision and 64-bit thread indices keep |u|, |v| up to 1e6 (and repeat counts

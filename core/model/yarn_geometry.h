@@ -23,5 +23,8 @@ YarnPoint yarnAt(const Weave& weave, const WovenParams& p, bool backSide, glm::d
 
 // The cross-section normal (across, up) for x in [-1, 1], in MODEL.md's finite form.
 glm::vec2 crossSectionNormal(float cy, float x);
+// The bumped normal in the tangent frame of a yarn along axis `alongAxis` (0 = u, 1 = v) at across
+// position x, tilted along the yarn by the crimp slope.
+glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope);
 
 }  // namespace woven

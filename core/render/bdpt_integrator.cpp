@@ -167,7 +167,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
     int count = 0;
     while (true) {
         ++sink.rays;
-        const auto hit = scene_.intersect(ray);
+        auto hit = scene_.intersect(ray);
         Vertex& v = path[count];
         Vertex& prev = path[count - 1];  // the path's start sits before path[0]
         if (!hit) {
@@ -184,6 +184,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
             }
             break;
         }
+        if (filterWeave_) addFootprint(*hit, scene_, camera_);
         v = Vertex{};
         v.type = Vertex::Type::Surface;
         v.hit = *hit;

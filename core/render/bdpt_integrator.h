@@ -10,8 +10,8 @@ namespace woven {
 
 class BdptIntegrator : public Integrator {
 public:
-    BdptIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth)
-        : scene_(scene), camera_(camera), maxDepth_(maxDepth) {}
+    BdptIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave)
+        : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
     glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
     const char* name() const override { return "bdpt"; }
@@ -42,6 +42,7 @@ private:
     const RenderScene& scene_;
     const CameraModel& camera_;
     int maxDepth_;
+    bool filterWeave_;
 };
 
 }  // namespace woven

@@ -21,6 +21,34 @@ CameraModel::CameraModel(const Camera& camera, int width, int height) : width_(w
     imagePlaneArea_ = (2.0f * tanHalfY_ * aspect_) * (2.0f * tanHalfY_);
 }
 
+CameraModel::Footprint CameraModel::footprint(const glm::vec3& p, const glm::vec3& n) const {
+    const glm::vec3 d = p - position_;
+    const float depth = glm::dot(d, forward_);
+    // The ray to p scaled to reach the image plane's depth 1, whose x and y move by one pixel's
+    // width on that plane; beside or behind the camera (a point only bounces reach), p's distance
+    // takes the depth's place, as pbrt-v4 treats every point as if straight ahead.
+    const float length = glm::length(d);
+    if (!(length > 0.0f)) return {};
+    const float scale = depth > 0.1f * length ? depth : length;
+    const glm::vec3 D = d / scale;
+    const glm::vec3 right(cameraToWorld_[0]), up(cameraToWorld_[1]);
+    const float pixel = 2.0f * tanHalfY_ / float(height_);  // square pixels: also aspect 2 tanHalfY / width
+    const float pixelX = 2.0f * aspect_ * tanHalfY_ / float(width_);
+    const float np = glm::dot(n, d);
+    auto offset = [&](const glm::vec3& dir) -> glm::vec3 {
+        const float nd = glm::dot(n, dir);
+        if (!(std::abs(nd) > 1e-6f * glm::length(dir))) return glm::vec3(0.0f);
+        const glm::vec3 hit = position_ + (np / nd) * dir;
+        const glm::vec3 dp = hit - p;
+        return std::isfinite(dp.x + dp.y + dp.z) ? dp : glm::vec3(0.0f);
+    };
+    Footprint f;
+    f.dpdx = offset(D + pixelX * right);
+    f.dpdy = offset(D - pixel * up);  // raster y runs down
+    if (f.dpdx == glm::vec3(0.0f) || f.dpdy == glm::vec3(0.0f)) return {};
+    return f;
+}
+
 glm::vec3 CameraModel::position() const { return position_; }
 glm::vec3 CameraModel::forward() const { return forward_; }
 

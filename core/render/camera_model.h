@@ -29,6 +29,18 @@ public:
     };
     std::optional<WiSample> sampleWi(const glm::vec3& ref, const glm::vec2& u) const;
 
+    // How a surface point p (normal n) moves from one pixel to the next along x and y: the ray
+    // differentials of the camera ray through p, met by the tangent plane at p. For a point the
+    // camera sees this is exact; for one a path reaches after bounces it is pbrt-v4's
+    // approximation (Camera::Approximate_dp_dxy): the footprint it would have if the camera saw
+    // it. A function of the point alone, so every path and BDPT strategy that reaches a point
+    // shades it alike, and a frame stays a pure function of (scene, seed, sample range). Zero
+    // where the plane is edge-on to the ray or p is at the camera.
+    struct Footprint {
+        glm::vec3 dpdx{0.0f}, dpdy{0.0f};
+    };
+    Footprint footprint(const glm::vec3& p, const glm::vec3& n) const;
+
     glm::vec3 position() const;
     glm::vec3 forward() const;
     int width() const { return width_; }

@@ -32,9 +32,14 @@ public:
 };
 
 // maxDepth counts scattering vertices (bounces) as in pbrt-v3: 1 = direct lighting only.
+// filterWeave: woven materials shade each hit filtered over its pixel footprint (addFootprint()).
 // Throws std::invalid_argument for an unknown name ("bdpt" and "path" are known).
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene,
-                                           const CameraModel& camera, int maxDepth);
+                                           const CameraModel& camera, int maxDepth, bool filterWeave);
+
+// Gives a hit its pixel footprint (CameraModel::footprint() through setUvFootprint()) where its
+// material filters by one; other hits cost nothing more.
+void addFootprint(SurfaceHit& hit, const RenderScene& scene, const CameraModel& camera);
 
 // Whether the BSDF at a hit may connect wo and wi. A reflecting BSDF only connects directions on
 // the same side of the geometric surface, which keeps shading normals from leaking light (Veach

@@ -44,7 +44,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
     float prevBsdfPdf = 0.0f;
     for (int bounces = 0;; ++bounces) {
         ++sink.rays;
-        const auto hit = scene_.intersect(ray);
+        auto hit = scene_.intersect(ray);
         if (!hit) {
             const int env = scene_.environmentLight();
             if (env >= 0) {
@@ -71,6 +71,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
             L += beta * Le * weight;
         }
         if (bounces >= maxDepth_) break;
+        if (filterWeave_) addFootprint(*hit, scene_, camera_);
         const auto bsdf = scene_.materials().bsdf(*hit, wo);
         if (!bsdf) break;
 

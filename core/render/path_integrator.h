@@ -8,8 +8,8 @@ namespace woven {
 
 class PathIntegrator : public Integrator {
 public:
-    PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth)
-        : scene_(scene), camera_(camera), maxDepth_(maxDepth) {}
+    PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave)
+        : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
     glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
     const char* name() const override { return "path"; }
@@ -22,6 +22,7 @@ private:
     const RenderScene& scene_;
     const CameraModel& camera_;
     int maxDepth_;
+    bool filterWeave_;
 };
 
 }  // namespace woven

@@ -110,7 +110,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
     };
     Pilot pilots[2] = {{"path"}, {"bdpt"}};
     for (Pilot& pilot : pilots) {
-        const auto candidate = makeIntegrator(pilot.name, *scene, pilotModel, settings.maxDepth);
+        const auto candidate = makeIntegrator(pilot.name, *scene, pilotModel, settings.maxDepth, settings.filterWeave);
         std::vector<double> sum(size_t(width) * height, 0.0), sumSq(sum.size(), 0.0);
         const Clock::time_point start = Clock::now();
         int passes = 0;
@@ -175,7 +175,7 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     im.camera = im.settings.camera ? *im.settings.camera : sceneCamera(*im.description);
     im.cameraModel = std::make_unique<CameraModel>(im.camera, im.settings.width, im.settings.height);
     im.integratorName = im.settings.integrator;
-    if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth);
+    if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
 }
 
 RenderJob::~RenderJob() = default;
@@ -186,7 +186,7 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
     if (!im.integrator) {
         const std::string chosen = im.pickIntegrator(cancel);
         if (cancel.load()) return;
-        im.integrator = makeIntegrator(chosen, *im.scene, *im.cameraModel, im.settings.maxDepth);
+        im.integrator = makeIntegrator(chosen, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
         im.integratorName = chosen;
     }
     const Clock::time_point renderStart = Clock::now();

@@ -29,6 +29,9 @@ struct RenderSettings {
     // of its mean is below this; spp is then each pixel's most. 0: every pixel takes spp samples
     // (woven render's default is defaultRenderSettings()').
     double noiseThreshold = 0.0;
+    // Woven materials filtered over each pixel's footprint (--filter). Off by default: its bias
+    // (about 2 % per pixel on the paper's satin) exceeds the noise it removes (docs/RESULTS.md).
+    bool filterWeave = false;
     std::optional<Camera> camera;  // overrides the scene's
 };
 

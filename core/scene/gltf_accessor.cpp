@@ -63,14 +63,15 @@ const unsigned char* viewBytes(const tinygltf::Model& model, int viewIndex, size
         throw AccessorError(what + ": buffer view " + std::to_string(viewIndex) + " names buffer " +
                             std::to_string(view.buffer) + ", which does not exist");
     const tinygltf::Buffer& buffer = model.buffers[view.buffer];
-    if (view.byteOffset + view.byteLength > buffer.data.size())
+    if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
         throw AccessorError(what + ": buffer view " + std::to_string(viewIndex) + " (bytes " +
                             std::to_string(view.byteOffset) + " + " + std::to_string(view.byteLength) +
                             ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
                             std::to_string(buffer.data.size()) + " bytes)");
-    const size_t needed = count == 0 ? 0 : offset + (count - 1) * stride + elementSize;
-    if (needed > view.byteLength)
-        throw AccessorError(what + ": needs " + std::to_string(needed) + " bytes of buffer view " +
+    // In long double: a count from the file may make the product overflow size_t.
+    const long double needed = count == 0 ? 0.0L : (long double)offset + (long double)(count - 1) * stride + elementSize;
+    if (needed > (long double)view.byteLength)
+        throw AccessorError(what + ": needs " + std::to_string((unsigned long long)std::min(needed, 1e19L)) + " bytes of buffer view " +
                             std::to_string(viewIndex) + ", which has " + std::to_string(view.byteLength));
     return buffer.data.data() + view.byteOffset + offset;
 }
@@ -99,9 +100,23 @@ AccessorData readAccessor(const tinygltf::Model& model, int accessorIndex) {
     AccessorData data;
     data.components = components;
     data.count = accessor.count;
+    const size_t elementSize = columnBytes * size_t(components / rows);
+    // What the file claims is checked against what it holds before anything is allocated: an
+    // accessor with a view must fit in it; one without (zeros, perhaps made sparse) can claim
+    // no more elements than the file has bytes of buffers, as every real accessor needs some.
+    size_t bufferBytes = 0;
+    for (const tinygltf::Buffer& buffer : model.buffers) bufferBytes += buffer.data.size();
+    if (accessor.bufferView >= 0) {
+        if (size_t(accessor.bufferView) >= model.bufferViews.size())
+            throw AccessorError(what + ": buffer view " + std::to_string(accessor.bufferView) + " does not exist");
+        const tinygltf::BufferView& view = model.bufferViews[accessor.bufferView];
+        const size_t stride = view.byteStride ? view.byteStride : elementSize;
+        viewBytes(model, accessor.bufferView, accessor.byteOffset, data.count, elementSize, std::max(stride, elementSize), what);
+    } else if (data.count > std::max<size_t>(bufferBytes, 1)) {
+        throw AccessorError(what + ": claims " + std::to_string(data.count) + " elements with no data behind them");
+    }
     data.values.assign(data.count * components, 0.0);  // an accessor without a view reads zeros
 
-    const size_t elementSize = columnBytes * size_t(components / rows);
     if (accessor.bufferView >= 0) {
         if (size_t(accessor.bufferView) >= model.bufferViews.size())
             throw AccessorError(what + ": buffer view " + std::to_string(accessor.bufferView) + " does not exist");

@@ -17,7 +17,9 @@
 
 #include "frame.h"
 #include "gltf_accessor.h"
+#include "file_reading.h"
 #include "gltf_material_reader.h"
+#include "untrusted_json.h"
 #include "image_io.h"
 #include "mesh_attributes.h"
 #include "scene_loader.h"
@@ -31,7 +33,7 @@ namespace {
 const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
-    "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "WOVEN_fabric",
+    "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
@@ -75,6 +77,9 @@ std::string nameOr(const std::string& name, const char* kind, int index) {
     return name.empty() ? kind + std::to_string(index) : name;
 }
 
+// A glTF file or one of its buffers: far beyond any asset woven renders, well within memory.
+constexpr size_t kMaxGltfFileBytes = size_t(4) << 30;
+
 // KHR_lights_punctual gives candela (point, spot) and lux (directional); woven's lights are
 // radiometric (W/sr, W/m^2). Blender's importer divides by 683 lm/W (its default "Standard"
 // lighting mode), and so does woven, so a file lights the same in both.
@@ -84,7 +89,7 @@ bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(
 
 class GltfLoader {
 public:
-    explicit GltfLoader(std::string path) : path_(std::move(path)) {}
+    GltfLoader(std::string path, const LoadOptions& options) : path_(std::move(path)), options_(options) {}
 
     SceneDescription load() {
         readModel();
@@ -105,33 +110,47 @@ private:
     }
 
     // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
-    nlohmann::json jsonPart() const {
-        std::ifstream in(path_, std::ios::binary);
-        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Nesting deeper than woven reads is refused here, before tinygltf walks it.
+    nlohmann::json jsonPart(const std::vector<unsigned char>& file) const {
+        std::string_view bytes(reinterpret_cast<const char*>(file.data()), file.size());
         if (bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0) {
             uint32_t length = 0;
             std::memcpy(&length, bytes.data() + 12, 4);
             bytes = bytes.substr(20, std::min<size_t>(length, bytes.size() - 20));
         }
-        return nlohmann::json::parse(bytes, nullptr, false);
+        try {
+            return parseUntrustedJson(bytes);
+        } catch (const std::invalid_argument& e) {
+            if (jsonDepth(bytes) > kMaxJsonDepth) fail(e.what());
+            return nlohmann::json();  // tinygltf names what is malformed
+        }
     }
 
     void readModel() {
-        if (!std::filesystem::is_regular_file(path_)) fail("no such file");
+        std::vector<unsigned char> file;
+        try {
+            file = readRegularFile(path_, kMaxGltfFileBytes);
+        } catch (const FileReadError& e) {
+            throw SceneError(e.what());
+        }
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
-        document_ = jsonPart();
+        document_ = jsonPart(file);
         const nlohmann::json& document = document_;
         if (document.is_object() && document.contains("extensionsRequired") && document["extensionsRequired"].is_array())
             for (const auto& name : document["extensionsRequired"])
                 if (name.is_string() && kCompressionExtensions.count(name.get<std::string>()))
                     failCompressed(name.get<std::string>());
         tinygltf::TinyGLTF reader;
+        reader.SetFsCallbacks({fileExists, keepPath, readFile, refuseWrite, this});
         reader.SetImageLoader(keepEncodedImage, &encodedImages_);
         reader.SetStoreOriginalJSONForExtrasAndExtensions(true);
         std::string err, warn;
-        const bool binary = isBinaryGltf();
-        const bool ok = binary ? reader.LoadBinaryFromFile(&model_, &err, &warn, path_)
-                               : reader.LoadASCIIFromFile(&model_, &err, &warn, path_);
+        const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+        const std::string folder = std::filesystem::path(path_).parent_path().string();
+        if (!binary && file.size() > std::numeric_limits<unsigned>::max()) fail("the glTF file is too large to parse");
+        const bool ok = binary ? reader.LoadBinaryFromMemory(&model_, &err, &warn, file.data(), unsigned(file.size()), folder)
+                               : reader.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(file.data()),
+                                                            unsigned(file.size()), folder);
         if (!ok) {
             while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
             fail(std::string("cannot read ") + (binary ? "glTF binary" : "glTF") + ": " +
@@ -139,12 +158,43 @@ private:
         }
     }
 
-    bool isBinaryGltf() const {
-        std::ifstream in(path_, std::ios::binary);
-        char magic[4] = {};
-        in.read(magic, 4);
-        return in.gcount() == 4 && std::string(magic, 4) == "glTF";
+    // tinygltf's file access, for the buffers and images a file names: only regular files, of a
+    // bounded size, inside the glTF file's folder (unless LoadOptions::anyPath).
+    std::string allowedFile(const std::string& path) const {
+        namespace fs = std::filesystem;
+        std::error_code error;
+        const fs::path resolved = fs::weakly_canonical(fs::path(path), error);
+        if (error) return "cannot resolve the path";
+        if (options_.anyPath) return "";
+        const fs::path folder = fs::weakly_canonical(fs::absolute(fs::path(path_)).parent_path(), error);
+        const auto [end, unused] = std::mismatch(folder.begin(), folder.end(), resolved.begin(), resolved.end());
+        if (end != folder.end()) return "is outside the glTF file's folder (" + folder.string() + "; --allow-any-path reads it)";
+        return "";
     }
+    // Whether it exists at all; readFile then says why a file that does is refused.
+    static bool fileExists(const std::string& path, void*) {
+        std::error_code error;
+        return std::filesystem::exists(path, error);
+    }
+    static std::string keepPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+    static bool readFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
+        if (const std::string problem = static_cast<GltfLoader*>(self)->allowedFile(path); !problem.empty()) {
+            *err = path + ": " + problem;
+            return false;
+        }
+        try {
+            *out = readRegularFile(path, kMaxGltfFileBytes);
+        } catch (const FileReadError& e) {
+            *err = e.what();
+            return false;
+        }
+        return true;
+    }
+    static bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+        *err = "woven does not write through the glTF loader";
+        return false;
+    }
+
 
     [[noreturn]] void failCompressed(const std::string& extension) const {
         fail("uses " + extension + " mesh compression, which woven does not decode; save the file without mesh compression");
@@ -514,10 +564,13 @@ private:
     }
 
     static int tangentTexCoord(const Material& m) {
-        return m.normalTexture ? m.normalTexture.texCoord : (m.clearcoat.normalTexture ? m.clearcoat.normalTexture.texCoord : 0);
+        for (const TextureRef* t : {&m.normalTexture, &m.clearcoat.normalTexture, &m.anisotropy.texture})
+            if (*t) return t->texCoord;
+        return 0;
     }
 
     std::string path_;
+    LoadOptions options_;
     nlohmann::json document_;
     tinygltf::Model model_;
     EncodedImages encodedImages_;
@@ -527,6 +580,6 @@ private:
 
 }  // namespace
 
-SceneDescription loadGltf(const std::string& path) { return GltfLoader(path).load(); }
+SceneDescription loadGltf(const std::string& path, const LoadOptions& options) { return GltfLoader(path, options).load(); }
 
 }  // namespace woven

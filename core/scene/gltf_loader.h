@@ -6,9 +6,10 @@
 #include <string>
 
 #include "scene_description.h"
+#include "scene_loader.h"
 
 namespace woven {
 
-SceneDescription loadGltf(const std::string& path);
+SceneDescription loadGltf(const std::string& path, const LoadOptions& options = {});
 
 }  // namespace woven

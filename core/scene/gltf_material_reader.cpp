@@ -183,6 +183,12 @@ void GltfMaterialReader::readExtensions(const json& extensions, Material& m, con
         m.sheen.roughness = number(e, "sheenRoughnessFactor", 0.0f, 0.0f, 1.0f, at);
         m.sheen.roughnessTexture = readTexture(member(e, "sheenRoughnessTexture"), false, at + ".sheenRoughnessTexture", scene);
     }
+    if (const json& e = member(extensions, "KHR_materials_anisotropy"); !e.is_null()) {
+        const std::string at = where + ".KHR_materials_anisotropy";
+        m.anisotropy.strength = number(e, "anisotropyStrength", 0.0f, 0.0f, 1.0f, at);
+        m.anisotropy.rotation = number(e, "anisotropyRotation", 0.0f, -1e6f, 1e6f, at);
+        m.anisotropy.texture = readTexture(member(e, "anisotropyTexture"), false, at + ".anisotropyTexture", scene);
+    }
     if (const json& e = member(extensions, "KHR_materials_clearcoat"); !e.is_null()) {
         const std::string at = where + ".KHR_materials_clearcoat";
         m.clearcoat.factor = number(e, "clearcoatFactor", 0.0f, 0.0f, 1.0f, at);

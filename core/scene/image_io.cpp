@@ -1,8 +1,9 @@
 #include "image_io.h"
 
-#include <stb_image.h>
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/half.h>
+#include <OpenImageIO/imageio.h>
 #include <stb_image_write.h>
-#include <tinyexr.h>
 
 #include <algorithm>
 #include <array>
@@ -12,6 +13,7 @@
 #include <fstream>
 
 #include "atomic_file.h"
+#include "file_reading.h"
 
 namespace woven {
 
@@ -21,24 +23,101 @@ namespace {
     throw ImageError(path + ": " + problem);
 }
 
-std::vector<unsigned char> readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot open the file (missing or unreadable)");
-    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+// The formats woven reads, by their first bytes: glTF textures are PNG or JPEG, environment
+// maps Radiance HDR or OpenEXR. Anything else is refused by name before a decoder sees it.
+enum class ImageFormat { Png, Jpeg, Hdr, Exr };
+
+ImageFormat detectFormat(const unsigned char* data, size_t size, const std::string& name) {
+    const auto startsWith = [&](std::initializer_list<unsigned char> magic) {
+        return size >= magic.size() && std::equal(magic.begin(), magic.end(), data);
+    };
+    const auto startsWithText = [&](const char* text) {
+        const size_t n = std::strlen(text);
+        return size >= n && std::memcmp(data, text, n) == 0;
+    };
+    if (startsWith({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
+    if (startsWith({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
+    if (startsWithText("#?RADIANCE") || startsWithText("#?RGBE")) return ImageFormat::Hdr;
+    if (startsWith({0x76, 0x2f, 0x31, 0x01})) return ImageFormat::Exr;
+    std::string what = "an unknown format";
+    if (startsWithText("GIF8")) what = "GIF";
+    else if (startsWithText("BM")) what = "BMP";
+    else if (startsWith({'I', 'I', 42, 0}) || startsWith({'M', 'M', 0, 42})) what = "TIFF";
+    else if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0) what = "WebP";
+    else if (startsWith({0xab, 'K', 'T', 'X'})) what = "KTX";
+    else if (startsWithText("DDS ")) what = "DDS";
+    else if (size >= 2 && data[0] == 'P' && data[1] >= '1' && data[1] <= '7') what = "PNM";
+    else if (size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3 || data[2] >= 9)) what = "TGA or an unknown format";
+    fail(name, "the image is " + what + ": woven reads PNG, JPEG, Radiance HDR (.hdr) and OpenEXR (.exr)");
 }
 
-void requireReadable(const std::string& path) {
-    if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot open the file (missing or unreadable)");
+const char* formatExtension(ImageFormat f) {
+    switch (f) {
+        case ImageFormat::Png: return ".png";
+        case ImageFormat::Jpeg: return ".jpg";
+        case ImageFormat::Hdr: return ".hdr";
+        case ImageFormat::Exr: return ".exr";
+    }
+    return "";
 }
 
-bool hasExrMagic(const std::vector<unsigned char>& bytes) {
-    return bytes.size() >= 4 && bytes[0] == 0x76 && bytes[1] == 0x2f && bytes[2] == 0x31 && bytes[3] == 0x01;
+// An image opened from memory, its size checked against the limits before any pixel is read.
+struct OpenedImage {
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+    std::unique_ptr<OIIO::ImageInput> input;
+    ImageFormat format;
+    const OIIO::ImageSpec& spec() const { return input->spec(); }
+};
+
+std::string oiioError(const OIIO::ImageInput* input) {
+    std::string message = input ? input->geterror() : OIIO::geterror();
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+    return message.empty() ? "unknown error" : message;
 }
 
-std::string takeExrError(const char* err, int code) {
-    std::string message = err ? err : "tinyexr error " + std::to_string(code);
-    if (err) FreeEXRErrorMessage(err);
-    return message;
+OpenedImage openImage(const unsigned char* data, size_t size, const std::string& name) {
+    OpenedImage image;
+    image.format = detectFormat(data, size, name);
+    image.memory = std::make_unique<OIIO::Filesystem::IOMemReader>(data, size);
+    // The name only tells OpenImageIO which decoder to use: the bytes come from memory. Alpha
+    // stays as stored (glTF's is not premultiplied; OpenImageIO would premultiply it).
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    void* proxy = image.memory.get();
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    image.input = OIIO::ImageInput::open(std::string("image") + formatExtension(image.format), &config, image.memory.get());
+    if (!image.input) fail(name, "cannot decode the image: " + oiioError(nullptr));
+    const OIIO::ImageSpec& spec = image.input->spec();
+    if (spec.deep) fail(name, "deep OpenEXR images are not supported");
+    if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1)
+        fail(name, "the image is empty (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ")");
+    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+        int64_t(spec.width) * spec.height > kMaxImagePixels)
+        fail(name, "the image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                       ", more than woven reads (" + std::to_string(kMaxImageSide) + " on a side, " +
+                       std::to_string(kMaxImagePixels / (1 << 20)) + " Mpixels)");
+    if (spec.nchannels <= 0 || spec.nchannels > kMaxImageChannels)
+        fail(name, "the image has " + std::to_string(spec.nchannels) + " channels (woven reads 1 to " +
+                       std::to_string(kMaxImageChannels) + ")");
+    return image;
+}
+
+// All channels of the first subimage as `type`, interleaved.
+template <typename T>
+std::vector<T> readPixels(OpenedImage& image, OIIO::TypeDesc type, const std::string& name) {
+    const OIIO::ImageSpec& spec = image.spec();
+    std::vector<T> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+    if (!image.input->read_image(0, 0, 0, spec.nchannels, type, pixels.data()))
+        fail(name, "cannot decode the image: " + oiioError(image.input.get()));
+    return pixels;
+}
+
+// RGBA from 1 to 4 channels (grey, grey + alpha, RGB, RGBA; more: the first four).
+template <typename T>
+T channelOf(const T* pixel, int channels, int c, T opaque) {
+    if (channels <= 2) return c < 3 ? pixel[0] : (channels == 2 ? pixel[1] : opaque);
+    if (c < 3) return pixel[c];
+    return channels >= 4 ? pixel[3] : opaque;
 }
 
 // The sum channels' names, in the order ExactSum::words() gives them, R, G, B.
@@ -46,47 +125,20 @@ std::string sumChannelName(int rgb, int word) {
     return std::string("sum.") + "RGB"[rgb] + std::to_string(word);
 }
 
-// Fills `sums` from channels sum.R0-sum.B3 when the file has them; returns the problem, if any.
-template <typename PlaneLookup>
-std::string readSampleSums(const PlaneLookup& plane, size_t pixels, std::vector<ExactSum>* sums) {
-    const uint32_t* words[3][4];
-    int found = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int w = 0; w < 4; ++w) {
-            words[c][w] = reinterpret_cast<const uint32_t*>(plane(sumChannelName(c, w), TINYEXR_PIXELTYPE_UINT));
-            found += words[c][w] != nullptr;
-        }
-    if (found == 0) return "";
-    if (found != 12) return "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing";
-    sums->resize(3 * pixels);
-    for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c)
-            (*sums)[3 * i + size_t(c)] =
-                ExactSum::fromWords({words[c][0][i], words[c][1][i], words[c][2][i], words[c][3][i]});
-    return "";
-}
-
 const char* const kFirstSampleAttribute = "wovenFirstSample";
 const char* const kSampleCountAttribute = "wovenSampleCount";
 
-std::string readSampleRange(const EXRHeader& header, std::optional<SampleRange>* samples) {
-    std::optional<int> first, count;
-    for (int a = 0; a < header.num_custom_attributes; ++a) {
-        const EXRAttribute& attribute = header.custom_attributes[a];
-        std::optional<int>* target = std::strcmp(attribute.name, kFirstSampleAttribute) == 0   ? &first
-                                     : std::strcmp(attribute.name, kSampleCountAttribute) == 0 ? &count
-                                                                                                : nullptr;
-        if (!target) continue;
-        if (std::strcmp(attribute.type, "int") != 0 || attribute.size != 4)
-            return std::string("attribute ") + attribute.name + " is not an int";
-        int32_t value;
-        std::memcpy(&value, attribute.value, 4);  // OpenEXR is little-endian, as are woven's targets
-        *target = value;
-    }
-    if (first.has_value() != count.has_value())
+std::string readSampleRange(const OIIO::ImageSpec& spec, std::optional<SampleRange>* samples) {
+    const OIIO::ParamValue* first = spec.find_attribute(kFirstSampleAttribute);
+    const OIIO::ParamValue* count = spec.find_attribute(kSampleCountAttribute);
+    if (!first && !count) return "";
+    if (!first || !count)
         return std::string("has only one of the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute;
-    if (first && (*first < 0 || *count < 0)) return "has a negative sample range";
-    if (first) *samples = SampleRange{*first, *count};
+    if (first->type() != OIIO::TypeInt || count->type() != OIIO::TypeInt)
+        return std::string("the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute + " must be ints";
+    const int f = first->get_int(), c = count->get_int();
+    if (f < 0 || c < 0) return "has a negative sample range";
+    *samples = SampleRange{f, c};
     return "";
 }
 
@@ -102,141 +154,120 @@ float toneMap(float c, ToneMap curve) {
 
 }  // namespace
 
-Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
-                  const std::string& name) {
-    const int length = static_cast<int>(size);
+Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding, const std::string& name) {
+    OpenedImage opened = openImage(data, size, name);
+    const OIIO::ImageSpec& spec = opened.spec();
+    const bool floats = opened.format == ImageFormat::Hdr || opened.format == ImageFormat::Exr;
+    const std::vector<float> pixels = readPixels<float>(opened, OIIO::TypeFloat, name);
     Image image;
-    int channels = 0;
-    const auto failDecode = [&]() { fail(name, std::string("cannot decode the image: ") + stbi_failure_reason()); };
-    if (stbi_is_hdr_from_memory(data, length)) {
-        float* pixels = stbi_loadf_from_memory(data, length, &image.width, &image.height, &channels, 3);
-        if (!pixels) failDecode();
-        image.pixels.resize(size_t(image.width) * image.height);
-        std::memcpy(image.pixels.data(), pixels, image.pixels.size() * sizeof(glm::vec3));
-        stbi_image_free(pixels);
-        return image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.pixels.resize(size_t(spec.width) * size_t(spec.height));
+    const bool srgb = !floats && encoding == ChannelEncoding::Srgb;
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const float* pixel = &pixels[i * size_t(spec.nchannels)];
+        for (int c = 0; c < 3; ++c) {
+            const float v = channelOf(pixel, spec.nchannels, c, 1.0f);
+            image.pixels[i][c] = srgb ? srgbToLinear(v) : v;
+        }
     }
-    const auto decode = [encoding](float c) {
-        return encoding == ChannelEncoding::Srgb ? srgbToLinear(c) : c;
-    };
-    if (stbi_is_16_bit_from_memory(data, length)) {
-        stbi_us* pixels = stbi_load_16_from_memory(data, length, &image.width, &image.height, &channels, 3);
-        if (!pixels) failDecode();
-        image.pixels.resize(size_t(image.width) * image.height);
-        for (size_t i = 0; i < image.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c) image.pixels[i][c] = decode(pixels[3 * i + c] / 65535.0f);
-        stbi_image_free(pixels);
-        return image;
-    }
-    stbi_uc* pixels = stbi_load_from_memory(data, length, &image.width, &image.height, &channels, 3);
-    if (!pixels) failDecode();
-    // 256-entry table: the pow() per channel would dominate loading large textures.
-    std::array<float, 256> table;
-    for (int v = 0; v < 256; ++v) table[v] = decode(v / 255.0f);
-    image.pixels.resize(size_t(image.width) * image.height);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) image.pixels[i][c] = table[pixels[3 * i + c]];
-    stbi_image_free(pixels);
     return image;
 }
 
 TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name) {
-    const int length = static_cast<int>(size);
+    OpenedImage opened = openImage(data, size, name);
+    const OIIO::ImageSpec& spec = opened.spec();
     TextureImage texture;
     texture.name = name;
-    int channels = 0;
-    const auto failDecode = [&]() {
-        const char* reason = stbi_failure_reason();
-        fail(name, std::string("cannot decode the image: ") + (reason ? reason : "unknown format"));
-    };
-    if (stbi_is_hdr_from_memory(data, length) || stbi_is_16_bit_from_memory(data, length)) {
-        const bool hdr = stbi_is_hdr_from_memory(data, length);
-        float* pixels = nullptr;
-        if (hdr) {
-            pixels = stbi_loadf_from_memory(data, length, &texture.width, &texture.height, &channels, 4);
-        } else if (stbi_us* wide = stbi_load_16_from_memory(data, length, &texture.width, &texture.height, &channels, 4)) {
-            const size_t n = size_t(texture.width) * texture.height * 4;
-            texture.floats.resize(n / 4);
-            for (size_t i = 0; i < n; ++i) texture.floats[i / 4][int(i % 4)] = wide[i] / 65535.0f;
-            stbi_image_free(wide);
-            return texture;
-        }
-        if (!pixels) failDecode();
-        texture.floats.resize(size_t(texture.width) * texture.height);
-        std::memcpy(texture.floats.data(), pixels, texture.floats.size() * sizeof(glm::vec4));
-        stbi_image_free(pixels);
+    texture.width = spec.width;
+    texture.height = spec.height;
+    const size_t count = size_t(spec.width) * size_t(spec.height);
+    if (spec.format == OIIO::TypeDesc::UINT8) {
+        const std::vector<unsigned char> pixels = readPixels<unsigned char>(opened, OIIO::TypeDesc::UINT8, name);
+        texture.bytes.resize(count);
+        for (size_t i = 0; i < count; ++i)
+            for (int c = 0; c < 4; ++c)
+                texture.bytes[i][c] = channelOf(&pixels[i * size_t(spec.nchannels)], spec.nchannels, c, (unsigned char)255);
         return texture;
     }
-    stbi_uc* pixels = stbi_load_from_memory(data, length, &texture.width, &texture.height, &channels, 4);
-    if (!pixels) failDecode();
-    texture.bytes.resize(size_t(texture.width) * texture.height);
-    std::memcpy(texture.bytes.data(), pixels, texture.bytes.size() * sizeof(glm::u8vec4));
-    stbi_image_free(pixels);
+    // 16-bit and float sources: normalised floats, still undecoded (TextureRef::srgb decides).
+    const std::vector<float> pixels = readPixels<float>(opened, OIIO::TypeFloat, name);
+    texture.floats.resize(count);
+    for (size_t i = 0; i < count; ++i)
+        for (int c = 0; c < 4; ++c) texture.floats[i][c] = channelOf(&pixels[i * size_t(spec.nchannels)], spec.nchannels, c, 1.0f);
     return texture;
 }
 
+std::vector<unsigned char> readImageFile(const std::string& path) {
+    try {
+        return readRegularFile(path, kMaxImageFileBytes);
+    } catch (const FileReadError& e) {
+        throw ImageError(e.what());
+    }
+}
+
 ExrImage readExr(const std::string& path) {
-    requireReadable(path);
-    EXRVersion version;
-    int code = ParseEXRVersionFromFile(&version, path.c_str());
-    if (code != TINYEXR_SUCCESS) fail(path, "not an OpenEXR file (bad magic number or version)");
-    if (version.multipart) fail(path, "multi-part OpenEXR files are not supported");
-
-    EXRHeader header;
-    InitEXRHeader(&header);
-    const char* err = nullptr;
-    code = ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err);
-    if (code != TINYEXR_SUCCESS) fail(path, "cannot read the OpenEXR header: " + takeExrError(err, code));
-    for (int c = 0; c < header.num_channels; ++c)
-        if (header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF)
-            header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
-
-    EXRImage loaded;
-    InitEXRImage(&loaded);
-    code = LoadEXRImageFromFile(&loaded, &header, path.c_str(), &err);
-    if (code != TINYEXR_SUCCESS) {
-        FreeEXRHeader(&header);
-        fail(path, "cannot decode the OpenEXR image: " + takeExrError(err, code));
-    }
-
+    const std::vector<unsigned char> bytes = readImageFile(path);
+    OpenedImage opened = openImage(bytes.data(), bytes.size(), path);
+    if (opened.format != ImageFormat::Exr) fail(path, "not an OpenEXR file");
+    const OIIO::ImageSpec& spec = opened.spec();
+    // Every channel in its own type: the sums are 32-bit unsigned words, which floats would round.
+    std::vector<unsigned char> raw(spec.image_bytes(true));
+    if (!opened.input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, raw.data()))
+        fail(path, "cannot decode the OpenEXR image: " + oiioError(opened.input.get()));
+    std::vector<size_t> offset(size_t(spec.nchannels), 0);
+    for (int c = 1; c < spec.nchannels; ++c) offset[size_t(c)] = offset[size_t(c) - 1] + spec.channelformat(c - 1).size();
+    const size_t pixelBytes = spec.pixel_bytes(true);
+    const auto find = [&](const std::string& name) {
+        for (int c = 0; c < spec.nchannels; ++c)
+            if (spec.channelnames[size_t(c)] == name) return c;
+        return -1;
+    };
+    const auto asFloat = [&](int c, size_t i) {
+        const unsigned char* p = &raw[i * pixelBytes + offset[size_t(c)]];
+        float v = 0.0f;
+        OIIO::convert_type(spec.channelformat(c), p, OIIO::TypeFloat, &v, 1);
+        return v;
+    };
+    int r = find("R"), g = find("G"), b = find("B");
+    if (r < 0 || g < 0 || b < 0) r = g = b = find("Y");
+    if (r < 0) fail(path, "no R, G, B (or Y) channels");
     ExrImage result;
-    std::string problem;
-    if (!loaded.images) problem = "tiled OpenEXR files are not supported";
-    const auto plane = [&](const std::string& name, int type) -> const unsigned char* {
-        for (int c = 0; c < header.num_channels; ++c)
-            if (header.channels[c].name == name && header.requested_pixel_types[c] == type) return loaded.images[c];
-        return nullptr;
-    };
-    const auto channel = [&](const char* name) {
-        return reinterpret_cast<const float*>(plane(name, TINYEXR_PIXELTYPE_FLOAT));
-    };
-    if (problem.empty()) {
-        const float* r = channel("R");
-        const float* g = channel("G");
-        const float* b = channel("B");
-        const float* y = channel("Y");
-        if (!(r && g && b) && y) r = g = b = y;
-        if (!(r && g && b)) problem = "no float or half R, G, B (or Y) channels";
-        else {
-            Image& image = result.image;
-            image.width = loaded.width;
-            image.height = loaded.height;
-            image.pixels.resize(size_t(image.width) * image.height);
-            for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = {r[i], g[i], b[i]};
-            if (const float* n = channel("N")) result.sampleCount.assign(n, n + image.pixels.size());
-            problem = readSampleSums(plane, image.pixels.size(), &result.sampleSums);
-            if (problem.empty()) problem = readSampleRange(header, &result.samples);
-        }
+    Image& image = result.image;
+    image.width = spec.width;
+    image.height = spec.height;
+    const size_t count = size_t(spec.width) * size_t(spec.height);
+    image.pixels.resize(count);
+    for (size_t i = 0; i < count; ++i) image.pixels[i] = {asFloat(r, i), asFloat(g, i), asFloat(b, i)};
+    if (const int n = find("N"); n >= 0) {
+        result.sampleCount.resize(count);
+        for (size_t i = 0; i < count; ++i) result.sampleCount[i] = asFloat(n, i);
     }
-    FreeEXRImage(&loaded);
-    FreeEXRHeader(&header);
-    if (!problem.empty()) fail(path, problem);
+    int words[3][4], found = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int w = 0; w < 4; ++w) {
+            words[c][w] = find(sumChannelName(c, w));
+            if (words[c][w] >= 0 && spec.channelformat(words[c][w]) != OIIO::TypeDesc::UINT32)
+                fail(path, "the sample-sum channel " + sumChannelName(c, w) + " is not 32-bit unsigned");
+            found += words[c][w] >= 0;
+        }
+    if (found != 0 && found != 12) fail(path, "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing");
+    if (found == 12) {
+        result.sampleSums.resize(3 * count);
+        for (size_t i = 0; i < count; ++i)
+            for (int c = 0; c < 3; ++c) {
+                std::array<uint32_t, 4> w{};
+                for (int k = 0; k < 4; ++k)
+                    std::memcpy(&w[size_t(k)], &raw[i * pixelBytes + offset[size_t(words[c][k])]], 4);
+                result.sampleSums[3 * i + size_t(c)] = ExactSum::fromWords(w);
+            }
+    }
+    if (const std::string problem = readSampleRange(spec, &result.samples); !problem.empty()) fail(path, problem);
     return result;
 }
 
 Image readImage(const std::string& path, ChannelEncoding encoding) {
-    const std::vector<unsigned char> bytes = readBytes(path);
-    if (hasExrMagic(bytes)) return readExr(path).image;
+    const std::vector<unsigned char> bytes = readImageFile(path);
     return decodeImage(bytes.data(), bytes.size(), encoding, path);
 }
 
@@ -264,6 +295,28 @@ void writePng(const std::string& path, const Image& image, const DisplayTransfor
     });
 }
 
+std::vector<unsigned char> encodeTexturePng(const TextureImage& texture) {
+    if (texture.width <= 0 || texture.height <= 0 || texture.bytes.size() != size_t(texture.width) * texture.height)
+        fail(texture.name, "cannot encode an empty or float texture as an 8-bit PNG");
+    std::vector<unsigned char> png;
+    const auto append = [](void* out, void* data, int size) {
+        auto* bytes = static_cast<unsigned char*>(data);
+        static_cast<std::vector<unsigned char>*>(out)->insert(static_cast<std::vector<unsigned char>*>(out)->end(), bytes, bytes + size);
+    };
+    if (!stbi_write_png_to_func(append, &png, texture.width, texture.height, 4, &texture.bytes[0].x, texture.width * 4))
+        fail(texture.name, "cannot encode the PNG data");
+    return png;
+}
+
+void writeTexturePng(const std::string& path, const TextureImage& texture) {
+    const std::vector<unsigned char> png = encodeTexturePng(texture);
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+        if (!out.flush()) throw ImageError("cannot write the file");
+    });
+}
+
 void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precision) {
     const Image& image = exr.image;
     const size_t count = size_t(image.width) * image.height;
@@ -271,86 +324,61 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         fail(path, "cannot write an empty or inconsistent image");
     if (!exr.sampleCount.empty() && exr.sampleCount.size() != count)
         fail(path, "the sample-count channel does not match the image size");
+    if (!exr.sampleSums.empty() && exr.sampleSums.size() != 3 * count)
+        fail(path, "the sample sums do not match the image size");
 
-    // Channels in alphabetical order, as OpenEXR readers expect: B, G, (N,) R.
-    std::vector<std::vector<float>> planes(3, std::vector<float>(count));
-    for (size_t i = 0; i < count; ++i) {
-        planes[0][i] = image.pixels[i].b;
-        planes[1][i] = image.pixels[i].g;
-        planes[2][i] = image.pixels[i].r;
-    }
-    std::vector<std::string> names = {"B", "G", "R"};
-    const int colorType = precision == ExrPrecision::Half ? TINYEXR_PIXELTYPE_HALF : TINYEXR_PIXELTYPE_FLOAT;
-    std::vector<int> requested(3, colorType);
+    // R, G, B (half or float), N (float), then the sums' words (32-bit unsigned), interleaved
+    // per pixel in their own types.
+    const OIIO::TypeDesc colour = precision == ExrPrecision::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(image.width, image.height, 3, colour);
+    spec.channelnames = {"R", "G", "B"};
+    spec.channelformats = {colour, colour, colour};
     if (!exr.sampleCount.empty()) {
-        planes.insert(planes.begin() + 2, exr.sampleCount);
-        names.insert(names.begin() + 2, "N");
-        requested.insert(requested.begin() + 2, TINYEXR_PIXELTYPE_FLOAT);
+        spec.channelnames.push_back("N");
+        spec.channelformats.push_back(OIIO::TypeDesc::FLOAT);
     }
-    std::vector<int> inputTypes(planes.size(), TINYEXR_PIXELTYPE_FLOAT);
-    std::vector<unsigned char*> pointers;
-    for (std::vector<float>& p : planes) pointers.push_back(reinterpret_cast<unsigned char*>(p.data()));
-    // After R in the alphabet: sum.B0 ... sum.R3.
-    std::vector<std::vector<uint32_t>> sumPlanes;
-    if (!exr.sampleSums.empty()) {
-        if (exr.sampleSums.size() != 3 * count) fail(path, "the sample sums do not match the image size");
-        for (int c : {2, 1, 0}) {
-            std::vector<std::vector<uint32_t>> words(4, std::vector<uint32_t>(count));
-            for (size_t i = 0; i < count; ++i) {
-                const std::array<uint32_t, 4> w = exr.sampleSums[3 * i + size_t(c)].words();
-                for (size_t k = 0; k < 4; ++k) words[k][i] = w[k];
+    if (!exr.sampleSums.empty())
+        for (int c = 0; c < 3; ++c)
+            for (int w = 0; w < 4; ++w) {
+                spec.channelnames.push_back(sumChannelName(c, w));
+                spec.channelformats.push_back(OIIO::TypeDesc::UINT32);
             }
-            for (int k = 0; k < 4; ++k) {
-                sumPlanes.push_back(std::move(words[size_t(k)]));
-                names.push_back(sumChannelName(c, k));
-                requested.push_back(TINYEXR_PIXELTYPE_UINT);
-                inputTypes.push_back(TINYEXR_PIXELTYPE_UINT);
-            }
-        }
-        for (std::vector<uint32_t>& p : sumPlanes) pointers.push_back(reinterpret_cast<unsigned char*>(p.data()));
-    }
-    const int channels = int(pointers.size());
-    std::vector<EXRChannelInfo> infos(channels);
-    for (int c = 0; c < channels; ++c) {
-        std::memset(&infos[c], 0, sizeof(EXRChannelInfo));
-        std::strncpy(infos[c].name, names[c].c_str(), sizeof(infos[c].name) - 1);
-    }
-
-    EXRImage exrImage;
-    InitEXRImage(&exrImage);
-    exrImage.num_channels = channels;
-    exrImage.images = pointers.data();
-    exrImage.width = image.width;
-    exrImage.height = image.height;
-
-    EXRHeader header;
-    InitEXRHeader(&header);
-    header.num_channels = channels;
-    header.channels = infos.data();
-    header.pixel_types = inputTypes.data();
-    header.requested_pixel_types = requested.data();
-    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
-    int32_t rangeValues[2] = {0, 0};
-    EXRAttribute rangeAttributes[2];
+    spec.nchannels = int(spec.channelnames.size());
+    spec.attribute("compression", "zip");
     if (exr.samples) {
-        rangeValues[0] = exr.samples->first;
-        rangeValues[1] = exr.samples->count;
-        const char* const attributeNames[2] = {kFirstSampleAttribute, kSampleCountAttribute};
-        for (int a = 0; a < 2; ++a) {
-            std::memset(&rangeAttributes[a], 0, sizeof(EXRAttribute));
-            std::strncpy(rangeAttributes[a].name, attributeNames[a], sizeof(rangeAttributes[a].name) - 1);
-            std::strncpy(rangeAttributes[a].type, "int", sizeof(rangeAttributes[a].type) - 1);
-            rangeAttributes[a].value = reinterpret_cast<unsigned char*>(&rangeValues[a]);
-            rangeAttributes[a].size = 4;
-        }
-        header.custom_attributes = rangeAttributes;
-        header.num_custom_attributes = 2;
+        spec.attribute(kFirstSampleAttribute, exr.samples->first);
+        spec.attribute(kSampleCountAttribute, exr.samples->count);
     }
-
+    const size_t pixelBytes = spec.pixel_bytes(true);
+    std::vector<unsigned char> data(count * pixelBytes);
+    for (size_t i = 0; i < count; ++i) {
+        unsigned char* p = &data[i * pixelBytes];
+        const auto put = [&](const void* value, size_t bytes) {
+            std::memcpy(p, value, bytes);
+            p += bytes;
+        };
+        for (int c = 0; c < 3; ++c) {
+            const float v = image.pixels[i][c];
+            if (precision == ExrPrecision::Half) {
+                const half h(v);  // Imath's, through OpenImageIO
+                put(&h, sizeof h);
+            } else {
+                put(&v, sizeof v);
+            }
+        }
+        if (!exr.sampleCount.empty()) put(&exr.sampleCount[i], sizeof(float));
+        if (!exr.sampleSums.empty())
+            for (int c = 0; c < 3; ++c) {
+                const std::array<uint32_t, 4> w = exr.sampleSums[3 * i + size_t(c)].words();
+                put(w.data(), sizeof w);
+            }
+    }
     writeFileAtomically(path, [&](const std::string& tmp) {
-        const char* err = nullptr;
-        const int code = SaveEXRImageToFile(&exrImage, &header, tmp.c_str(), &err);
-        if (code != TINYEXR_SUCCESS) throw ImageError("cannot write the OpenEXR data: " + takeExrError(err, code));
+        // The temporary name has no .exr ending: name the plugin.
+        auto out = OIIO::ImageOutput::create("openexr");
+        if (!out) throw ImageError("cannot write OpenEXR: " + OIIO::geterror());
+        if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeUnknown, data.data()) || !out->close())
+            throw ImageError("cannot write the OpenEXR data: " + out->geterror());
     });
 }
 

@@ -2,6 +2,7 @@
 // Reading and writing woven::Image: PNG/JPEG/HDR/EXR in, PNG (display-ready) and EXR (linear,
 // with a per-pixel sample count so renders of disjoint sample ranges can be merged) out.
 // Every failure throws ImageError naming the file; every write is atomic (atomic_file.h).
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,16 +19,26 @@ struct ImageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What woven reads of an image, checked before any pixel is decoded: images from other people
+// can claim any size. 16384 x 16384 RGBA floats would be 4 GiB; textures and environment maps
+// of 16k on a side with 128 Mpixels and 1 GiB of file cover every real asset.
+constexpr int kMaxImageSide = 32768;
+constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
+constexpr int kMaxImageChannels = 64;
+constexpr size_t kMaxImageFileBytes = size_t(1) << 30;
+
 // How 8- and 16-bit channels are turned into linear floats. Colour textures (baseColor,
 // emissive) are sRGB-encoded; data textures (roughness, normals) are already linear.
 // Float formats (.hdr, .exr) are always linear and ignore this.
 enum class ChannelEncoding { Srgb, Linear };
 
-// Reads .png, .jpg/.jpeg, .hdr (stb_image) or .exr (tinyexr, its R, G, B channels; a file with
-// only Y is read as grey). Grey images are expanded to RGB; alpha is dropped.
+// Reads PNG, JPEG, Radiance HDR or OpenEXR (its R, G, B channels; a file with only Y is read
+// as grey), recognised by their first bytes; any other format is refused by name. Decoding is
+// OpenImageIO's (libpng, libjpeg-turbo, OpenEXR). Grey images are expanded to RGB; alpha is
+// dropped.
 Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncoding::Srgb);
 
-// The same for an encoded PNG/JPEG/HDR image held in memory (a texture embedded in a .glb);
+// The same for an encoded image held in memory (a texture embedded in a .glb);
 // `name` identifies it in error messages.
 Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding,
                   const std::string& name);
@@ -35,6 +46,12 @@ Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encodi
 // A texture (PNG, JPEG, or a float format) as stored, without colour decoding: RGBA, 8-bit
 // sources kept as bytes (see TextureImage). `name` identifies it in error messages.
 TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name);
+
+// An 8-bit texture (TextureImage::bytes, RGBA) encoded as a PNG as it is: no colour transform,
+// since a glTF texture's bytes are already what its use decodes (sRGB colour or linear data).
+// Throws ImageError for a float or empty texture.
+std::vector<unsigned char> encodeTexturePng(const TextureImage& texture);
+void writeTexturePng(const std::string& path, const TextureImage& texture);  // atomic
 
 // Linear radiance to 8-bit display colour: scale by 2^exposure, tone-map, then sRGB-encode.
 // PNG output, the previewer's window (and shaders/display.frag) all go through this.

@@ -64,6 +64,13 @@ struct SheenParams {
     TextureRef roughnessTexture;  // A
 };
 
+// KHR_materials_anisotropy: the GGX lobe rougher along a direction in the tangent plane.
+struct AnisotropyParams {
+    float strength = 0.0f;
+    float rotation = 0.0f;  // radians, counter-clockwise from the tangent towards the bitangent
+    TextureRef texture;     // RG: direction in (tangent, bitangent) space, [0, 1] -> [-1, 1]; B: strength
+};
+
 // KHR_materials_clearcoat: a GGX dielectric coat (IOR 1.5) over the material.
 struct ClearcoatParams {
     float factor = 0.0f;
@@ -110,6 +117,7 @@ struct Material {
     glm::vec3 specularColor{1.0f};
     TextureRef specularColorTexture;  // RGB, sRGB
     SheenParams sheen;
+    AnisotropyParams anisotropy;
     ClearcoatParams clearcoat;
     TransmissionParams transmission;
 };

@@ -6,7 +6,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "file_reading.h"
 #include "gltf_loader.h"
+#include "untrusted_json.h"
 #include "image_io.h"
 #include "woven_assignment.h"
 #include "scene_camera.h"
@@ -17,12 +19,14 @@ namespace woven {
 
 namespace {
 
+constexpr size_t kMaxSceneFileBytes = size_t(64) << 20;  // far beyond any hand-written scene file
+
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
 class SceneFileReader {
 public:
-    explicit SceneFileReader(std::string path) : path_(std::move(path)) {}
+    SceneFileReader(std::string path, const LoadOptions& options) : path_(std::move(path)), options_(options) {}
 
     SceneDescription read() {
         const json root = parse();
@@ -30,7 +34,7 @@ public:
         if (!root.contains("gltf")) fail("gltf", "is missing (the glTF file to load)");
         SceneDescription scene;
         try {
-            scene = loadGltf(resolve(string(root["gltf"], "gltf")));
+            scene = loadGltf(resolve(string(root["gltf"], "gltf")), options_);
         } catch (const SceneError& e) {
             fail("gltf", e.what());
         }
@@ -50,12 +54,13 @@ private:
     }
 
     json parse() const {
-        std::ifstream in(path_);
-        if (!in) fail("", "cannot open the file (missing or unreadable)");
         try {
-            return json::parse(in);
-        } catch (const json::exception& e) {
-            fail("", std::string("not valid JSON: ") + e.what());
+            const std::vector<unsigned char> bytes = readRegularFile(path_, kMaxSceneFileBytes);
+            return parseUntrustedJson(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+        } catch (const FileReadError& e) {
+            throw SceneError(e.what());
+        } catch (const std::invalid_argument& e) {
+            fail("", e.what());
         }
     }
 
@@ -211,10 +216,13 @@ private:
     }
 
     std::string path_;
+    LoadOptions options_;
 };
 
 }  // namespace
 
-SceneDescription loadSceneFile(const std::string& path) { return SceneFileReader(path).read(); }
+SceneDescription loadSceneFile(const std::string& path, const LoadOptions& options) {
+    return SceneFileReader(path, options).read();
+}
 
 }  // namespace woven

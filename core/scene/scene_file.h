@@ -5,9 +5,10 @@
 #include <string>
 
 #include "scene_description.h"
+#include "scene_loader.h"
 
 namespace woven {
 
-SceneDescription loadSceneFile(const std::string& path);
+SceneDescription loadSceneFile(const std::string& path, const LoadOptions& options = {});
 
 }  // namespace woven

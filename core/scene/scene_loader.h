@@ -14,6 +14,14 @@ struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-SceneDescription loadScene(const std::string& path);
+// What a scene may read besides its own file.
+struct LoadOptions {
+    // A glTF file's buffers and images come from its own folder or below it unless this is set:
+    // a URI such as "../../.ssh/id_rsa" or an absolute path could otherwise read any file the
+    // user can into a render (woven render --allow-any-path).
+    bool anyPath = false;
+};
+
+SceneDescription loadScene(const std::string& path, const LoadOptions& options = {});
 
 }  // namespace woven

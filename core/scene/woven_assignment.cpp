@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "material_json.h"
+#include "untrusted_json.h"
 #include "scene_loader.h"
 #include "uv_scale.h"
 
@@ -183,9 +184,9 @@ WovenAssignment parseWovenOption(const SceneDescription& scene, const std::strin
     a.target = option.substr(0, eq);
     a.where = "--woven " + a.target;
     try {
-        a.params = nlohmann::json::parse(option.substr(eq + 1));
-    } catch (const std::exception& e) {
-        throw SceneError(scene.source + ": " + a.where + ": not valid JSON: " + e.what());
+        a.params = parseUntrustedJson(std::string_view(option).substr(eq + 1));
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(scene.source + ": " + a.where + ": " + e.what());
     }
     return a;
 }

@@ -31,6 +31,7 @@ inline GltfBxdfInputs toInputs(const Material& m) {
     in.baseColor = glm::vec3(m.baseColor);
     in.metallic = float(m.metallic);
     in.roughness = float(m.roughness);
+    in.anisotropy = float(m.anisotropy);
     in.specularF0 = glm::vec3(gltfref::dielectricF0(m));
     in.specularF90 = float(gltfref::dielectricF90(m));
     in.transmission = float(m.transmission);
@@ -52,7 +53,7 @@ inline std::string describe(const Material& m) {
     std::ostringstream s;
     s.precision(9);
     s << "base (" << m.baseColor.r << " " << m.baseColor.g << " " << m.baseColor.b << ") metallic " << m.metallic
-      << " roughness " << m.roughness << " ior " << m.ior << " specular " << m.specular << " specColor ("
+      << " roughness " << m.roughness << " anisotropy " << m.anisotropy << " ior " << m.ior << " specular " << m.specular << " specColor ("
       << m.specularColor.r << " " << m.specularColor.g << " " << m.specularColor.b << ") T " << m.transmission
       << " transmittance (" << m.transmittance.r << " " << m.transmittance.g << " " << m.transmittance.b
       << ") sheen (" << m.sheenColor.r << " " << m.sheenColor.g << " " << m.sheenColor.b << ") r "
@@ -100,6 +101,7 @@ inline Material randomMaterial(TestRng& rng) {
     m.baseColor = rng.color();
     m.metallic = rng.chance(0.3) ? (rng.chance(0.5) ? 0.0 : 1.0) : rng.uniform(0.0, 1.0);
     m.roughness = rng.chance(0.1) ? 0.0 : rng.uniform(0.0, 1.0);
+    if (rng.chance(0.3)) m.anisotropy = rng.chance(0.2) ? 1.0 : rng.uniform(0.0, 1.0);
     if (rng.chance(0.5)) {
         m.ior = rng.chance(0.2) ? 1.0 : rng.uniform(1.0, 3.0);
         m.specular = rng.uniform(0.0, 1.0);
@@ -151,8 +153,8 @@ inline double termSize(const Material& m, const glm::dvec3& wo, const glm::dvec3
     const glm::dvec3 v = glm::normalize(wo), l = glm::normalize(wi);
     const glm::dvec3 lm = l.z > 0.0 ? l : mirror(l);
     const glm::dvec3 h = glm::normalize(v + lm);
-    const double a = gltfref::alphaOf(m.roughness);
-    return 1.0 / gltfref::kPi + gltfref::ggxD(a, h.z) * gltfref::ggxV(a, lm.z, v.z, 1, 1) +
+    const double a = gltfref::alphaOf(m.roughness), at = gltfref::anisotropicAlphaOf(m.roughness, m.anisotropy);
+    return 1.0 / gltfref::kPi + gltfref::ggxDAnisotropic(at, a, h) * gltfref::ggxVAnisotropic(at, a, v, lm) +
            gltfref::sheenBrdf(m.sheenRoughness, v, lm) + coatTermSize(m, v, lm);
 }
 

@@ -22,7 +22,7 @@
 //
 // Significance. Each case uses its own fixed seed; the suite should wrongly fail with
 // probability alpha = 1 % if the seeds were drawn afresh: Sidak's alpha_i = 1 - (1 - alpha)^(1/M)
-// over the M independent tests (M = 36 here, alpha_i = 2.8e-4).
+// over the M independent tests (M = 42 here, alpha_i = 2.4e-4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,6 +66,8 @@ std::vector<Case> cases() {
     add("mirror dielectric (alpha 1e-3)", [](Material& m) { m.roughness = 0.0; m.ior = 1.8; });
     add("black dielectric", [](Material& m) { m.baseColor = glm::dvec3(0.0); m.roughness = 0.4; });
     add("metal", [](Material& m) { m.metallic = 1.0; m.roughness = 0.3; m.baseColor = {0.9, 0.6, 0.3}; });
+    add("anisotropic dielectric", [](Material& m) { m.roughness = 0.3; m.anisotropy = 0.7; });
+    add("anisotropic metal (sharp across)", [](Material& m) { m.metallic = 1.0; m.roughness = 0.05; m.anisotropy = 0.9; });
     add("sheen", [](Material& m) { m.sheenColor = {1.0, 0.8, 0.9}; m.sheenRoughness = 0.3; m.baseColor = {0.2, 0.1, 0.1}; });
     add("clearcoat (sharp)", [](Material& m) {
         m.roughness = 0.7;
@@ -102,15 +104,16 @@ std::vector<Case> cases() {
 
 const double kThetaDegrees[] = {10.0, 50.0, 85.0};
 
-// The sharpest GGX lobe of a material, which sets the half-vector domain's scale.
-double sharpestAlpha(const Material& m) {
-    double a = gltfref::alphaOf(m.roughness);
-    if (m.clearcoat > 0.0) a = std::min(a, gltfref::alphaOf(m.clearcoatRoughness));
+// The sharpest GGX lobe of a material along x and along y (anisotropy makes the base rougher
+// along x), which set the half-vector domain's scales.
+glm::dvec2 sharpestAlpha(const Material& m) {
+    glm::dvec2 a(gltfref::anisotropicAlphaOf(m.roughness, m.anisotropy), gltfref::alphaOf(m.roughness));
+    if (m.clearcoat > 0.0) a = glm::min(a, glm::dvec2(gltfref::alphaOf(m.clearcoatRoughness)));
     return a;
 }
 // (cos theta, phi) resolves lobes with alpha >= 0.09 (a few cells wide); sharper ones need the
 // half-vector domain.
-bool usesSphericalDomain(const Material& m) { return sharpestAlpha(m) >= 0.09; }
+bool usesSphericalDomain(const Material& m) { return std::min(sharpestAlpha(m).x, sharpestAlpha(m).y) >= 0.09; }
 
 int countTests() { return int(cases().size() * std::size(kThetaDegrees)); }
 const double kSignificance = 1.0 - std::pow(1.0 - 0.01, 1.0 / countTests());
@@ -239,8 +242,8 @@ TEST(GltfChiSquare, SampleFollowsPdf) {
             if (bxdf.transmits()) {
                 EXPECT_GT(s.lower.size(), size_t(kSamples / 50)) << c.name;
             }
-            const double scale = 1.0 / sharpestAlpha(c.m);
-            const auto domain = usesSphericalDomain(c.m) ? sphericalDomain() : halfVectorDomain(glm::dvec3(wo), scale, scale);
+            const glm::dvec2 scale = 1.0 / sharpestAlpha(c.m);
+            const auto domain = usesSphericalDomain(c.m) ? sphericalDomain() : halfVectorDomain(glm::dvec3(wo), scale.x, scale.y);
             const auto r = test(*domain, bxdf, wo, s);
             EXPECT_TRUE(r.passed) << c.name << " theta " << degrees << (usesSphericalDomain(c.m) ? " (spherical" : " (half-vector")
                                   << " domain): " << r.message;

@@ -96,6 +96,52 @@ TEST(GltfMaterial, NormalMapTiltsTheNormalInTheTangentFrame) {
 // A normal map tilted so far that the mirror direction of a grazing view falls below the
 // surface: the BSDF's normal is tilted back until the mirror direction stays just above it, so
 // the highlight does not turn black (as in Cycles).
+TEST(GltfMaterial, AnisotropyDirectionFromTextureAndRotationInTheTangentFrame) {
+    // Texture direction (0, 1) (along the bitangent), strength 0.5 in blue; rotated by 90 degrees
+    // it points along -tangent. Without a texture the rotation turns the tangent.
+    const std::vector<TextureImage> textures = {oneTexel({128, 255, 128, 255})};
+    Material m;
+    m.anisotropy.strength = 0.8f;
+    m.anisotropy.texture.image = 0;
+    const GltfMaterial textured(m, textures);
+    EXPECT_NEAR(textured.inputs(point()).anisotropy, 0.8f * 128 / 255.0f, 1e-6f);
+    glm::vec3 d = textured.anisotropyDirection(planeHit(1.0f));
+    EXPECT_NEAR(d.x, 0.0f, 1e-2f);
+    EXPECT_NEAR(d.y, 1.0f, 1e-4f);
+    // Mirrored UVs turn the bitangent over, and the direction with it.
+    EXPECT_NEAR(textured.anisotropyDirection(planeHit(-1.0f)).y, -1.0f, 1e-4f);
+    m.anisotropy.rotation = 0.5f * 3.14159265f;
+    d = GltfMaterial(m, textures).anisotropyDirection(planeHit(1.0f));
+    EXPECT_NEAR(d.x, -1.0f, 1e-4f);
+    EXPECT_NEAR(d.y, 0.0f, 1e-2f);
+
+    Material plain;
+    plain.anisotropy.strength = 0.5f;
+    plain.anisotropy.rotation = 0.3f;
+    const GltfMaterial rotated(plain, {});
+    EXPECT_FLOAT_EQ(rotated.inputs(point()).anisotropy, 0.5f);
+    d = rotated.anisotropyDirection(planeHit(1.0f));
+    EXPECT_NEAR(d.x, std::cos(0.3f), 1e-6f);
+    EXPECT_NEAR(d.y, std::sin(0.3f), 1e-6f);
+}
+
+TEST(GltfMaterial, AnisotropicHighlightStretchesAlongItsDirection) {
+    // A smooth metal made rough along x: seen from above with light from the mirror direction
+    // tilted by 0.3 rad along x the lobe is still bright, tilted as much along y it is dark.
+    Material m;
+    m.metallic = 1.0f;
+    m.roughness = 0.1f;
+    m.anisotropy.strength = 0.8f;
+    const GltfMaterial g(m, {});
+    const SurfaceHit hit = planeHit(1.0f);
+    const glm::vec3 wo(0.0f, 0.0f, 1.0f);
+    const auto bsdf = g.bsdf(hit, wo);
+    ASSERT_TRUE(bsdf);
+    const float alongX = bsdf->eval(wo, glm::normalize(glm::vec3(std::sin(0.3f), 0.0f, std::cos(0.3f)))).g;
+    const float alongY = bsdf->eval(wo, glm::normalize(glm::vec3(0.0f, std::sin(0.3f), std::cos(0.3f)))).g;
+    EXPECT_GT(alongX, 100.0f * alongY);
+}
+
 TEST(GltfMaterial, NormalMapNeverSendsTheMirrorDirectionBelowTheSurface) {
     const auto encode = [](glm::vec3 v) { return glm::u8vec4(glm::round((v + 1.0f) * 0.5f * 255.0f), 255); };
     Material m;

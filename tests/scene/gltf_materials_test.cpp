@@ -96,6 +96,8 @@ TEST(GltfMaterialInputs, ExtensionsAreRead) {
            {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.9}, {"clearcoatRoughnessFactor", 0.1},
                                         {"clearcoatNormalTexture", {{"index", 0}, {"scale", 2}}}}},
            {"KHR_materials_transmission", {{"transmissionFactor", 0.8}}},
+           {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.7}, {"anisotropyRotation", 1.2},
+                                         {"anisotropyTexture", {{"index", 0}}}}},
            {"KHR_materials_volume", {{"thicknessFactor", 0.02}, {"attenuationDistance", 0.5},
                                      {"attenuationColor", {0.9, 0.5, 0.1}}}},
            {"KHR_materials_emissive_strength", {{"emissiveStrength", 3}}}}},
@@ -112,6 +114,10 @@ TEST(GltfMaterialInputs, ExtensionsAreRead) {
     EXPECT_FLOAT_EQ(m.clearcoat.roughness, 0.1f);
     EXPECT_EQ(m.clearcoat.normalTexture.scale, 2.0f);
     EXPECT_FLOAT_EQ(m.transmission.factor, 0.8f);
+    EXPECT_FLOAT_EQ(m.anisotropy.strength, 0.7f);
+    EXPECT_FLOAT_EQ(m.anisotropy.rotation, 1.2f);
+    EXPECT_EQ(m.anisotropy.texture.image, 0);
+    EXPECT_FALSE(m.anisotropy.texture.srgb);  // directions and strength are data
     EXPECT_FLOAT_EQ(m.transmission.thickness, 0.02f);
     EXPECT_FLOAT_EQ(m.transmission.attenuationDistance, 0.5f);
     expectNear(m.transmission.attenuationColor, {0.9f, 0.5f, 0.1f});
@@ -193,11 +199,12 @@ TEST(GltfExtensions, UnsupportedOnesAreNamedRequiredOnesRefused) {
     EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("ignores the optional extension KHR_materials_iridescence")));
     EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("KHR_materials_volume: rendered thin-walled")));
     TexturedFile g;
-    g.b.useExtension("KHR_materials_anisotropy", true);
-    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension KHR_materials_anisotropy, which woven does not support"));
+    g.b.useExtension("KHR_materials_iridescence", true);
+    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension KHR_materials_iridescence, which woven does not support"));
     // The extensions woven renders can be required.
     TexturedFile h;
-    for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit"})
+    for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit",
+                          "KHR_materials_anisotropy"})
         h.b.useExtension(e, true);
     EXPECT_NO_THROW(h.load(json::object()));
 }

@@ -1,0 +1,134 @@
+// `woven bake SCENE -o DIR`: each woven material's glTF textures (and mip levels) as PNG files;
+// `woven export SCENE -o OUT.glb`: the scene as a standard glTF file, woven materials baked,
+// with --report the bake's error against the model (docs/EXPORT.md).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "bake_report.h"
+#include "commands.h"
+#include "flat_cloth.h"
+#include "gltf_writer.h"
+#include "image_io.h"
+#include "scene_camera.h"
+#include "scene_export.h"
+#include "scene_loader.h"
+#include "woven_assignment.h"
+
+namespace woven {
+
+namespace {
+
+struct ExportCommand {
+    std::string scene, out;
+    std::vector<std::string> woven;  // TARGET=JSON
+    ExportOptions options;
+    bool noSheen = false, isotropic = false;
+    bool report = false, mips = false;
+    ReportOptions reportOptions;
+};
+
+// The scene with the command line's --woven edits; no default lighting (glTF has no place for it).
+SceneDescription loadWithEdits(const ExportCommand& o) {
+    SceneDescription scene = loadScene(o.scene);
+    std::vector<WovenAssignment> assignments;
+    for (const std::string& option : o.woven) assignments.push_back(parseWovenOption(scene, option));
+    if (!assignments.empty()) assignWoven(scene, assignments);
+    return scene;
+}
+
+void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
+    cmd.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven first (as woven render's --woven)");
+    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(CLI::Range(4, 16384));
+    cmd.add_option("--repeats", o.options.bake.repeats, "weave repeats each texture holds along u and v (default 1)")
+        ->check(CLI::Range(1, 1024));
+    cmd.add_flag("--no-sheen", o.noSheen, "fit no KHR_materials_sheen layer");
+    cmd.add_flag("--isotropic", o.isotropic,
+                 "no KHR_materials_anisotropy: one roughness a texel, for renderers that ignore the extension (Blender 3.4)");
+}
+
+// "Cloth [mesh:Sofa]" -> "Cloth__mesh_Sofa_": a file name from a material name.
+std::string fileStem(const std::string& name) {
+    std::string s;
+    for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+    return s.empty() ? "material" : s;
+}
+
+void runBake(ExportCommand o) {
+    namespace fs = std::filesystem;
+    o.options.bake.sheen = !o.noSheen;
+    o.options.bake.anisotropy = !o.isotropic;
+    if (!fs::is_directory(o.out)) throw ExportError(o.out + ": no such folder (create it first)");
+    const SceneDescription scene = loadWithEdits(o);
+    std::cerr << "bake: baking the woven materials of " << o.scene << "\n";
+    std::vector<MaterialBake> bakes;
+    bakedScene(scene, o.options, &bakes);
+    for (const MaterialBake& b : bakes) {
+        const Material& original = scene.materials[size_t(b.material)];
+        const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
+        for (int map = 0; map < BakedMaterial::kMapCount; ++map) {
+            writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + ".png", b.baked.textures[size_t(map)]);
+            if (!o.mips) continue;
+            for (size_t level = 0; level < b.baked.mipLevels[size_t(map)].size(); ++level)
+                writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + "_mip" + std::to_string(level + 1) + ".png",
+                                b.baked.mipLevels[size_t(map)][level]);
+        }
+        // A square of one texture tile in the material, for any glTF viewer.
+        SceneDescription square;
+        square.source = o.scene;
+        const Mesh m = flatCloth(glm::vec2(b.baked.uvSize), fileStem(original.name));
+        square.meshes.push_back(m);
+        square.materials.push_back(bakedMaterial(original, b.baked, 0));
+        square.textures = b.baked.textures;
+        std::vector<std::string> warnings;
+        writeGltf(stem + ".gltf", square, sceneCamera(square), warnings);
+        std::cout << "material '" << original.name << "': " << b.baked.textures[0].width << "x" << b.baked.textures[0].height
+                  << " texels for " << b.baked.threads.x * o.options.bake.repeats << "x" << b.baked.threads.y * o.options.bake.repeats
+                  << " threads (" << b.baked.uvSize.x << " x " << b.baked.uvSize.y << " in uv), far-field error "
+                  << b.baked.farFieldError << ": " << stem << "_*.png, " << stem << ".gltf\n";
+        for (const std::string& note : b.baked.notes) std::cerr << "note: material '" << original.name << "': " << note << "\n";
+    }
+}
+
+void runExport(ExportCommand o) {
+    o.options.bake.sheen = !o.noSheen;
+    o.options.bake.anisotropy = !o.isotropic;
+    if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
+        throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
+    const SceneDescription scene = loadWithEdits(o);
+    std::cerr << "export: baking the woven materials of " << o.scene << "\n";
+    std::vector<MaterialBake> bakes;
+    for (const std::string& w : exportScene(scene, o.out, o.options, &bakes)) std::cerr << "warning: " << o.out << ": " << w << "\n";
+    std::cerr << "wrote " << o.out << "\n";
+    if (!o.report) return;
+    o.reportOptions.imagePrefix = std::filesystem::path(o.out).stem().string() + "_";
+    for (const MaterialBake& b : bakes) {
+        std::cerr << "export: rendering the model and the bake of '" << scene.materials[size_t(b.material)].name << "'\n";
+        std::cout << formatReport(reportBake(scene.materials[size_t(b.material)], b.baked, o.reportOptions), o.reportOptions);
+    }
+}
+
+}  // namespace
+
+void addExportCommands(CLI::App& app) {
+    auto e = std::make_shared<ExportCommand>();
+    CLI::App* cmd = app.add_subcommand("export", "Write a scene as a standard glTF file, each woven material baked to textures");
+    cmd->add_option("scene", e->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    cmd->add_option("-o,--out", e->out, "the glTF file to write: .glb (binary) or .gltf (images embedded)")->required();
+    addBakeOptions(*cmd, *e);
+    cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
+    cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
+    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(CLI::Range(1, 1 << 16));
+    cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder (OUT_MATERIAL_near_model.png, ...)");
+    cmd->callback([e] { runExport(*e); });
+
+    auto b = std::make_shared<ExportCommand>();
+    CLI::App* bake = app.add_subcommand("bake", "Bake each woven material of a scene to glTF textures (PNG) and a sample .gltf");
+    bake->add_option("scene", b->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    bake->add_option("-o,--out", b->out, "the folder to write into")->required();
+    addBakeOptions(*bake, *b);
+    bake->add_flag("--mips", b->mips, "also write every mip level, fitted in the model (NAME_MAP_mipN.png)");
+    bake->callback([b] { runBake(*b); });
+}
+
+}  // namespace woven

@@ -1,0 +1,20 @@
+#pragma once
+// Parsing JSON that someone else wrote (glTF files, scene files, material files, bsdf-eval's
+// stdin). nlohmann::json parses, destroys and prints nested values by recursion, and tinygltf
+// walks them the same way, so a file nested 20,000 deep overflows the stack: the depth is found
+// first by a scan that never recurses, and refused beyond kMaxJsonDepth.
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+namespace woven {
+
+// Far deeper than any glTF, scene file or material needs (glTF's own nesting is under 10).
+constexpr size_t kMaxJsonDepth = 256;
+
+// The largest depth of [ and { outside strings (malformed text is left to the parser).
+size_t jsonDepth(std::string_view text);
+
+// Throws std::invalid_argument saying what is wrong: the depth, or the parser's message.
+nlohmann::json parseUntrustedJson(std::string_view text);
+
+}  // namespace woven

@@ -1,0 +1,141 @@
+// `woven export` and `woven bake` as a user runs them: the exported satin of assets/ and the
+// bake's sample file pass Khronos's glTF validator (gltf-transform from npm; skipped, saying how to
+// get it, where it is not installed), and bad input gets a clear message and leaves no file.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "../common/run_woven.h"
+#include "gltf_loader.h"
+#include "gltf_writer.h"
+#include "scene_camera.h"
+#include "temp_dir.h"
+
+namespace woven {
+namespace {
+
+using test::runWoven;
+using test::TempDir;
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+// The validator's path: $GLTF_TRANSFORM, else what CMake found; empty when neither runs.
+std::string validator() {
+    const char* env = std::getenv("GLTF_TRANSFORM");
+    const std::string path = env && *env ? env : GLTF_TRANSFORM;
+    return !path.empty() && ::access(path.c_str(), X_OK) == 0 ? path : "";
+}
+
+struct Validation {
+    int errors = 0, warnings = 0;
+    std::string report;
+};
+
+// Runs gltf-transform's validate (the Khronos glTF-Validator) on `file` and counts its issues
+// by severity (0 error, 1 warning, 2 info, 3 hint; CSV: code,message,severity,pointer).
+Validation validate(const std::string& file) {
+    Validation v;
+    const std::string command = "timeout 120 " + quoted(validator()) + " validate " + quoted(file) + " --format csv 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    char buffer[4096];
+    size_t n;
+    while (pipe && (n = fread(buffer, 1, sizeof buffer, pipe)) > 0) v.report.append(buffer, n);
+    if (pipe) pclose(pipe);
+    std::istringstream lines(v.report);
+    for (std::string line; std::getline(lines, line);) {
+        // The message may hold commas: severity is the field before the last.
+        const size_t last = line.rfind(','), before = last == std::string::npos || last == 0 ? std::string::npos : line.rfind(',', last - 1);
+        if (before == std::string::npos) continue;
+        const std::string severity = line.substr(before + 1, last - before - 1);
+        v.errors += severity == "0";
+        v.warnings += severity == "1";
+    }
+    return v;
+}
+
+#define REQUIRE_VALIDATOR()                                                                                       \
+    if (validator().empty())                                                                                      \
+    GTEST_SKIP() << "Khronos's glTF validator is not installed, so the exported files were not validated: "     \
+                    "npm install --prefix ~ @gltf-transform/cli (or set GLTF_TRANSFORM to its gltf-transform)"
+
+TEST(ExportCommand, TheExportedSatinPassesKhronossValidator) {
+    REQUIRE_VALIDATOR();
+    TempDir dir;
+    const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json";
+    for (const std::string& options : {std::string("-o ") + quoted(dir.file("satin.glb")),
+                                       "-o " + quoted(dir.file("satin.gltf")) + " --keep-woven --size 256"}) {
+        SCOPED_TRACE(options);
+        const auto r = runWoven("export " + quoted(scene) + " " + options + " 2>&1");
+        ASSERT_EQ(r.exitCode, 0) << r.out;
+    }
+    for (const char* name : {"satin.glb", "satin.gltf"}) {
+        const Validation v = validate(dir.file(name));
+        std::printf("[ validator ] %s: %d errors, %d warnings\n", name, v.errors, v.warnings);
+        EXPECT_NE(v.report.find("code,message,severity,pointer"), std::string::npos) << "the validator did not run:\n" << v.report;
+        EXPECT_EQ(v.errors, 0) << v.report;
+        EXPECT_EQ(v.warnings, 0) << v.report;
+    }
+}
+
+TEST(ExportCommand, BakeWritesTheMapsAndASampleFileOtherToolsRead) {
+    TempDir dir;
+    const auto r = runWoven("bake " + quoted(std::string(WOVEN_ASSETS_DIR) + "/paper_c_twill.json") + " -o " +
+                            quoted(dir.path().string()) + " --size 128 --mips 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    for (const char* map : {"base_color", "normal", "metallic_roughness", "anisotropy"}) {
+        EXPECT_TRUE(std::filesystem::exists(dir.file(std::string("Cloth_") + map + ".png"))) << map;
+        EXPECT_TRUE(std::filesystem::exists(dir.file(std::string("Cloth_") + map + "_mip1.png"))) << map;
+    }
+    const SceneDescription sample = loadGltf(dir.file("Cloth.gltf"));
+    ASSERT_EQ(sample.meshes.size(), 1u);
+    EXPECT_TRUE(sample.materials.at(0).anisotropy.texture);
+    if (validator().empty()) return;
+    const Validation v = validate(dir.file("Cloth.gltf"));
+    EXPECT_EQ(v.errors, 0) << v.report;
+    EXPECT_EQ(v.warnings, 0) << v.report;
+}
+
+TEST(ExportCommand, ASceneWithNothingWovenGetsAClearMessageAndNoFile) {
+    TempDir dir;
+    SceneDescription plain;
+    Mesh quad;
+    quad.name = quad.meshName = "Quad";
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    quad.triangles = {{0, 1, 2}};
+    plain.meshes = {quad};
+    std::vector<std::string> warnings;
+    writeGltf(dir.file("plain.glb"), plain, sceneCamera(plain), warnings);
+    const auto r = runWoven("export " + quoted(dir.file("plain.glb")) + " -o " + quoted(dir.file("out.glb")) + " 2>&1");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.out.find(dir.file("plain.glb") + ": no part of the scene is woven"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--woven TARGET=JSON"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.glb")));
+    // Made woven on the command line, it exports.
+    const auto made = runWoven("export " + quoted(dir.file("plain.glb")) + " --woven '*={\"repeat\": [40, 40]}' -o " +
+                               quoted(dir.file("out.glb")) + " --size 64 2>&1");
+    EXPECT_EQ(made.exitCode, 0) << made.out;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("out.glb")));
+}
+
+TEST(ExportCommand, AnUnwritablePathGetsAClearMessageAndNoFile) {
+    TempDir dir;
+    const std::string scene = quoted(std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json");
+    const auto missing = runWoven("export " + scene + " -o " + quoted(dir.file("missing/out.glb")) + " 2>&1");
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.out.find(dir.file("missing/out.glb") + ": cannot write there: the folder"), std::string::npos) << missing.out;
+    const auto extension = runWoven("export " + scene + " -o " + quoted(dir.file("out.usd")) + " 2>&1");
+    EXPECT_EQ(extension.exitCode, 1);
+    EXPECT_NE(extension.out.find("must end in .glb or .gltf"), std::string::npos) << extension.out;
+    const auto bake = runWoven("bake " + scene + " -o " + quoted(dir.file("nowhere")) + " 2>&1");
+    EXPECT_EQ(bake.exitCode, 1);
+    EXPECT_NE(bake.out.find(dir.file("nowhere") + ": no such folder"), std::string::npos) << bake.out;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+}  // namespace
+}  // namespace woven

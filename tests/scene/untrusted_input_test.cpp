@@ -1,0 +1,152 @@
+// Files made by someone else, as they come: nested too deep, pointing outside their folder, at
+// a FIFO or a directory, images of formats woven does not read, empty, truncated or claiming
+// sizes they do not hold. Each gets a message naming the file and the problem, and none
+// crashes, hangs or allocates what it claims.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <fstream>
+#include <stb_image_write.h>
+
+#include "gltf_builder.h"
+#include "image_io.h"
+#include "scene_loader.h"
+#include "temp_dir.h"
+#include "untrusted_json.h"
+
+namespace woven {
+namespace {
+
+using test::GltfBuilder;
+using test::TempDir;
+using ::testing::HasSubstr;
+using json = nlohmann::json;
+
+std::string loadError(const std::string& path, const LoadOptions& options = {}) {
+    try {
+        loadScene(path, options);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string nested(size_t depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+TEST(UntrustedJson, DepthIsFoundWithoutRecursionAndRefused) {
+    EXPECT_EQ(jsonDepth(R"({"a": [1, {"b": "[[[{"}]})"), 3u);  // brackets in strings do not count
+    EXPECT_EQ(jsonDepth(R"(["\"[", [2]])"), 2u);                 // nor after an escaped quote
+    EXPECT_NO_THROW(parseUntrustedJson(nested(kMaxJsonDepth)));
+    EXPECT_THROW(parseUntrustedJson(nested(80000)), std::invalid_argument);
+}
+
+TEST(UntrustedGltf, ExtrasNestedDeepAreRefusedBeforeParsing) {
+    TempDir dir;
+    GltfBuilder b;
+    b.setScene({b.addNode(json::object())});
+    b.writeGltf(dir.file("deep.gltf"));
+    std::ifstream in(dir.file("deep.gltf"));
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.insert(text.rfind('}'), ", \"extras\": " + nested(20000));
+    std::ofstream(dir.file("deep.gltf")) << text;
+    EXPECT_THAT(loadError(dir.file("deep.gltf")), HasSubstr("deep.gltf: JSON nested 20001 deep"));
+}
+
+TEST(UntrustedSceneFile, NestingAndNonFilesAreRefused) {
+    TempDir dir;
+    std::ofstream(dir.file("deep.json")) << "{\"gltf\": \"x.gltf\", \"render\": " << nested(5000) << "}";
+    EXPECT_THAT(loadError(dir.file("deep.json")), HasSubstr("deep.json: JSON nested 5001 deep"));
+    std::filesystem::create_directory(dir.file("folder.json"));
+    EXPECT_THAT(loadError(dir.file("folder.json")), HasSubstr("folder.json: is a directory"));
+}
+
+// A triangle whose buffer is the file `uri`.
+void writeWithBuffer(const std::string& path, const std::string& uri) {
+    GltfBuilder b;
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}}})}})});
+    b.writeGltf(path);
+    std::ifstream in(path);
+    json doc = json::parse(in);
+    doc["buffers"][0]["uri"] = uri;
+    std::ofstream(path) << doc.dump();
+}
+
+TEST(UntrustedGltf, BuffersComeFromTheFilesFolderUnlessAllowed) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.file("assets"));
+    writeWithBuffer(dir.file("assets/a.gltf"), "a.bin");
+    const std::string bin = dir.file("assets/a.bin");
+    std::filesystem::copy_file(bin, dir.file("outside.bin"));
+    EXPECT_EQ(loadError(dir.file("assets/a.gltf")), "(no error)");
+    // The same buffer one folder up, by a relative and by an absolute path.
+    writeWithBuffer(dir.file("assets/up.gltf"), "../outside.bin");
+    EXPECT_THAT(loadError(dir.file("assets/up.gltf")), HasSubstr("is outside the glTF file's folder"));
+    EXPECT_EQ(loadError(dir.file("assets/up.gltf"), LoadOptions{true}), "(no error)");
+    // An absolute path is not read either (tinygltf looks for it below the file's folder).
+    writeWithBuffer(dir.file("assets/abs.gltf"), dir.file("outside.bin"));
+    EXPECT_THAT(loadError(dir.file("assets/abs.gltf")), HasSubstr("abs.gltf: cannot read glTF"));
+}
+
+TEST(UntrustedGltf, BuffersThatAreNotFilesAreRefusedAtOnce) {
+    TempDir dir;
+    writeWithBuffer(dir.file("dot.gltf"), ".");
+    EXPECT_THAT(loadError(dir.file("dot.gltf")), HasSubstr("dot.gltf"));
+    // A FIFO with no writer: reading it would block for ever.
+    ASSERT_EQ(mkfifo(dir.file("pipe.bin").c_str(), 0600), 0);
+    writeWithBuffer(dir.file("fifo.gltf"), "pipe.bin");
+    EXPECT_THAT(loadError(dir.file("fifo.gltf")), HasSubstr("is not a regular file"));
+}
+
+TEST(UntrustedGltf, AnAccessorClaimingMoreThanItsBufferHoldsIsRefusedBeforeAllocating) {
+    TempDir dir;
+    writeWithBuffer(dir.file("big.gltf"), "big.bin");
+    std::filesystem::copy_file(dir.file("big.bin"), dir.file("big.bin.keep"));
+    std::ifstream in(dir.file("big.gltf"));
+    json doc = json::parse(in);
+    doc["accessors"][0]["count"] = 178956970;  // 2 GiB of vec3 floats, in a 36-byte buffer
+    doc["accessors"][0].erase("min");
+    doc["accessors"][0].erase("max");
+    std::ofstream(dir.file("big.gltf")) << doc.dump();
+    EXPECT_THAT(loadError(dir.file("big.gltf")), HasSubstr("big.gltf"));
+}
+
+std::string imageError(const std::string& bytes) {
+    try {
+        decodeTexture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "texture.x");
+    } catch (const ImageError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(UntrustedImages, FormatsWovenDoesNotReadAreRefusedByName) {
+    EXPECT_THAT(imageError("P6\n"), HasSubstr("texture.x: the image is PNM"));
+    EXPECT_THAT(imageError("GIF89a....."), HasSubstr("is GIF"));
+    EXPECT_THAT(imageError(std::string("\0\0\2\0\0\0\0\0\0\0\0\0\x40\0\x40\0\x20\0", 18) + std::string(40, 'x')),
+                HasSubstr("TGA"));
+    EXPECT_THAT(imageError("hello"), HasSubstr("woven reads PNG, JPEG, Radiance HDR (.hdr) and OpenEXR (.exr)"));
+}
+
+TEST(UntrustedImages, EmptyTruncatedAndOversizedImagesAreRefused) {
+    // A Radiance header with no pixels.
+    EXPECT_THAT(imageError("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 0\n"), HasSubstr("texture.x"));
+    // A PNG cut after its header, and one whose header claims 100000 x 100000 pixels.
+    TempDir dir;
+    const unsigned char pixels[12] = {};
+    ASSERT_TRUE(stbi_write_png(dir.file("p.png").c_str(), 2, 2, 3, pixels, 6));
+    std::ifstream in(dir.file("p.png"), std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_THAT(imageError(png.substr(0, 40)), HasSubstr("texture.x: cannot decode"));
+    std::string huge = png;
+    const unsigned char side[4] = {0x00, 0x01, 0x86, 0xa0};  // 100000, big-endian, in IHDR
+    huge.replace(16, 4, reinterpret_cast<const char*>(side), 4);
+    huge.replace(20, 4, reinterpret_cast<const char*>(side), 4);
+    const std::string message = imageError(huge);
+    EXPECT_THAT(message, HasSubstr("texture.x"));
+    EXPECT_THAT(message, ::testing::Not(HasSubstr("(no error)")));
+}
+
+}  // namespace
+}  // namespace woven
