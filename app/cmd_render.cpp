@@ -1,4 +1,5 @@
 // `woven render SCENE`: a final frame of a scene file with either integrator, to EXR or PNG.
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -55,11 +56,23 @@ std::string formatSeconds(double seconds) {
     return s.str();
 }
 
-std::string progressStatus(const RenderProgress& p, bool timeLimited) {
+// "23.4": the mean samples per pixel.
+std::string formatMean(const std::vector<float>& sampleCount) {
+    double sum = 0.0;
+    for (float n : sampleCount) sum += n;
+    std::ostringstream s;
+    s.precision(3);
+    s << sum / double(std::max<size_t>(sampleCount.size(), 1));
+    return s.str();
+}
+
+std::string progressStatus(const RenderProgress& p, bool timeLimited, bool adaptive) {
     std::ostringstream s;
     s << p.samplesDone;
     if (!timeLimited) s << "/" << p.samplesTotal;
-    s << " spp  " << formatCount(p.samplesPerSecond) << " samples/s  " << formatCount(p.raysPerSecond)
+    s << " spp  ";
+    if (adaptive) s << int(std::ceil(100.0 * p.activeFraction)) << "% of pixels sampling  ";
+    s << formatCount(p.samplesPerSecond) << " samples/s  " << formatCount(p.raysPerSecond)
       << " rays/s  elapsed " << formatDuration(p.elapsed) << "  left " << formatDuration(p.remaining);
     return s.str();
 }
@@ -90,8 +103,10 @@ int runRender(RenderCommand o) {
         if (settings.integrator == "auto") std::cerr << "render: choosing the integrator (a short pilot of each)\n";
         job.run(interrupted, [&](const RenderProgress& p) {
             last = p;
-            const double fraction = timeLimited && !sppGiven ? p.elapsed / o.time : double(p.samplesDone) / p.samplesTotal;
-            bar.update(fraction, progressStatus(p, timeLimited && !sppGiven));
+            const double fraction = p.activeFraction == 0.0           ? 1.0  // every pixel below the noise threshold
+                                    : timeLimited && !sppGiven ? p.elapsed / o.time
+                                                               : double(p.samplesDone) / p.samplesTotal;
+            bar.update(fraction, progressStatus(p, timeLimited && !sppGiven, settings.noiseThreshold > 0.0));
         });
         bar.finish();
     }
@@ -104,7 +119,10 @@ int runRender(RenderCommand o) {
     const FilmImage film = job.snapshot();
     writeFrame(path, film.exr(), o.options.frame.display);
     std::cerr << (wasInterrupted ? "interrupted: wrote " : "wrote ") << path << "\n";
-    std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp, " << settings.width << "x"
+    std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp";
+    if (settings.noiseThreshold > 0.0)
+        std::cout << " at most (" << formatMean(film.sampleCount) << " on average, noise threshold " << settings.noiseThreshold << ")";
+    std::cout << ", " << settings.width << "x"
               << settings.height << ", " << formatSeconds(last.elapsed) << ", "
               << formatCount(last.samplesPerSecond) << " samples/s, " << formatCount(last.raysPerSecond) << " rays/s\n";
     return wasInterrupted ? 130 : 0;

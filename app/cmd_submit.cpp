@@ -118,6 +118,7 @@ SlurmJob planJob(const SubmitOptions& o) {
     applySceneOptions(scene, o.render.frame);
     const RenderSettings settings = frameSettings(scene, o.render.frame);
     job.spp = settings.spp;
+    job.noiseThreshold = settings.noiseThreshold;
     if (job.tasks > job.spp)
         throw std::invalid_argument("--tasks " + std::to_string(job.tasks) + " is more than the " +
                                     std::to_string(job.spp) + " samples per pixel: each task needs one at least");
@@ -281,9 +282,10 @@ void addSubmitCommand(CLI::App& app) {
                     "(default: OUT's name with .slurm)");
     // The render options, recorded as typed before CLI11's transforms rewrite them (--tone-map's
     // names become numbers), so that every task gets exactly what was given here; except --spp,
-    // the frame's samples per pixel, which the tasks split.
+    // the frame's samples per pixel, which the tasks split, and --noise-threshold, which each
+    // task gets for its share (SlurmJob::noiseThreshold).
     for (CLI::Option* option : addRenderOptions(*cmd, o->render)) {
-        if (option->check_lname("spp")) continue;
+        if (option->check_lname("spp") || option->check_lname("noise-threshold")) continue;
         option->transform([o, name = option->get_name()](std::string value) {
             o->renderArguments.push_back(name);
             o->renderArguments.push_back(value);

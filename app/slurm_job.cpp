@@ -1,5 +1,6 @@
 #include "slurm_job.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "shell_quote.h"
@@ -37,6 +38,8 @@ SampleRange SlurmJob::taskSamples(int index) const {
     return {first, end - first};
 }
 
+double SlurmJob::taskNoiseThreshold() const { return noiseThreshold * std::sqrt(double(tasks)); }
+
 std::string SlurmJob::renderLog(const std::string& jobId, int index) const {
     return logFolder() + "/render_" + jobId + "_" + std::to_string(index) + ".log";
 }
@@ -69,7 +72,8 @@ std::string SlurmJob::renderScript() const {
          "first=$((spp * t / tasks))\n"
          "end=$((spp * (t + 1) / tasks))\n"
       << "exec " << shellQuote(woven) << " render \"${scenes[frame]}\" --first-sample \"$first\" --spp \"$((end - first))\" \\\n"
-      << "    -o \"${parts[frame]}/" << kPartPrefix << "${first}-$((end - 1)).exr\"";
+      << "    -o \"${parts[frame]}/" << kPartPrefix << "${first}-$((end - 1)).exr\" --noise-threshold "
+      << taskNoiseThreshold();
     if (!renderArguments.empty()) s << " \\\n    " << shellCommand(renderArguments);
     s << "\n";
     return s.str();

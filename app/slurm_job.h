@@ -33,6 +33,10 @@ struct SlurmJob {
     std::vector<ClusterFrame> frames;
     int spp = 0;         // samples per pixel of every frame
     int tasks = 0;       // render tasks per frame
+    // The frame's --noise-threshold. A task adapts within its own sample range, so each gets
+    // noiseThreshold * sqrt(tasks): the merge of the tasks' independent estimates then has about
+    // noiseThreshold as relative error where one render of all the samples would stop.
+    double noiseThreshold = 0.0;
     std::vector<std::string> renderArguments;  // given to every task's woven render as they are
     SbatchOptions sbatch;
 
@@ -40,6 +44,7 @@ struct SlurmJob {
     const ClusterFrame& taskFrame(int index) const { return frames[size_t(index / tasks)]; }
     // Samples [spp * t / tasks, spp * (t + 1) / tasks) for t = index % tasks: what the script computes.
     SampleRange taskSamples(int index) const;
+    double taskNoiseThreshold() const;
 
     std::string renderScriptPath() const { return folder + "/render.sbatch"; }
     std::string mergeScriptPath() const { return folder + "/merge.sbatch"; }

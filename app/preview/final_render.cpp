@@ -1,5 +1,8 @@
 #include "final_render.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace woven {
 
 FinalRender::~FinalRender() { cancel(); }
@@ -10,7 +13,9 @@ void FinalRender::start(const SceneDescription& scene, const RenderSettings& set
     running_ = true;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        progress_ = RenderProgress{0, settings.spp, 0.0, 0.0, 0.0};
+        progress_ = RenderProgress{};
+        progress_.samplesTotal = settings.spp;
+        adaptive_ = settings.noiseThreshold > 0.0;
         snapshot_.reset();
         fresh_ = false;
         error_.clear();
@@ -47,9 +52,22 @@ void FinalRender::wait() {
     if (worker_.joinable()) worker_.join();
 }
 
-RenderProgress FinalRender::progress() const {
+float FinalRender::fractionDone() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return progress_;
+    if (progress_.activeFraction == 0.0) return 1.0f;
+    return progress_.samplesTotal > 0 ? float(progress_.samplesDone) / float(progress_.samplesTotal) : 0.0f;
+}
+
+std::string FinalRender::progressText() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    char text[128];
+    if (adaptive_)
+        std::snprintf(text, sizeof text, "%d/%d spp, %.0f%% of pixels sampling, %.1f s left", progress_.samplesDone,
+                      progress_.samplesTotal, std::ceil(100.0 * progress_.activeFraction), progress_.remaining);
+    else
+        std::snprintf(text, sizeof text, "%d/%d spp, %.1f s left", progress_.samplesDone, progress_.samplesTotal,
+                      progress_.remaining);
+    return text;
 }
 
 std::optional<FilmImage> FinalRender::newSnapshot() {

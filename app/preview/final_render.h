@@ -27,7 +27,10 @@ public:
     void wait();
 
     bool running() const { return running_; }
-    RenderProgress progress() const;
+    // For the window's progress bar: the fraction done (all of it once every pixel is below the
+    // noise threshold), and a line such as "12/64 spp, 35% of pixels sampling, 4.2 s left".
+    float fractionDone() const;
+    std::string progressText() const;
     // The snapshot after the latest pass, once per pass: nullopt when there is nothing new.
     std::optional<FilmImage> newSnapshot();
     // The latest snapshot, whether or not it was taken before.
@@ -40,6 +43,7 @@ private:
     std::atomic<bool> cancel_{false}, running_{false};
     mutable std::mutex mutex_;
     RenderProgress progress_;
+    bool adaptive_ = false;  // a noise threshold was given
     std::optional<FilmImage> snapshot_;
     bool fresh_ = false;
     std::string error_, integrator_;

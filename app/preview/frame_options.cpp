@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "woven_assignment.h"
 #include "scene_lighting.h"
@@ -29,6 +30,11 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
+    std::ostringstream threshold;
+    threshold << "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
+                 "--spp is then its most; 0: every pixel takes every sample (default: "
+              << kDefaultNoiseThreshold << ")";
+    command.add_option("--noise-threshold", o.noiseThreshold, threshold.str())->check(CLI::NonNegativeNumber);
     command.add_flag("--no-filter", o.noFilter, "the preview point-samples the weave even where it is finer than a pixel");
     command.add_flag("--filter", o.filterRender,
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
@@ -77,6 +83,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     if (!o.integrator.empty()) settings.integrator = o.integrator;
     settings.seed = o.seed;
     settings.maxDepth = o.maxDepth;
+    if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
     settings.filterWeave = o.filterRender;
     return settings;
 }

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct FrameOptions {
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
     int maxDepth = 8;
+    std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
     bool noFilter = false;               // the preview point-samples the weave everywhere
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
@@ -28,8 +30,8 @@ struct FrameOptions {
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --no-filter --filter --allow-any-path --woven
-// --environment --exposure --tone-map.
+// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --no-filter --filter
+// --allow-any-path --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

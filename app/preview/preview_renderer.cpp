@@ -209,9 +209,9 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     mesh.draw();
 }
 
-void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, const DisplayTransform& transform) {
+void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, glm::ivec2 size, const DisplayTransform& transform) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glViewport(origin.x, origin.y, size_.x, size_.y);
+    glViewport(origin.x, origin.y, size.x, size.y);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(displayProgram_->id());
@@ -221,6 +221,7 @@ void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, const Displ
     glUniform1f(displayProgram_->uniform("exposureScale"), std::exp2(transform.exposure));
     glUniform1i(displayProgram_->uniform("toneMap"), int(transform.toneMap));
     glUniform2i(displayProgram_->uniform("origin"), origin.x, origin.y);
+    glUniform2f(displayProgram_->uniform("viewportSize"), float(size.x), float(size.y));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

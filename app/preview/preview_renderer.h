@@ -36,9 +36,10 @@ public:
     // Renders the radiance image of `camera` at `size` into the internal target.
     void render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera, glm::ivec2 size,
                 const PreviewOptions& options);
-    // Draws the last radiance image into `framebuffer` at `origin` through `transform` (as
-    // core's displayColor()).
-    void display(GLuint framebuffer, glm::ivec2 origin, const DisplayTransform& transform);
+    // Draws the last radiance image into `framebuffer`, filling the `size` pixels from `origin`,
+    // through `transform` (as core's displayColor()). At the size it was rendered, pixel for
+    // pixel; at another (a frame rendered smaller while interacting), scaled bilinearly.
+    void display(GLuint framebuffer, glm::ivec2 origin, glm::ivec2 size, const DisplayTransform& transform);
     // The last radiance image, row 0 at the top.
     Image radiance() const;
 

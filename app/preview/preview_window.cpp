@@ -23,6 +23,7 @@
 #include "final_render.h"
 #include "gl_error.h"
 #include "image_io.h"
+#include "interactive_resolution.h"
 #include "material_file.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
@@ -129,6 +130,8 @@ private:
     std::vector<std::string> droppedPaths_;
     glm::dvec2 lastCursor_{0.0};
     std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
+    bool steering_ = false;                // the camera is being dragged or zoomed
+    InteractiveResolution resolution_;
     std::string status_;
     char materialPath_[512] = "material.json";
     char imagePath_[512] = "render.png";
@@ -306,6 +309,7 @@ void PreviewWindow::handleMouse() {
     const double scroll = scroll_;
     scroll_ = 0.0;
     const bool leftDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    steering_ = false;
     if (!leftDown && pressedAt_) {
         // Released where it was pressed: a click, not the end of an orbit.
         if (glm::length(cursor - *pressedAt_) < 3.0) pick(glm::vec2(cursor));
@@ -330,6 +334,9 @@ void PreviewWindow::handleMouse() {
     if (scroll != 0.0) camera_.zoom(std::pow(0.9f, float(scroll)));
     // The rendered frame is of the old view: moving the camera goes back to the live preview.
     if (changed) showFinal_ = false;
+    // A held button steers even while the cursor rests, so a pause in a drag is no full frame.
+    steering_ = changed || pressedAt_ || glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
 }
 
 void PreviewWindow::drawMaterialControls(WovenParams& p) {
@@ -514,6 +521,8 @@ void PreviewWindow::drawRenderControls() {
     render_.height = std::clamp(render_.height, 1, 16384);
     ImGui::InputInt("spp", &render_.spp);
     render_.spp = std::clamp(render_.spp, 1, 1 << 20);
+    ImGui::InputDouble("noise threshold", &render_.noiseThreshold, 0.01, 0.05, "%.3f");
+    render_.noiseThreshold = std::clamp(render_.noiseThreshold, 0.0, 1.0);
     if (ImGui::BeginCombo("integrator", render_.integrator.c_str())) {
         for (const char* name : kIntegratorNames)
             if (ImGui::Selectable(name, render_.integrator == name)) render_.integrator = name;
@@ -547,14 +556,8 @@ void PreviewWindow::drawRenderControls() {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputText("##export file", exportPath_, sizeof exportPath_);
-    const RenderProgress progress = final_.progress();
-    if (final_.running() || finalImage_) {
-        char text[96];
-        std::snprintf(text, sizeof text, "%d/%d spp, %.1f s left", progress.samplesDone, progress.samplesTotal,
-                      progress.remaining);
-        ImGui::ProgressBar(progress.samplesTotal > 0 ? float(progress.samplesDone) / progress.samplesTotal : 0.0f,
-                           ImVec2(-1.0f, 0.0f), text);
-    }
+    if (final_.running() || finalImage_)
+        ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
     if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());
     if (!finalImage_) return;
     ImGui::Checkbox("show the rendered frame", &showFinal_);
@@ -626,7 +629,8 @@ void PreviewWindow::drawPanel() {
     ImGui::Begin("woven");
     ImGui::PushItemWidth(-200.0f);  // room for the paper's long labels
     ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
-    ImGui::Text("%.1f ms/frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
+    ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
+                100.0f * resolution_.scale());
     static const char* const toneMaps[] = {"clamp", "reinhard", "aces"};  // core's ToneMap order
     int toneMap = int(display_.toneMap);
     const bool exposureChanged = ImGui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
@@ -709,7 +713,11 @@ void PreviewWindow::writeWindowScreenshot(const std::string& path) {
 
 void PreviewWindow::run() {
     glfwGetCursorPos(window_, &lastCursor_.x, &lastCursor_.y);
+    double frameStart = glfwGetTime();
     for (int frame = 1; !glfwWindowShouldClose(window_); ++frame) {
+        const double now = glfwGetTime();
+        if (frame > 1) resolution_.frameTook(now - frameStart);
+        frameStart = now;
         glfwPollEvents();
         std::vector<std::string> dropped;
         dropped.swap(droppedPaths_);
@@ -748,8 +756,10 @@ void PreviewWindow::run() {
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
             try {
-                renderer_->render(scene(), lights_, camera, {width, height}, preview);
-                renderer_->display(0, {0, 0}, display_);
+                const bool interacting = steering_ || ImGui::IsAnyItemActive();
+                renderer_->render(scene(), lights_, camera, resolution_.frameSize({width, height}, interacting, now),
+                                  preview);
+                renderer_->display(0, {0, 0}, {width, height}, display_);
             } catch (const std::exception& e) {
                 status_ = e.what();  // e.g. a shader variant that fails to compile
             }

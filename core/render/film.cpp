@@ -12,11 +12,7 @@ int pixelIndex(const glm::vec2& pRaster, int width, int height) {
 
 std::vector<glm::vec3> PassImage::combined() const {
     std::vector<glm::vec3> image = radiance;
-    for (const auto& splats : tileSplats)
-        for (const Splat& s : splats) {
-            const int i = pixelIndex(s.pRaster, width, height);
-            if (i >= 0) image[size_t(i)] += s.L;
-        }
+    forEachSplat([&](size_t i, const glm::vec3& L) { image[i] += L; });
     return image;
 }
 
@@ -25,15 +21,13 @@ Film::Film(int width, int height)
 
 void Film::addPass(const PassImage& pass) {
     for (size_t i = 0; i < count_.size(); ++i) {
+        if (!pass.samples(i)) continue;
         for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
         count_[i] += 1.0f;
     }
-    for (const auto& splats : pass.tileSplats)
-        for (const Splat& s : splats) {
-            const int i = pixelIndex(s.pRaster, width_, height_);
-            if (i >= 0)
-                for (int c = 0; c < 3; ++c) sum_[3 * size_t(i) + size_t(c)].add(s.L[c]);
-        }
+    pass.forEachSplat([&](size_t i, const glm::vec3& L) {
+        for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(L[c]);
+    });
     ++passes_;
 }
 

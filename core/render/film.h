@@ -1,9 +1,11 @@
 #pragma once
 // The film of a final frame: per pixel the sum of its camera samples and of the splats that
-// BDPT's light paths seen by the camera (t = 1) land in, and the count of passes (one sample per
-// pixel each). The sums are exact (ExactSum), so the image is a pure function of the samples it
-// holds: whatever threads rendered them, in whatever order, and the merge of renders of disjoint
-// sample ranges gives the same image bit for bit.
+// BDPT's light paths seen by the camera (t = 1) land in, and the count of passes that sampled it
+// (one sample per pixel each; every pass unless sampling is adaptive). The sums are exact
+// (ExactSum), so the image is a pure function of the samples it holds: whatever threads rendered
+// them, in whatever order, and the merge of renders of disjoint sample ranges gives the same
+// image bit for bit.
+#include <cstdint>
 #include <vector>
 
 #include "integrator.h"
@@ -16,9 +18,20 @@ struct PassImage {
     int width = 0, height = 0;
     std::vector<glm::vec3> radiance;           // row-major, one per pixel
     std::vector<std::vector<Splat>> tileSplats;
+    // An adaptive pass (adaptive_sampling.h) samples only some pixels: 1 for those (empty: all).
+    // BDPT then traces one light subpath per sampled pixel, not per pixel, so each splat is
+    // scaled by pixels / sampled pixels to keep the pass an unbiased estimate of every pixel it
+    // sampled; splats on the others are dropped, as those pixels take no more samples.
+    std::vector<uint8_t> sampled;
+    float splatScale = 1.0f;
 
-    // The pass as an image of its own, splats added: one independent estimate of the frame.
+    bool samples(size_t pixel) const { return sampled.empty() || sampled[pixel] != 0; }
+    // The pass as an image of its own, splats added: one independent estimate of each pixel it
+    // sampled (0 elsewhere).
     std::vector<glm::vec3> combined() const;
+    // Calls f(pixel, L) for each splat that lands on a sampled pixel, scaled, in tile order.
+    template <typename F>
+    void forEachSplat(F&& f) const;
 };
 
 // The pixel a raster position falls in (box filter of one pixel); -1 outside the image.
@@ -30,7 +43,8 @@ public:
 
     void addPass(const PassImage& pass);
     // Mean radiance: (samples + splats) / count. pbrt-v3 scales its splat buffer by 1 / spp, which
-    // is the same: every pixel's count is the number of passes. `samples` is left empty: the film
+    // is the same when every pixel's count is the number of passes (PassImage::splatScale tells
+    // why it stays right when it is not). `samples` is left empty: the film
     // does not know which sample indices its passes were.
     FilmImage image() const;
     int passes() const { return passes_; }
@@ -40,5 +54,14 @@ private:
     std::vector<ExactSum> sum_;  // R, G, B per pixel
     std::vector<float> count_;
 };
+
+template <typename F>
+void PassImage::forEachSplat(F&& f) const {
+    for (const auto& splats : tileSplats)
+        for (const Splat& s : splats) {
+            const int i = pixelIndex(s.pRaster, width, height);
+            if (i >= 0 && samples(size_t(i))) f(size_t(i), splatScale == 1.0f ? s.L : s.L * splatScale);
+        }
+}
 
 }  // namespace woven

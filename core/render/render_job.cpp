@@ -10,6 +10,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "adaptive_sampling.h"
 #include "film.h"
 #include "frame_limits.h"
 #include "integrator.h"
@@ -27,15 +28,20 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Renders one pass (one sample per pixel, sample index `sampleIndex`) over tiles on the arena's
-// threads. Every pixel's random numbers come from (seed, pixel, sample index) alone. Returns
-// false, leaving `pass` incomplete, when `cancel` became true.
+// threads, of the pixels `sampled` marks (empty: all). Every pixel's random numbers come from
+// (seed, pixel, sample index) alone. Returns false, leaving `pass` incomplete, when `cancel`
+// became true.
 bool renderPass(const Integrator& integrator, int width, int height, uint64_t seed, uint64_t sampleIndex,
-                tbb::task_arena& arena, const std::atomic<bool>& cancel, uint64_t* rays, PassImage* pass) {
+                const std::vector<uint8_t>& sampled, size_t sampledCount, tbb::task_arena& arena,
+                const std::atomic<bool>& cancel, uint64_t* rays, PassImage* pass) {
     const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
     pass->width = width;
     pass->height = height;
     pass->radiance.assign(size_t(width) * height, glm::vec3(0.0f));
     pass->tileSplats.assign(size_t(tilesX) * tilesY, {});
+    pass->sampled = sampled;
+    const size_t pixels = size_t(width) * height;
+    pass->splatScale = sampled.empty() || sampledCount == pixels ? 1.0f : float(double(pixels) / double(sampledCount));
     std::atomic<uint64_t> rayCount{0};
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& range) {
@@ -46,6 +52,7 @@ bool renderPass(const Integrator& integrator, int width, int height, uint64_t se
                 for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
                     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                         const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
+                        if (!pass->samples(pixel)) continue;
                         Rng rng(seed, pixel, sampleIndex);
                         const glm::vec2 pRaster = glm::vec2(float(x), float(y)) + rng.uniform2();
                         const glm::vec3 L = integrator.Li(pRaster, rng, sink);
@@ -113,7 +120,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
             PassImage pass;
             // Sample indices far from any final render's, so the pilot never repeats its samples.
             const uint64_t sampleIndex = (uint64_t(1) << 62) + uint64_t(passes);
-            if (!renderPass(*candidate, width, height, settings.seed, sampleIndex, arena, cancel, &rays, &pass))
+            if (!renderPass(*candidate, width, height, settings.seed, sampleIndex, {}, 0, arena, cancel, &rays, &pass))
                 return "path";
             const std::vector<glm::vec3> image = pass.combined();
             for (size_t i = 0; i < image.size(); ++i) {
@@ -144,6 +151,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
 
 RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     RenderSettings settings;
+    settings.noiseThreshold = kDefaultNoiseThreshold;
     if (scene.render.width > 0) settings.width = scene.render.width;
     if (scene.render.height > 0) settings.height = scene.render.height;
     if (scene.render.spp > 0) settings.spp = scene.render.spp;
@@ -158,6 +166,7 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     if (settings.spp < 0) throw std::invalid_argument("samples per pixel must not be negative");
     if (settings.firstSample < 0) throw std::invalid_argument("the first sample index must not be negative");
     if (settings.maxDepth < 1) throw std::invalid_argument("the maximum depth must be at least 1");
+    if (!(settings.noiseThreshold >= 0.0)) throw std::invalid_argument("the noise threshold must not be negative");
     checkFrameFitsInMemory(settings.width, settings.height);
     impl_ = std::make_unique<Impl>(std::move(scene), std::move(settings));
     Impl& im = *impl_;
@@ -183,31 +192,43 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
         im.integratorName = chosen;
     }
     const Clock::time_point renderStart = Clock::now();
-    const double pixels = double(im.settings.width) * im.settings.height;
+    const size_t pixels = size_t(im.settings.width) * im.settings.height;
+    std::optional<AdaptiveSampling> adaptive;
+    const std::vector<uint8_t> everyPixel;  // renderPass's "all"
+    if (im.settings.noiseThreshold > 0.0) adaptive.emplace(im.settings.width, im.settings.height, im.settings.noiseThreshold);
     RenderProgress progress;
     progress.samplesTotal = im.settings.spp;
+    uint64_t samples = 0;
     for (int done = 0; done < im.settings.spp; ++done) {
+        const Clock::time_point passStart = Clock::now();
         PassImage pass;
         const uint64_t sampleIndex = uint64_t(im.settings.firstSample) + uint64_t(im.film.passes());
-        if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.seed, sampleIndex, im.arena,
-                        cancel, &progress.rays, &pass))
+        const size_t sampled = adaptive ? adaptive->activeCount() : pixels;
+        if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.seed, sampleIndex,
+                        adaptive ? adaptive->active() : everyPixel, sampled, im.arena, cancel,
+                        &progress.rays, &pass))
             return;  // the unfinished pass is dropped: the film holds whole passes only
         {
             std::lock_guard<std::mutex> lock(im.filmMutex);
             im.film.addPass(pass);
         }
+        if (adaptive) adaptive->addPass(pass.combined());
+        samples += sampled;
         const double renderSeconds = std::max(secondsSince(renderStart), 1e-9);
         progress.samplesDone = done + 1;
+        progress.activeFraction = adaptive ? double(adaptive->activeCount()) / double(pixels) : 1.0;
         progress.elapsed = secondsSince(start);
-        progress.samplesPerSecond = pixels * progress.samplesDone / renderSeconds;
+        progress.samplesPerSecond = double(samples) / renderSeconds;
         progress.raysPerSecond = double(progress.rays) / renderSeconds;
-        const double perPass = renderSeconds / progress.samplesDone;
-        progress.remaining = perPass * (im.settings.spp - progress.samplesDone);
+        // Adaptive passes get cheaper as pixels stop: the latest one tells the cost of the next.
+        const double perPass = adaptive ? secondsSince(passStart) : renderSeconds / progress.samplesDone;
+        const bool converged = progress.activeFraction == 0.0;
+        progress.remaining = converged ? 0.0 : perPass * (im.settings.spp - progress.samplesDone);
         const bool outOfTime = im.settings.timeLimit > 0.0 && progress.elapsed >= im.settings.timeLimit;
         if (im.settings.timeLimit > 0.0) progress.remaining = std::min(progress.remaining, std::max(0.0, im.settings.timeLimit - progress.elapsed));
         if (outOfTime) progress.remaining = 0.0;
         if (onProgress) onProgress(progress);
-        if (outOfTime || cancel.load()) return;
+        if (outOfTime || converged || cancel.load()) return;
     }
 }
 

@@ -25,20 +25,30 @@ struct RenderSettings {
     uint64_t seed = 0;
     int threads = 0;           // 0 = all cores
     int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
+    // Adaptive sampling (adaptive_sampling.h): a pixel stops once the estimated relative error
+    // of its mean is below this; spp is then each pixel's most. 0: every pixel takes spp samples
+    // (woven render's default is defaultRenderSettings()').
+    double noiseThreshold = 0.0;
     // Woven materials filtered over each pixel's footprint (--filter). Off by default: its bias
     // (about 2 % per pixel on the paper's satin) exceeds the noise it removes (docs/RESULTS.md).
     bool filterWeave = false;
     std::optional<Camera> camera;  // overrides the scene's
 };
 
-// The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto): what
-// `woven render` and the previewer's Render button start from.
+// --noise-threshold's default: at equal time it did best of those measured, on every scene,
+// integrator and the two halves of the examples (docs/ADAPTIVE_SAMPLING.md).
+constexpr double kDefaultNoiseThreshold = 0.05;
+
+// The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto, noise
+// threshold kDefaultNoiseThreshold): what `woven render` and the previewer's Render button
+// start from.
 RenderSettings defaultRenderSettings(const SceneDescription& scene);
 
 struct RenderProgress {
-    int samplesDone = 0, samplesTotal = 0;  // per pixel
+    int samplesDone = 0, samplesTotal = 0;  // passes, of spp: per pixel at most
+    double activeFraction = 1.0;            // of the pixels, those that the next pass samples
     double elapsed = 0.0, remaining = 0.0;  // seconds (remaining: estimate)
-    double samplesPerSecond = 0.0;          // camera samples (pixels x spp) per second
+    double samplesPerSecond = 0.0;          // camera samples (one per sampled pixel per pass) per second
     uint64_t rays = 0;                      // rays traced by the passes so far (shadow rays included)
     double raysPerSecond = 0.0;
 };
@@ -60,8 +70,10 @@ public:
     RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings);
     ~RenderJob();
 
-    // Blocks until done or `cancel` becomes true; renders in passes of one sample per pixel so
-    // that snapshot() is a valid image after every pass. Calls onProgress after each pass.
+    // Blocks until done or `cancel` becomes true; renders in passes of one sample per pixel (per
+    // pixel still sampling, with a noise threshold) so that snapshot() is a valid image after
+    // every pass. Calls onProgress after each pass. Done: spp passes, the time limit crossed,
+    // or, with a noise threshold, every pixel below it.
     void run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress = {});
     FilmImage snapshot() const;  // thread-safe
     // The one chosen: "auto" is resolved by a short pilot at the start of run(), so until then

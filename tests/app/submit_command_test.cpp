@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -156,6 +157,38 @@ TEST(SubmitCommand, FramesFromAPatternOrAListOfScenes) {
     ASSERT_EQ(listed.status, 0) << listed.output;
     EXPECT_THAT(listed.output, testing::HasSubstr(shellQuote(dir.file("g_8.exr"))));
     EXPECT_TRUE(fs::exists(dir.path() / "list job" / "parts" / "8"));
+}
+
+// With a noise threshold each task adapts within its own samples, to the threshold times
+// sqrt(tasks), and the parts, whose pixels hold different numbers of samples, merge exactly.
+TEST(SubmitCommand, EachTaskAdaptsToItsShareOfTheNoiseThreshold) {
+    TempDir dir;
+    const std::string scene = writeScene(dir.path() / "scene.json", 0.3f);
+    const std::string out = dir.file("frame.exr");
+    const Result dry = woven({"submit", scene, "--tasks", "4", "--spp", "80", "--noise-threshold", "0.1", "--width", "24",
+                              "--height", "16", "--integrator", "path", "-o", out, "--dry-run"});
+    ASSERT_EQ(dry.status, 0) << dry.output;
+    EXPECT_THAT(dry.output, testing::HasSubstr("--noise-threshold 0.2 ")) << "0.1 x sqrt(4 tasks)";
+    EXPECT_THAT(dry.output, testing::Not(testing::HasSubstr("--noise-threshold 0.1")));
+
+    const fs::path job = dir.path() / "frame.slurm";
+    for (int task = 0; task < 4; ++task) {
+        const Result r =
+            shell("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " + shellQuote((job / "render.sbatch").string()));
+        ASSERT_EQ(r.status, 0) << r.output;
+    }
+    const Result merge = shell("bash " + shellQuote((job / "merge.sbatch").string()));
+    ASSERT_EQ(merge.status, 0) << merge.output;
+    const ExrImage frame = readExr(out);
+    std::vector<float> sum(frame.sampleCount.size(), 0.0f);
+    for (const fs::directory_entry& part : fs::directory_iterator(job / "parts")) {
+        const ExrImage p = readExr(part.path().string());
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += p.sampleCount[i];
+    }
+    EXPECT_EQ(frame.sampleCount, sum);
+    // The sky stops after the 16 samples every pixel takes in each task; the cloth takes more.
+    EXPECT_EQ(*std::min_element(sum.begin(), sum.end()), 4 * 16.0f);
+    EXPECT_GT(*std::max_element(sum.begin(), sum.end()), 4 * 16.0f);
 }
 
 TEST(SubmitCommand, BadRequestsFailBeforeAnythingIsSubmitted) {
