@@ -35,8 +35,9 @@ struct RenderSettings {
     std::optional<Camera> camera;  // overrides the scene's
 };
 
-// --noise-threshold's default: at equal time it did best of those measured, on every scene,
-// integrator and the two halves of the examples (docs/ADAPTIVE_SAMPLING.md).
+// --noise-threshold's default. At 64 spp few pixels reach it before their last sample, so it
+// costs a default render nothing, while flat and directly lit regions stop early; of the
+// thresholds measured at equal time it did best (docs/RESULTS.md, "Adaptive sampling").
 constexpr double kDefaultNoiseThreshold = 0.05;
 
 // The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto, noise
