@@ -1,13 +1,15 @@
-// `woven converge`: error against a converged reference versus render time, per integrator and
-// with the weave filter on and off. It answers "which integrator, and how long for a given error"
-// on a user's own scene, checks that `--integrator auto` picks the efficient one, and measures what
-// the weave filter gains (less noise) and costs (its bias: the reference is unfiltered).
+// `woven converge`: error against a converged reference versus render time, per integrator, with
+// the weave filter on and off and adaptive sampling at each noise threshold asked for. It answers
+// "which integrator, and how long for a given error" on a user's own scene, checks that
+// `--integrator auto` picks the efficient one, and measures what the weave filter and adaptive
+// sampling gain (less noise) and cost (bias: the reference is unfiltered and uniformly sampled).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -27,7 +29,8 @@ struct ConvergeOptions {
     std::string scene, outDir = "converge";
     std::vector<double> budgets{1, 2, 4, 8, 16};
     std::vector<std::string> integrators{"path", "bdpt", "auto"};
-    std::vector<std::string> filters{"on", "off"};  // the weave filter (--no-filter is "off")
+    std::vector<std::string> filters{"on", "off"};  // the weave filter (--filter is "on")
+    std::vector<double> thresholds{0.0, kDefaultNoiseThreshold};  // adaptive sampling; 0: off
     double referenceTime = 300;
     int width = 320, height = 240;
     int threads = 0;
@@ -61,7 +64,7 @@ struct Timed {
 };
 
 Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o, const std::string& integrator,
-                double seconds, uint64_t seed, bool filterWeave) {
+                double seconds, uint64_t seed, bool filterWeave, double noiseThreshold = 0.0) {
     RenderSettings s;
     s.width = o.width;
     s.height = o.height;
@@ -71,6 +74,7 @@ Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     s.seed = seed;
     s.threads = o.threads;
     s.filterWeave = filterWeave;
+    s.noiseThreshold = noiseThreshold;
     RenderJob job(scene, s);
     std::atomic<bool> cancel{false};
     const auto start = std::chrono::steady_clock::now();
@@ -139,12 +143,32 @@ void plot(const std::string& csv, const std::string& png, const std::string& tit
         std::cerr << "converge: gnuplot not available, wrote " << csv << " only\n";
 }
 
-// One integrator with the filter on or off, as a row of the tables and a line of the plot.
+// One integrator with the filter on or off and a noise threshold, as a row of the tables and a
+// line of the plot.
 struct Variant {
     std::string integrator;
     bool filter;
-    std::string name() const { return integrator + (filter ? "" : "-nofilter"); }
+    double threshold;  // 0: uniform sampling
+    std::string name() const {
+        std::ostringstream n;
+        n << integrator << (filter ? "-filter" : "");
+        if (threshold > 0.0) n << "-adaptive" << threshold;
+        return n.str();
+    }
 };
+
+std::string adaptiveLabel(double threshold) {
+    if (threshold <= 0.0) return "off";
+    std::ostringstream s;
+    s << "T = " << threshold;
+    return s.str();
+}
+
+double meanSpp(const FilmImage& film) {
+    double sum = 0.0;
+    for (float n : film.sampleCount) sum += n;
+    return film.sampleCount.empty() ? 0.0 : sum / double(film.sampleCount.size());
+}
 
 // Squared relative RMSE against time, e^2(t) = B + V / t, fitted by least squares weighted by
 // 1 / e^2 (each run's error is known to a relative precision): V is the noise, B what does not
@@ -196,13 +220,14 @@ void runConverge(const ConvergeOptions& o) {
 
     std::vector<Variant> variants;
     for (const std::string& filter : o.filters)
-        for (const std::string& integrator : o.integrators) variants.push_back({integrator, filter == "on"});
+        for (double threshold : o.thresholds)
+            for (const std::string& integrator : o.integrators) variants.push_back({integrator, filter == "on", threshold});
 
     const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
     std::ofstream csv(csvPath);
-    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter\n";
-    std::cout << "| integrator | filter | time (s) | spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) |\n"
-              << "|---|---|---:|---:|---:|---:|---:|\n";
+    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold\n";
+    std::cout << "| integrator | filter | adaptive | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) |\n"
+              << "|---|---|---|---:|---:|---:|---:|---:|\n";
     struct Runs {
         std::vector<std::pair<double, double>> squaredError;  // (seconds, rel. RMSE^2)
         std::vector<double> relMse;                            // per budget
@@ -213,15 +238,15 @@ void runConverge(const ConvergeOptions& o) {
     uint64_t seed = 1;
     for (const Variant& v : variants)
         for (double budget : o.budgets) {
-            const Timed t = renderFor(scene, o, v.integrator, budget, seed++, v.filter);
+            const Timed t = renderFor(scene, o, v.integrator, budget, seed++, v.filter, v.threshold);
             const ErrorMetrics e = compare(t.film.radiance, ref);
             const double efficiency = 1.0 / (e.relMse * t.seconds);
-            const double spp = t.film.sampleCount.empty() ? 0.0 : t.film.sampleCount[0];
+            const double spp = meanSpp(t.film);
             csv << v.name() << "," << t.seconds << "," << spp << "," << e.relMse << "," << e.relRmse << ","
-                << efficiency << "," << v.integrator << "," << (v.filter ? "on" : "off") << "\n";
+                << efficiency << "," << v.integrator << "," << (v.filter ? "on" : "off") << "," << v.threshold << "\n";
             std::cout << "| " << v.integrator << (v.integrator == "auto" ? " (" + t.integrator + ")" : "") << " | "
-                      << (v.filter ? "on" : "off") << " | " << std::fixed << std::setprecision(2) << t.seconds
-                      << " | " << int(spp) << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
+                      << (v.filter ? "on" : "off") << " | " << adaptiveLabel(v.threshold) << " | " << std::fixed
+                      << std::setprecision(2) << t.seconds << " | " << std::setprecision(1) << spp << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
                       << e.relRmse << " | " << efficiency << " |\n" << std::defaultfloat << std::flush;
             Runs& r = runs[v.name()];
             r.squaredError.emplace_back(t.seconds, e.relRmse * e.relRmse);
@@ -235,55 +260,78 @@ void runConverge(const ConvergeOptions& o) {
     plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
 
     std::cout << "\nTime to a relative RMSE, from the fit e^2(t) = B + V/t over the runs above (B: what does not "
-                 "fall with time, the filter's bias and the reference's noise)\n\n"
+                 "fall with time: the filter's bias, the error at which adaptive sampling stops a pixel, and the reference's "
+                 "noise)\n\n"
               << "| integrator | filter | adaptive | time to 5% (s) | time to 1% (s) | floor sqrt(B) |\n"
               << "|---|---|---|---:|---:|---:|\n";
     std::map<std::string, ErrorFit> fits;
     for (const Variant& v : variants) {
         const ErrorFit f = fits[v.name()] = fitError(runs[v.name()].squaredError);
-        std::cout << "| " << v.integrator << " | " << (v.filter ? "on" : "off") << " | n/a | " << seconds(f.timeTo(0.05))
+        std::cout << "| " << v.integrator << " | " << (v.filter ? "on" : "off") << " | " << adaptiveLabel(v.threshold)
+                  << " | " << seconds(f.timeTo(0.05))
                   << " | " << seconds(f.timeTo(0.01)) << " | " << std::setprecision(3) << std::sqrt(f.B) << " |\n";
     }
 
-    // Before (filter off) against after (on), from the same run: relMSE at equal time, and the bias.
-    bool header = false;
-    for (const std::string& integrator : o.integrators) {
-        const auto on = runs.find(Variant{integrator, true}.name()), off = runs.find(Variant{integrator, false}.name());
-        if (on == runs.end() || off == runs.end()) continue;
-        if (!header) {
-            std::cout << "\nThe weave filter, before (off) and after (on), from the same run: relMSE off / on at equal "
-                         "time (per budget), and the filter's bias as relative RMSE, sqrt(B_on - B_off)\n\n"
-                      << "| integrator | relMSE off / on at";
-            for (double b : o.budgets) std::cout << " " << b << " s |";
-            std::cout << " time to 1%, off / on | bias (rel. RMSE) |\n|---|";
-            for (size_t i = 0; i <= o.budgets.size(); ++i) std::cout << "---:|";
-            std::cout << "---:|\n";
-            header = true;
+    // The default settings against the filter and adaptive sampling off, one at a time, from the
+    // same run: relMSE at equal time (per budget).
+    const bool defaultFilter = std::find(o.filters.begin(), o.filters.end(), "off") == o.filters.end();
+    const double defaultThreshold =
+        std::find(o.thresholds.begin(), o.thresholds.end(), kDefaultNoiseThreshold) != o.thresholds.end()
+            ? kDefaultNoiseThreshold
+            : o.thresholds.front();
+    const auto compareVariants = [&](const std::string& title, const std::function<Variant(const std::string&)>& before,
+                                     const std::function<Variant(const std::string&)>& after, bool bias) {
+        bool header = false;
+        for (const std::string& integrator : o.integrators) {
+            const Variant vb = before(integrator), va = after(integrator);
+            const auto b = runs.find(vb.name()), a = runs.find(va.name());
+            if (b == runs.end() || a == runs.end() || b == a) continue;
+            if (!header) {
+                std::cout << "\n" << title << "\n\n| integrator | relMSE before / after at";
+                for (double t : o.budgets) std::cout << " " << t << " s |";
+                std::cout << " time to 1%, before / after |" << (bias ? " bias (rel. RMSE) |" : "") << "\n|---|";
+                for (size_t i = 0; i <= o.budgets.size() + (bias ? 1 : 0); ++i) std::cout << "---:|";
+                std::cout << "\n";
+                header = true;
+            }
+            std::cout << "| " << integrator << " |";
+            for (size_t i = 0; i < o.budgets.size(); ++i)
+                std::cout << " " << std::setprecision(3) << b->second.relMse[i] / a->second.relMse[i] << " |";
+            const ErrorFit &fb = fits[b->first], &fa = fits[a->first];
+            const double tb = fb.timeTo(0.01), ta = fa.timeTo(0.01);
+            if (std::isfinite(tb) || std::isfinite(ta)) std::cout << " " << std::setprecision(3) << tb / ta << " |";
+            else std::cout << " neither reaches it |";
+            if (bias) std::cout << " " << std::sqrt(std::max(0.0, fa.B - fb.B)) << " |";
+            std::cout << "\n";
         }
-        std::cout << "| " << integrator << " |";
-        for (size_t i = 0; i < o.budgets.size(); ++i)
-            std::cout << " " << std::setprecision(3) << off->second.relMse[i] / on->second.relMse[i] << " |";
-        const ErrorFit &fOn = fits[on->first], &fOff = fits[off->first];
-        std::cout << " " << std::setprecision(3) << fOff.timeTo(0.01) / fOn.timeTo(0.01) << " | "
-                  << std::sqrt(std::max(0.0, fOn.B - fOff.B)) << " |\n";
-    }
-    std::cout << "\nadaptive sampling (--noise-threshold): not on this branch yet; its column stays n/a\n";
+    };
+    compareVariants("The weave filter: off (before) against on (after), uniform sampling; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, 0.0}; },
+                    [&](const std::string& i) { return Variant{i, true, 0.0}; }, true);
+    compareVariants("Adaptive sampling: uniform (before) against T = " + std::to_string(defaultThreshold).substr(0, 4) +
+                        " (after), filter off",
+                    [&](const std::string& i) { return Variant{i, false, 0.0}; },
+                    [&](const std::string& i) { return Variant{i, false, defaultThreshold}; }, false);
+    if (defaultFilter)  // else the table above is this one
+        compareVariants("The default settings (after) against --noise-threshold 0 without the filter (before)",
+                        [&](const std::string& i) { return Variant{i, false, 0.0}; },
+                        [&](const std::string& i) { return Variant{i, defaultFilter, defaultThreshold}; }, false);
 
-    // Which integrator is most efficient with the default filter setting, and what auto picks.
-    const bool defaultFilter = std::find(o.filters.begin(), o.filters.end(), "on") != o.filters.end();
+    // Which integrator is most efficient with the default settings, and what auto picks.
     std::string winner;
     double top = -1;
     for (const std::string& integrator : {std::string("path"), std::string("bdpt")}) {
-        const auto r = runs.find(Variant{integrator, defaultFilter}.name());
+        const auto r = runs.find(Variant{integrator, defaultFilter, defaultThreshold}.name());
         if (r != runs.end() && r->second.efficiency > top) {
             top = r->second.efficiency;
             winner = integrator;
         }
     }
     if (winner.empty()) return;
-    const auto autoRuns = runs.find(Variant{"auto", defaultFilter}.name());
-    const std::string picked =
-        autoRuns != runs.end() ? autoRuns->second.picked : renderFor(scene, o, "auto", 0.5, 99, defaultFilter).integrator;
+    const auto autoRuns = runs.find(Variant{"auto", defaultFilter, defaultThreshold}.name());
+    const std::string picked = autoRuns != runs.end()
+                                   ? autoRuns->second.picked
+                                   : renderFor(scene, o, "auto", 0.5, 99, defaultFilter, defaultThreshold).integrator;
     std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << picked
               << (picked == winner ? " (agrees)" : " (DISAGREES)") << "\n";
 }
@@ -294,8 +342,8 @@ void addConvergeCommand(CLI::App& app) {
     auto o = std::make_shared<ConvergeOptions>();
     CLI::App* cmd = app.add_subcommand(
         "converge",
-        "Error against an unfiltered converged reference versus time for each integrator, with the weave filter on "
-        "and off (tables, CSV, log-log PNG)");
+        "Error against an unfiltered, uniformly sampled converged reference versus time for each integrator, with "
+        "the weave filter on and off and adaptive sampling off and on (tables, CSV, log-log PNG)");
     cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
     cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',');
     cmd->add_option("--integrators", o->integrators, "integrators to compare (path, bdpt, auto)")
@@ -304,6 +352,10 @@ void addConvergeCommand(CLI::App& app) {
     cmd->add_option("--filter", o->filters, "the weave filter: on, off or on,off (both, compared)")
         ->delimiter(',')
         ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--noise-thresholds", o->thresholds,
+                    "adaptive sampling's thresholds to compare; 0: uniform sampling (default: 0 and woven render's)")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));

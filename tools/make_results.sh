@@ -60,16 +60,17 @@ bake_figure() {
     echo
     echo "### $scene"
     echo
-    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 --filter on --integrators path,bdpt \
+    run "$woven" converge "assets/$scene.json" --budgets 1,2,4,8 --reference-time 120 --filter off --noise-thresholds 0 --integrators path,bdpt \
         --width 320 --height 240 --out-dir "$out"
     echo
     echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
   done
   echo
-  echo "## Time to a clean frame: the weave filter"
+  echo "## Time to a clean frame: the weave filter and adaptive sampling"
   echo
-  echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), against an"
-  echo "unfiltered reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
+  echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), and"
+  echo "adaptive sampling off and at the default \\`--noise-threshold 0.05\\`, against an unfiltered, uniformly"
+  echo "sampled reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
   for scene in default_scene paper_d_satin; do
     echo
     echo "### $scene"
