@@ -17,37 +17,18 @@
 #include <string>
 
 #include "image_io.h"
+#include "woven_command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct Result {
-    int status;
-    std::string output;  // stdout and stderr
-};
+using Result = woven::test::CommandResult;
+Result run(const std::string& args) { return woven::test::runWovenCommand(args); }
 
-Result run(const std::string& args) {
-    const std::string cmd = std::string(WOVEN_BINARY) + " " + args + " 2>&1";
-    Result result{-1, ""};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) result.output.append(buffer, n);
-    result.status = pclose(pipe);
-    return result;
-}
-
-class UntrustedCommands : public testing::Test {
+class UntrustedCommands : public woven::test::CommandTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("woven_untrusted_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string file(const std::string& name) const { return (dir_ / name).string(); }
     const std::string scene_ = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
     std::string render(const std::string& name, int first, int spp) {
         EXPECT_EQ(run("render " + scene_ + " --width 16 --height 12 --integrator path --noise-threshold 0 --first-sample " +
@@ -56,8 +37,6 @@ protected:
                   0);
         return file(name);
     }
-
-    fs::path dir_;
 };
 
 TEST_F(UntrustedCommands, MoreThreadsThanTheMachineHasAreCappedWithAWarning) {
