@@ -37,7 +37,7 @@ struct RenderSettings {
 
 // --noise-threshold's default. At 64 spp few pixels reach it before their last sample, so it
 // costs a default render nothing, while flat and directly lit regions stop early; of the
-// thresholds measured at equal time it did best (docs/RESULTS.md, "Adaptive sampling").
+// thresholds measured at equal time it did best (docs/RESULTS.md, "Time to a clean frame").
 constexpr double kDefaultNoiseThreshold = 0.05;
 
 // The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto, noise
