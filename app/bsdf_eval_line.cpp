@@ -1,0 +1,89 @@
+#include "bsdf_eval_line.h"
+
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "material_json.h"
+
+namespace woven {
+
+namespace {
+
+const char* yarnName(YarnType t) {
+    switch (t) {
+        case YarnType::Weft: return "weft";
+        case YarnType::Warp: return "warp";
+        case YarnType::Gap: return "gap";
+    }
+    return "gap";
+}
+
+glm::vec3 readDirection(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key)) throw std::invalid_argument(std::string("missing '") + key + "'");
+    const auto& v = j.at(key);
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+        throw std::invalid_argument(std::string("'") + key + "' must be an array of 3 numbers");
+    glm::vec3 d(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+    const float len = glm::length(d);
+    if (!std::isfinite(len) || len <= 0.0f)
+        throw std::invalid_argument(std::string("'") + key + "' must be a finite non-zero vector");
+    return d / len;
+}
+
+glm::dvec2 readUv(const nlohmann::json& j) {
+    if (!j.contains("uv")) return glm::dvec2(0.0);
+    const auto& v = j.at("uv");
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        throw std::invalid_argument("'uv' must be an array of 2 numbers");
+    glm::dvec2 uv(v[0].get<double>(), v[1].get<double>());
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) throw std::invalid_argument("'uv' must be finite");
+    return uv;
+}
+
+// The flat surface of bsdf-eval: normal +z, dp/du = +x, dp/dv = +y. A viewer below it sees the
+// back face.
+ShadingInput flatSurface(const glm::dvec2& uv, const glm::vec3& wo) {
+    ShadingInput in;
+    in.uv = uv;
+    in.backSide = wo.z < 0.0f;
+    return in;
+}
+
+}  // namespace
+
+const WovenMaterial& MaterialCache::get(const nlohmann::json& j) {
+    const std::string key = j.dump();
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return *it->second;
+    // "wif" is read from the working directory, as for --woven.
+    std::vector<std::string> warnings;
+    const MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
+    if (read.threadsPerCm) throw std::invalid_argument("'scale': \"draft\" needs a mesh to measure; bsdf-eval has none");
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    auto material = std::make_unique<WovenMaterial>(read.params);
+    return *cache_.emplace(key, std::move(material)).first->second;
+}
+
+nlohmann::json evalLine(MaterialCache& cache, const nlohmann::json& query) {
+    if (!query.is_object()) throw std::invalid_argument("each line must be a JSON object");
+    if (!query.contains("material")) throw std::invalid_argument("missing 'material'");
+    const WovenMaterial& material = cache.get(query.at("material"));
+    const glm::vec3 wi = readDirection(query, "wi"), wo = readDirection(query, "wo");
+    const auto shading = material.shade(flatSurface(readUv(query), wo));
+    nlohmann::json out;
+    if (!shading) {
+        out["f"] = {0.0, 0.0, 0.0};
+        out["pdf"] = 0.0;
+        out["yarn"] = "gap";
+        return out;
+    }
+    const glm::vec3 f = shading->bsdf.eval(wo, wi);
+    out["f"] = {f.r, f.g, f.b};
+    out["pdf"] = shading->bsdf.pdf(wo, wi);
+    out["yarn"] = yarnName(shading->yarn);
+    return out;
+}
+
+}  // namespace woven
