@@ -45,11 +45,30 @@ const std::set<std::string> kCompressionExtensions = {
     "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
 };
 
+// Where keepEncodedImage keeps the bytes, and the model tinygltf is filling, whose buffers it
+// checks an image's buffer view against: tinygltf hands over &buffer[byteOffset] and byteLength
+// unchecked (a view past its buffer was read out of bounds; found by fuzz/fuzz_gltf).
+struct ImageSink {
+    EncodedImages* images;
+    const tinygltf::Model* model;
+};
+
 // tinygltf hands every image's encoded bytes to this callback; decoding waits until we know
 // how the image is used (sRGB colour or linear data) and whether it is used at all.
-bool keepEncodedImage(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+bool keepEncodedImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
                       const unsigned char* bytes, int size, void* user) {
-    static_cast<EncodedImages*>(user)->operator[](index).assign(bytes, bytes + size);
+    const ImageSink& sink = *static_cast<const ImageSink*>(user);
+    if (image->bufferView >= 0) {  // tinygltf has checked the view's and its buffer's index
+        const tinygltf::BufferView& view = sink.model->bufferViews[size_t(image->bufferView)];
+        const size_t bufferBytes = sink.model->buffers[size_t(view.buffer)].data.size();
+        if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset || size < 0) {
+            *err += "image " + std::to_string(index) + ": bufferView " + std::to_string(image->bufferView) +
+                    " (byteOffset " + std::to_string(view.byteOffset) + ", byteLength " + std::to_string(view.byteLength) +
+                    ") lies outside buffer " + std::to_string(view.buffer) + " (" + std::to_string(bufferBytes) + " bytes)";
+            return false;
+        }
+    }
+    (*sink.images)[index].assign(bytes, bytes + size);
     return true;
 }
 
@@ -147,7 +166,7 @@ private:
                     failCompressed(name.get<std::string>());
         tinygltf::TinyGLTF reader;
         reader.SetFsCallbacks({fileExists, keepPath, readFile, refuseWrite, this});
-        reader.SetImageLoader(keepEncodedImage, &encodedImages_);
+        reader.SetImageLoader(keepEncodedImage, &imageSink_);
         reader.SetStoreOriginalJSONForExtrasAndExtensions(true);
         std::string err, warn;
         const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
@@ -601,6 +620,7 @@ private:
     nlohmann::json document_;
     tinygltf::Model model_;
     EncodedImages encodedImages_;
+    ImageSink imageSink_{&encodedImages_, &model_};
     std::vector<glm::mat4> nodeWorld_;
     SceneDescription scene_;
 };

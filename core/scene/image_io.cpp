@@ -13,6 +13,7 @@
 #include <fstream>
 
 #include "atomic_file.h"
+#include "exr_header.h"
 #include "file_reading.h"
 
 namespace woven {
@@ -78,6 +79,7 @@ std::string oiioError(const OIIO::ImageInput* input) {
 OpenedImage openImage(const unsigned char* data, size_t size, const std::string& name) {
     OpenedImage image;
     image.format = detectFormat(data, size, name);
+    if (image.format == ImageFormat::Exr) checkExrAttributeSizes(data, size, name);
     image.memory = std::make_unique<OIIO::Filesystem::IOMemReader>(data, size);
     // The name only tells OpenImageIO which decoder to use: the bytes come from memory. Alpha
     // stays as stored (glTF's is not premultiplied; OpenImageIO would premultiply it).
@@ -85,6 +87,10 @@ OpenedImage openImage(const unsigned char* data, size_t size, const std::string&
     config.attribute("oiio:UnassociatedAlpha", 1);
     void* proxy = image.memory.get();
     config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    // Bytes that the decoder refuses would otherwise go to every other reader OpenImageIO has
+    // (DICOM, JPEG 2000, ...): slow, and far more decoders than woven means to expose.
+    static const bool onlyTheNamedDecoder = OIIO::attribute("try_all_readers", 0);
+    (void)onlyTheNamedDecoder;
     image.input = OIIO::ImageInput::open(std::string("image") + formatExtension(image.format), &config, image.memory.get());
     if (!image.input) fail(name, "cannot decode the image: " + oiioError(nullptr));
     const OIIO::ImageSpec& spec = image.input->spec();

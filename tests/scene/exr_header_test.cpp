@@ -1,0 +1,99 @@
+// OpenEXR headers checked before OpenEXR reads them: the fuzzer's 76-byte file whose attribute
+// claims 1.9 GB (OpenEXR 3.1 allocated it first: 2.3 GB and 2 s), and its kin.
+#include "exr_header.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <vector>
+
+#include "image_io.h"
+#include "temp_dir.h"
+
+namespace woven {
+namespace {
+
+using ::testing::HasSubstr;
+using Bytes = std::vector<unsigned char>;
+
+void put(Bytes& b, const std::string& text) { b.insert(b.end(), text.begin(), text.end() + 1); }  // with its null
+void put32(Bytes& b, uint32_t v) {
+    for (int i = 0; i < 4; ++i) b.push_back((unsigned char)(v >> (8 * i)));
+}
+
+// Magic, version 2 with `flags`, then one attribute of the given type whose size field says
+// `claimed` while `actual` bytes follow.
+Bytes exrWithAttribute(uint32_t flags, uint32_t claimed, size_t actual) {
+    Bytes b = {0x76, 0x2f, 0x31, 0x01};
+    put32(b, 2 | flags);
+    put(b, "capDate");
+    put(b, "string");
+    put32(b, claimed);
+    b.insert(b.end(), actual, 'x');
+    b.push_back(0);  // end of the header
+    return b;
+}
+
+std::string refusal(const Bytes& b) {
+    try {
+        checkExrAttributeSizes(b.data(), b.size(), "sky.exr");
+    } catch (const ImageError& e) {
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+TEST(ExrHeader, AnAttributeLargerThanTheFileIsRefusedByName) {
+    EXPECT_EQ(refusal(exrWithAttribute(0, 1979711507, 19)),
+              "sky.exr: the OpenEXR attribute 'capDate' claims 1979711507 bytes, but the file has 20 left");
+    EXPECT_THAT(refusal(exrWithAttribute(0, 0x80000000u, 19)), HasSubstr("claims -2147483648 bytes"));
+    EXPECT_EQ(refusal(exrWithAttribute(0, 19, 19)), "(accepted)");
+}
+
+TEST(ExrHeader, CutShortHeadersAreRefused) {
+    Bytes b = exrWithAttribute(0, 4, 4);
+    b.pop_back();  // no end of header: the next name never ends
+    EXPECT_EQ(refusal(b), "sky.exr: the OpenEXR header is cut short");
+    b.resize(20);  // inside the type name
+    EXPECT_EQ(refusal(b), "sky.exr: the OpenEXR header is cut short");
+    // A multi-part file's headers end with an empty one, which is missing here.
+    EXPECT_EQ(refusal(exrWithAttribute(0x1000, 4, 4)), "sky.exr: the OpenEXR header is cut short");
+}
+
+TEST(ExrHeader, EveryPartOfAMultiPartFileIsChecked) {
+    Bytes b = exrWithAttribute(0x1000, 4, 4);
+    put(b, "name");
+    put(b, "string");
+    put32(b, 1000);
+    b.push_back(0);
+    EXPECT_THAT(refusal(b), HasSubstr("'name' claims 1000 bytes"));
+}
+
+TEST(ExrHeader, ReadExrAndReadImageRefuseTheFileQuickly) {
+    const test::TempDir dir;
+    const std::string path = dir.file("part.exr");
+    const Bytes b = exrWithAttribute(0, 1979711507, 19);
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+    EXPECT_THROW(
+        try { readExr(path); } catch (const ImageError& e) {
+            EXPECT_THAT(e.what(), HasSubstr(path + ": the OpenEXR attribute 'capDate' claims"));
+            throw;
+        },
+        ImageError);
+    EXPECT_THROW(readImage(path), ImageError);
+}
+
+TEST(ExrHeader, FilesWovenWritesPass) {
+    const test::TempDir dir;
+    ExrImage exr;
+    exr.image.width = 2;
+    exr.image.height = 1;
+    exr.image.pixels = {{1, 2, 3}, {4, 5, 6}};
+    exr.sampleCount = {1, 2};
+    writeExr(dir.file("a.exr"), exr, ExrPrecision::Float);
+    EXPECT_EQ(readExr(dir.file("a.exr")).sampleCount, exr.sampleCount);
+}
+
+}  // namespace
+}  // namespace woven
