@@ -62,9 +62,21 @@ const char* formatExtension(ImageFormat f) {
     return "";
 }
 
+// OpenImageIO 2.4's IOMemReader::pread copies from before its buffer for a small read at a
+// negative offset (its bounds check wraps around): an EXR whose line offsets lead there was
+// read out of bounds (found by fuzz/fuzz_exr). Reads outside the bytes read nothing.
+class CheckedMemReader : public OIIO::Filesystem::IOMemReader {
+public:
+    using IOMemReader::IOMemReader;
+    size_t pread(void* buf, size_t size, int64_t offset) override {
+        if (offset < 0 || uint64_t(offset) > this->size()) return 0;
+        return IOMemReader::pread(buf, size, offset);
+    }
+};
+
 // An image opened from memory, its size checked against the limits before any pixel is read.
 struct OpenedImage {
-    std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+    std::unique_ptr<CheckedMemReader> memory;
     std::unique_ptr<OIIO::ImageInput> input;
     ImageFormat format;
     const OIIO::ImageSpec& spec() const { return input->spec(); }
@@ -80,7 +92,7 @@ OpenedImage openImage(const unsigned char* data, size_t size, const std::string&
     OpenedImage image;
     image.format = detectFormat(data, size, name);
     if (image.format == ImageFormat::Exr) checkExrAttributeSizes(data, size, name);
-    image.memory = std::make_unique<OIIO::Filesystem::IOMemReader>(data, size);
+    image.memory = std::make_unique<CheckedMemReader>(data, size);
     // The name only tells OpenImageIO which decoder to use: the bytes come from memory. Alpha
     // stays as stored (glTF's is not premultiplied; OpenImageIO would premultiply it).
     OIIO::ImageSpec config;
