@@ -7,10 +7,6 @@
 
 namespace woven {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 const std::vector<DirectionPair>& farFieldDirections() {
     static const std::vector<DirectionPair> pairs = [] {
         // A Fibonacci spiral on the unit disk lifted to the hemisphere: n directions spread

@@ -21,7 +21,6 @@ namespace woven {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr float kYfov = 0.5f;  // radians
 
 // The flat cloth: a square on y = 0 with one uv unit a metre, in `material` (over `textures`),

@@ -117,6 +117,11 @@ OpenedImage openImage(const unsigned char* data, size_t size, const std::string&
     if (spec.nchannels <= 0 || spec.nchannels > kMaxImageChannels)
         fail(name, "the image has " + std::to_string(spec.nchannels) + " channels (woven reads 1 to " +
                        std::to_string(kMaxImageChannels) + ")");
+    const int64_t decodedBytes = int64_t(spec.width) * spec.height * spec.nchannels * 4;
+    if (decodedBytes > kMaxImageDecodedBytes)
+        fail(name, "the image's " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels of " +
+                       std::to_string(spec.nchannels) + " channels decode to " + std::to_string(decodedBytes >> 20) +
+                       " MiB, more than woven's limit of " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
     return image;
 }
 

@@ -25,6 +25,9 @@ struct ImageError : std::runtime_error {
 constexpr int kMaxImageSide = 32768;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
 constexpr int kMaxImageChannels = 64;
+// All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or an 8k x 8k EXR part
+// with its 16 channels of colour, count and sums (4 GiB).
+constexpr int64_t kMaxImageDecodedBytes = int64_t(4) << 30;
 constexpr size_t kMaxImageFileBytes = size_t(1) << 30;
 
 // How 8- and 16-bit channels are turned into linear floats. Colour textures (baseColor,

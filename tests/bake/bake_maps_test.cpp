@@ -129,14 +129,15 @@ TEST_P(BakedMaps, AgreeWithTheModelAtPointsInsideTheYarnsAndGaps) {
     EXPECT_EQ(coverageWrong, 0) << "of " << coverageChecked;
     // Colour: one scale for every point (the far field's fitted scale), up to sRGB's 8 bits
     // (half a step: 0.2 % at mid grey, 1.5 % at 0.08) and the noise changing across the texels
-    // that bilinear filtering mixes (1.2 % a texel at noise 0.3): 4.2 % at worst, measured.
+    // that bilinear filtering mixes (1.2 % a texel at noise 0.3): at worst 4.2 % measured with GCC
+    // 12 and 5.4 % with clang 14 (which rounds the noise's sums differently), so 6 %.
     std::sort(colourRatios.begin(), colourRatios.end());
     const float median = colourRatios[colourRatios.size() / 2];
     EXPECT_GT(median, 0.6f);
     EXPECT_LT(median, 1.4f);
-    EXPECT_LT(colourRatios.front() / median, 1.0f + 0.05f);
-    EXPECT_GT(colourRatios.front() / median, 1.0f - 0.05f);
-    EXPECT_LT(colourRatios.back() / median, 1.0f + 0.05f);
+    EXPECT_LT(colourRatios.front() / median, 1.0f + 0.06f);
+    EXPECT_GT(colourRatios.front() / median, 1.0f - 0.06f);
+    EXPECT_LT(colourRatios.back() / median, 1.0f + 0.06f);
     // The normal: 8 bits a component (0.3 degree) and bilinear filtering between texels of a
     // turning normal (0.8 degree where it turns fastest among interior points: cy 0.8, 256 texels).
     EXPECT_LT(worstNormal, 1.5f * degree);
