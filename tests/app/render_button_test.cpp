@@ -3,9 +3,11 @@
 // `woven render`'s for the same scene and options: bit for bit, since both run the same
 // RenderJob with the same camera, seed and sample range.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <gmock/gmock.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -22,13 +24,15 @@ using test::TempDir;
 
 // Runs `woven ARGS`; its stderr goes to `errors` when given.
 int run(const std::string& args, std::string* errors = nullptr) {
-    const std::string errorFile = testing::TempDir() + "woven_render_button_stderr.txt";
+    // One file per test process: CTest runs this suite's tests side by side.
+    const std::string errorFile = testing::TempDir() + "woven_render_button_stderr_" + std::to_string(::getpid()) + ".txt";
     const std::string cmd = std::string(WOVEN_BINARY) + " " + args + " 2>" + errorFile + " >/dev/null";
     const int status = std::system(cmd.c_str());
     if (errors) {
         std::ifstream in(errorFile);
         *errors = std::string(std::istreambuf_iterator<char>(in), {});
     }
+    std::remove(errorFile.c_str());
     return status;
 }
 

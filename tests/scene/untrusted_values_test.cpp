@@ -37,7 +37,7 @@ std::string writeScene(TempDir& dir, const std::string& name, const json& camera
                        const json& lights = json::array()) {
     GltfBuilder b;
     const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})}}}});
-    b.json()["cameras"] = {camera};
+    b.json()["cameras"] = json::array({camera});
     json node = cameraNode;
     node["camera"] = 0;
     std::vector<int> roots{b.addNode({{"mesh", mesh}}), b.addNode(node)};
