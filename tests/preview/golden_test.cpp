@@ -3,6 +3,7 @@
 //   WOVEN_UPDATE_GOLDEN=1 ctest -R GoldenScreenshots
 // (writes tests/preview/golden/*.png in the source tree), then look at them before committing.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <cmath>
@@ -64,7 +65,9 @@ class GoldenScreenshots : public testing::TestWithParam<GoldenCase> {};
 TEST_P(GoldenScreenshots, MatchCommittedPng) {
     const int w = 160, h = 120;
     const std::string golden = std::string(WOVEN_GOLDEN_DIR) + "/" + GetParam().name + ".png";
-    const std::string shot = testing::TempDir() + "woven_preview_" + GetParam().name + ".png";
+    // Named by process too: two builds' suites may run at once on one machine.
+    const std::string shot =
+        testing::TempDir() + "woven_preview_" + GetParam().name + "_" + std::to_string(::getpid()) + ".png";
     writePng(shot, previewRadiance(wavyClothScene(GetParam().params), w, h), {0.0f, ToneMap::Clamp});
     if (std::getenv("WOVEN_UPDATE_GOLDEN")) {
         std::filesystem::copy_file(shot, golden, std::filesystem::copy_options::overwrite_existing);
@@ -89,6 +92,7 @@ TEST_P(GoldenScreenshots, MatchCommittedPng) {
     }
     EXPECT_LE(double(bad), 0.005 * double(got.pixels.size())) << GetParam().name;
     EXPECT_LT(sum / double(got.pixels.size()), 0.5) << GetParam().name;
+    if (!HasFailure()) std::filesystem::remove(shot);  // kept to look at when it differs
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, GoldenScreenshots, testing::ValuesIn(goldenCases()),
