@@ -112,6 +112,24 @@ TEST(UntrustedGltf, AnAccessorClaimingMoreThanItsBufferHoldsIsRefusedBeforeAlloc
     EXPECT_THAT(loadError(dir.file("big.gltf")), HasSubstr("big.gltf"));
 }
 
+TEST(UntrustedGltf, ASparseAccessorClaimingBillionsOfElementsIsRefusedBeforeAllocating) {
+    TempDir dir;
+    writeWithBuffer(dir.file("sparse.gltf"), "sparse.bin");
+    std::ifstream in(dir.file("sparse.gltf"));
+    json doc = json::parse(in);
+    const json sparse = {{"count", 2147483647},
+                         {"indices", {{"bufferView", 0}, {"componentType", 5125}}},
+                         {"values", {{"bufferView", 0}}}};
+    // Sparse entries in a 36-byte view: 2^31 - 1 indices and values it cannot hold.
+    doc["accessors"][0]["sparse"] = sparse;
+    std::ofstream(dir.file("sparse.gltf")) << doc.dump();
+    EXPECT_THAT(loadError(dir.file("sparse.gltf")), HasSubstr("sparse indices"));
+    // And with no view at all: zeros made sparse, 2^31 - 1 elements of nothing.
+    doc["accessors"][0] = {{"componentType", 5126}, {"count", 2147483647}, {"type", "VEC3"}, {"sparse", sparse}};
+    std::ofstream(dir.file("sparse.gltf")) << doc.dump();
+    EXPECT_THAT(loadError(dir.file("sparse.gltf")), HasSubstr("claims 2147483647 elements"));
+}
+
 std::string imageError(const std::string& bytes) {
     try {
         decodeTexture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "texture.x");
