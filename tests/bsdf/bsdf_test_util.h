@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "direction_domain.h"
 #include "gltf_bxdf.h"
 #include "reference_gltf_brdf.h"
 #include "sheen_lobe.h"
@@ -164,31 +165,12 @@ inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfin
 struct GaussRule {
     std::vector<double> nodes, weights;
 };
-inline GaussRule makeGaussRule(int order) {
-    GaussRule r;
-    r.nodes.resize(order);
-    r.weights.resize(order);
-    for (int i = 0; i < order; ++i) {
-        double x = std::cos(gltfref::kPi * (i + 0.75) / (order + 0.5)), dp = 0.0;
-        for (int iter = 0; iter < 100; ++iter) {  // Newton on P_order
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= order; ++k) {
-                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = order * (x * p1 - p0) / (x * x - 1.0);
-            const double dx = p1 / dp;
-            x -= dx;
-            if (std::fabs(dx) < 1e-15) break;
-        }
-        r.nodes[i] = 0.5 * (1.0 - x);
-        r.weights[i] = 1.0 / ((1.0 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
-    }
-    return r;
-}
 inline const GaussRule& gaussRule8() {
-    static const GaussRule rule = makeGaussRule(8);
+    static const GaussRule rule = [] {
+        GaussRule r;
+        gaussLegendre(8, r.nodes, r.weights);
+        return r;
+    }();
     return rule;
 }
 

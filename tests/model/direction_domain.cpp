@@ -64,28 +64,6 @@ private:
     double sx_, sy_;
 };
 
-// Gauss-Legendre nodes and weights on [0, 1].
-void gaussLegendre(int order, std::vector<double>& nodes, std::vector<double>& weights) {
-    nodes.resize(order);
-    weights.resize(order);
-    for (int i = 0; i < order; ++i) {
-        double x = std::cos(kPi * (i + 0.75) / (order + 0.5)), dp = 0.0;
-        for (int iter = 0; iter < 100; ++iter) {  // Newton on P_order
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= order; ++k) {
-                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = order * (x * p1 - p0) / (x * x - 1.0);
-            const double dx = p1 / dp;
-            x -= dx;
-            if (std::fabs(dx) < 1e-15) break;
-        }
-        nodes[i] = 0.5 * (1.0 - x);
-        weights[i] = 1.0 / ((1.0 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
-    }
-}
 
 // Regularised lower incomplete gamma P(a, x) by series, upper Q(a, x) by continued fraction
 // (Numerical Recipes, 6.2).
@@ -216,6 +194,28 @@ ChiSquareOutcome chiSquareTest(const std::vector<double>& observed, const std::v
     const double p = chiSquarePValue(statistic, dof);
     msg << "chi2 = " << statistic << ", dof = " << dof << ", p = " << p << ", significance = " << significance;
     return {p >= significance, p, statistic, dof, msg.str()};
+}
+
+void gaussLegendre(int order, std::vector<double>& nodes, std::vector<double>& weights) {
+    nodes.resize(order);
+    weights.resize(order);
+    for (int i = 0; i < order; ++i) {
+        double x = std::cos(kPi * (i + 0.75) / (order + 0.5)), dp = 0.0;
+        for (int iter = 0; iter < 100; ++iter) {  // Newton on P_order
+            double p0 = 1.0, p1 = x;
+            for (int k = 2; k <= order; ++k) {
+                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = order * (x * p1 - p0) / (x * x - 1.0);
+            const double dx = p1 / dp;
+            x -= dx;
+            if (std::fabs(dx) < 1e-15) break;
+        }
+        nodes[i] = 0.5 * (1.0 - x);
+        weights[i] = 1.0 / ((1.0 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
+    }
 }
 
 }  // namespace woven::test

@@ -61,4 +61,7 @@ ChiSquareOutcome chiSquareTest(const std::vector<double>& observed, const std::v
 // Upper tail Q(dof / 2, x / 2) of the chi-square distribution.
 double chiSquarePValue(double statistic, int dof);
 
+// Gauss-Legendre nodes and weights of the given order on [0, 1].
+void gaussLegendre(int order, std::vector<double>& nodes, std::vector<double>& weights);
+
 }  // namespace woven::test
