@@ -22,6 +22,14 @@ std::string shellArray(const std::string& name, const std::vector<std::string>& 
     return line + ")\n";
 }
 
+// `name=(...)` holding one field of every frame, in frame order: the scripts index it by frame.
+std::string frameArray(const std::string& name, const std::vector<ClusterFrame>& frames,
+                       std::string ClusterFrame::*field) {
+    std::vector<std::string> words;
+    for (const ClusterFrame& f : frames) words.push_back(f.*field);
+    return shellArray(name, words);
+}
+
 std::vector<std::string> commonSbatchArguments(const SbatchOptions& o) {
     std::vector<std::string> args;
     if (!o.partition.empty()) args.push_back("--partition=" + o.partition);
@@ -49,11 +57,6 @@ std::string SlurmJob::mergeLog(const std::string& jobId, int frameIndex) const {
 }
 
 std::string SlurmJob::renderScript() const {
-    std::vector<std::string> scenes, parts;
-    for (const ClusterFrame& f : frames) {
-        scenes.push_back(f.scene);
-        parts.push_back(f.parts);
-    }
     std::ostringstream s;
     s << "#!/bin/bash\n"
          "# Written by woven submit. Task T of the job array renders frame T / tasks, samples\n"
@@ -64,7 +67,7 @@ std::string SlurmJob::renderScript() const {
       << "set -euo pipefail\n"
       << "tasks=" << tasks << "\n"
       << "spp=" << spp << "\n"
-      << shellArray("scenes", scenes) << shellArray("parts", parts)
+      << frameArray("scenes", frames, &ClusterFrame::scene) << frameArray("parts", frames, &ClusterFrame::parts)
       << "index=${SLURM_ARRAY_TASK_ID:?not set: submit this script with sbatch --array=0-" << renderTasks() - 1
       << "}\n"
          "frame=$((index / tasks))\n"
@@ -80,11 +83,6 @@ std::string SlurmJob::renderScript() const {
 }
 
 std::string SlurmJob::mergeScript() const {
-    std::vector<std::string> outs, parts;
-    for (const ClusterFrame& f : frames) {
-        outs.push_back(f.out);
-        parts.push_back(f.parts);
-    }
     std::ostringstream s;
     s << "#!/bin/bash\n"
          "# Written by woven submit. Task F of the job array merges the part files of frame F (frame 0\n"
@@ -95,7 +93,7 @@ std::string SlurmJob::mergeScript() const {
          "# OUT.partial.exr from the parts there are and fails.\n"
          "set -euo pipefail\n"
          "shopt -s nullglob extglob\n"
-      << shellArray("outs", outs) << shellArray("parts", parts) << "frame=${SLURM_ARRAY_TASK_ID:-0}\n"
+      << frameArray("outs", frames, &ClusterFrame::out) << frameArray("parts", frames, &ClusterFrame::parts) << "frame=${SLURM_ARRAY_TASK_ID:-0}\n"
       << "exec " << shellQuote(woven) << " merge --expect-samples " << spp << " -o \"${outs[frame]}\" \\\n"
       << "    \"${parts[frame]}\"/" << kPartPrefix << "+([0-9])-+([0-9]).exr\n";
     return s.str();
