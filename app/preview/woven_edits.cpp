@@ -85,7 +85,7 @@ bool WovenEdits::apply() {
     scene_.materials = loadedMaterials_;
     for (size_t i = 0; i < scene_.meshes.size(); ++i) scene_.meshes[i].material = loadedMeshMaterials_[i];
     std::vector<WovenAssignment> assignments;
-    for (const WovenEdit& e : edits_) assignments.push_back({e.target, paramsToJson(e.params), "make woven " + e.target});
+    for (const WovenEdit& e : edits_) assignments.push_back({e.target, paramsToJson(e.params), "make woven " + e.target, ""});
     assignWoven(scene_, assignments);
     for (size_t i = 0; i < scene_.meshes.size(); ++i)
         if (scene_.meshes[i].material != before[i]) return true;

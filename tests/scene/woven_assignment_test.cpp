@@ -60,7 +60,7 @@ struct SofaScene {
     }
 };
 
-WovenAssignment set(const std::string& target, json params) { return {target, std::move(params), "materials." + target}; }
+WovenAssignment set(const std::string& target, json params) { return {target, std::move(params), "materials." + target, ""}; }
 
 TEST(WovenAssignment, LoaderRecordsMeshAndNodeNames) {
     SofaScene s;
