@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "parse_errors.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"woven: a renderer for woven fabric"};
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        return woven::reportParseError(app, e, argc, argv);
     } catch (const std::exception& e) {
         std::cerr << "woven: error: " << e.what() << "\n";
         return 1;

@@ -321,7 +321,7 @@ private:
         std::vector<T> all;
         for (const auto& v : values) all.push_back(v ? *v : common);
         warn("[" + side + "]: " + counted(int(values.size() - given.size()), threadName) + " without a " + what +
-             " take the one most others have");
+             ": given the " + what + " most of the other " + threadName + "s have");
         return all;
     }
 

@@ -294,7 +294,7 @@ TEST(WifReader, ThreadsLeftWithoutAValueTakeTheCommonOneWithAWarning) {
     const Draft d = readText(text, warnings);
     EXPECT_EQ(d.warp.colors, (std::vector<glm::vec3>{glm::vec3(0), glm::vec3(0), glm::vec3(1), glm::vec3(0),
                                                      glm::vec3(0), glm::vec3(0), glm::vec3(0), glm::vec3(0)}));
-    EXPECT_EQ(warningsWith(warnings, "[WARP]: 5 ends without a colour take the one most others have"), 1)
+    EXPECT_EQ(warningsWith(warnings, "[WARP]: 5 ends without a colour: given the colour most of the other ends have"), 1)
         << allOf(warnings);
     // A draft that gives no colour at all says nothing about colour: an empty list, no warning.
     warnings.clear();
