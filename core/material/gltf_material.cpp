@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "normal_map.h"
 
 namespace woven {
 
 namespace {
-
-glm::vec3 projectOut(const glm::vec3& v, const glm::vec3& n) { return v - glm::dot(v, n) * n; }
 
 bool usableLength(float length) { return length > 1e-12f && std::isfinite(length); }
 
@@ -43,7 +42,7 @@ glm::vec3 crossingTransmittance(const TransmissionParams& t, float thickness) {
 GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureImage>& textures)
     : SurfaceMaterial(material, textures),
       m_(material),
-      baseColorTexture_(material.baseColorTexture, textures),
+      baseColor_(material, textures),
       metallicRoughnessTexture_(material.metallicRoughnessTexture, textures),
       normalTexture_(material.normalTexture, textures),
       specularTexture_(material.specularTexture, textures),
@@ -61,13 +60,9 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
     dielectricF0_ = ior == 0.0f ? 1.0f : ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
 }
 
-glm::vec4 GltfMaterial::baseColor(const TexCoords& tc) const {
-    return m_.baseColor * baseColorTexture_.eval(tc) * tc.color;
-}
-
 GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     GltfBxdfInputs in;
-    in.baseColor = glm::vec3(baseColor(tc));
+    in.baseColor = glm::vec3(baseColor_.eval(tc));
     const glm::vec4 mr = metallicRoughnessTexture_.eval(tc);
     in.metallic = m_.metallic * mr.b;
     in.roughness = m_.roughness * mr.g;
@@ -92,33 +87,8 @@ GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     return in;
 }
 
-std::optional<Frame> GltfMaterial::tangentSpace(const SurfaceHit& hit) {
-    // The tangent frame of the file's normal (before ns was turned to ng's side): the tangents'
-    // handedness is defined against it.
-    Frame f;
-    f.z = hit.nsFlipped ? -hit.ns : hit.ns;
-    const glm::vec3 t = projectOut(hit.dpdu, f.z), b = projectOut(hit.dpdv, f.z);
-    const float tl = glm::length(t), bl = glm::length(b);
-    if (!usableLength(tl) || !usableLength(bl)) return std::nullopt;
-    f.x = t / tl;
-    f.y = b / bl;
-    return f;
-}
-
-glm::vec3 GltfMaterial::perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const {
-    const std::optional<Frame> tbn = tangentSpace(hit);
-    if (!tbn) return hit.ns;
-    glm::vec3 m = glm::vec3(map.eval(hit.tex)) * 2.0f - 1.0f;
-    m.x *= map.scale();
-    m.y *= map.scale();
-    const glm::vec3 perturbed = tbn->toWorld(m);
-    const float length = glm::length(perturbed);
-    if (!usableLength(length)) return hit.ns;
-    return (hit.nsFlipped ? -perturbed : perturbed) / length;
-}
-
 glm::vec3 GltfMaterial::shadingNormal(const SurfaceHit& hit) const {
-    return normalTexture_ ? perturbedNormal(normalTexture_, hit) : hit.ns;
+    return normalTexture_ ? normalMapped(normalTexture_, hit) : hit.ns;
 }
 
 glm::vec3 GltfMaterial::anisotropyDirection(const SurfaceHit& hit) const {
@@ -148,29 +118,18 @@ std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& w
     if (in.clearcoat > 0.0f) {
         // The coat follows the geometry's normal unless it has a normal map of its own.
         glm::vec3 coat = side * hit.ns;
-        if (clearcoatNormalTexture_) coat = keepReflectionAbove(ng, wo, side * perturbedNormal(clearcoatNormalTexture_, hit));
+        if (clearcoatNormalTexture_) coat = keepReflectionAbove(ng, wo, side * normalMapped(clearcoatNormalTexture_, hit));
         in.clearcoatNormal = frame.toLocal(coat);
     }
     return Bsdf(frame, Bxdf(GltfBxdf(in)));
 }
 
-bool GltfMaterial::mayPassThrough(const Mesh& mesh) const {
-    if (m_.alphaMode == AlphaMode::Opaque) return false;
-    return m_.baseColor.a < 1.0f || bool(baseColorTexture_) || !mesh.colors.empty() ||
-           (m_.alphaMode == AlphaMode::Mask && m_.alphaCutoff > 1.0f);
-}
+bool GltfMaterial::mayPassThrough(const Mesh& mesh) const { return baseColor_.mayPassThrough(mesh); }
 
-bool GltfMaterial::passesThrough(const TexCoords& tc, float u) const {
-    switch (m_.alphaMode) {
-        case AlphaMode::Opaque: return false;
-        case AlphaMode::Mask: return baseColor(tc).a < m_.alphaCutoff;
-        case AlphaMode::Blend: return u >= baseColor(tc).a;
-    }
-    return false;
-}
+bool GltfMaterial::passesThrough(const TexCoords& tc, float u) const { return baseColor_.passesThrough(tc, u); }
 
 glm::vec3 GltfMaterial::unlitRadiance(const TexCoords& tc) const {
-    return m_.unlit ? glm::max(glm::vec3(baseColor(tc)), glm::vec3(0.0f)) : glm::vec3(0.0f);
+    return m_.unlit ? glm::max(glm::vec3(baseColor_.eval(tc)), glm::vec3(0.0f)) : glm::vec3(0.0f);
 }
 
 }  // namespace woven

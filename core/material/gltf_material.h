@@ -1,10 +1,9 @@
 #pragma once
 // The glTF 2.0 metallic-roughness material with the extensions woven renders (docs/MATERIALS.md):
 // every texture looked up at the hit, the normal map applied, and the result handed to GltfBxdf.
-// Alpha: MASK cuts out below alphaCutoff, BLEND lets a ray through with probability 1 - alpha
-// (stochastic transparency, unbiased for any number of layers). KHR_materials_unlit shows the
-// base colour and reflects nothing. The occlusion texture is ignored: a path tracer computes
-// the occlusion it stands for.
+// Alpha cuts out as BaseColor says. KHR_materials_unlit shows the base colour and reflects
+// nothing. The occlusion texture is ignored: a path tracer computes the occlusion it stands for.
+#include "base_color.h"
 #include "surface_material.h"
 
 namespace woven {
@@ -16,7 +15,7 @@ public:
     std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
     bool mayPassThrough(const Mesh& mesh) const override;
     bool passesThrough(const TexCoords& tc, float u) const override;
-    bool passesRandomly() const override { return m_.alphaMode == AlphaMode::Blend; }
+    bool passesRandomly() const override { return baseColor_.blends(); }
     glm::vec3 unlitRadiance(const TexCoords& tc) const override;
 
     // The BSDF's inputs at a point, textures applied (the preview's tests compare with them).
@@ -28,15 +27,9 @@ public:
     glm::vec3 anisotropyDirection(const SurfaceHit& hit) const;
 
 private:
-    glm::vec4 baseColor(const TexCoords& tc) const;  // linear RGB and alpha, vertex colour included
-    // (tangent, bitangent, normal) of the file's normal at a hit, unit length; nullopt where the
-    // tangents are degenerate.
-    static std::optional<Frame> tangentSpace(const SurfaceHit& hit);
-    // A tangent-space normal texture applied to the hit's interpolated normal.
-    glm::vec3 perturbedNormal(const TextureSampler& map, const SurfaceHit& hit) const;
-
     Material m_;
-    TextureSampler baseColorTexture_, metallicRoughnessTexture_, normalTexture_;
+    BaseColor baseColor_;
+    TextureSampler metallicRoughnessTexture_, normalTexture_;
     TextureSampler specularTexture_, specularColorTexture_;
     TextureSampler sheenColorTexture_, sheenRoughnessTexture_;
     TextureSampler anisotropyTexture_;

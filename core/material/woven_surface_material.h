@@ -2,6 +2,10 @@
 // The woven model (core/model, MODEL.md) as a scene material: the yarn's BSDF at the hit's uv,
 // its see-through gaps as points rays pass through. A mesh without texture coordinates shows
 // solid cloth: every point takes the middle of the first weave element, which is on a yarn.
+// A glTF material made woven (Material::keptSurface) keeps its normal map, which the weave's
+// bump tilts further, its alpha cut-out (a ray passes where the weave has a gap or alpha says
+// so) and its base colour texture and vertex colour as a print on the yarns.
+#include "base_color.h"
 #include "surface_material.h"
 #include "woven_material.h"
 
@@ -17,11 +21,18 @@ public:
     bool filtersByFootprint() const override { return true; }
     bool mayPassThrough(const Mesh& mesh) const override;
     bool passesThrough(const TexCoords& tc, float u) const override;
+    bool passesRandomly() const override { return kept_ && baseColor_.blends(); }
 
     const WovenMaterial& model() const { return model_; }
 
 private:
+    // What the model is shaded with at a hit: uv, the normal-mapped normal, the print.
+    ShadingInput shadingInput(const SurfaceHit& hit, const glm::vec3& wo) const;
+
     WovenMaterial model_;
+    bool kept_, print_;  // Material::keptSurface, and its print
+    BaseColor baseColor_;
+    TextureSampler normalTexture_;
 };
 
 }  // namespace woven

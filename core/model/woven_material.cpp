@@ -83,8 +83,8 @@ std::optional<FramedLobe<FilteredWeaveLobe>> WovenMaterial::shadeFiltered(const 
     }
     // Each side's mean colour over the footprint's extent along its threads' axis.
     const glm::dvec2 e = in.uv * repeat, half = 0.5 * extent;
-    const glm::vec3 colors[3] = {weave_.warp().meanColor(e.x - half.x, e.x + half.x),
-                                 weave_.weft().meanColor(e.y - half.y, e.y + half.y), params_.backing_color};
+    const glm::vec3 colors[3] = {weave_.warp().meanColor(e.x - half.x, e.x + half.x) * in.print,
+                                 weave_.weft().meanColor(e.y - half.y, e.y + half.y) * in.print, params_.backing_color};
     const WeaveFarField& far = farField(in.backSide);
     const FilteredWeaveLobe lobe(far, colors, far.footprintScales(e - half, e + half), farWeight, nearFrame,
                                  nearLobe.value_or(AshikhminShirley(0.0f, 0.0f, 0.0f, glm::vec3(0.0f))));
@@ -107,6 +107,7 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in, const F
         const float n01 = yarnNoise(y.along * params_.noise_scale, seed);
         color = glm::clamp(color * (1.0f + yarn.noise() * n01), 0.0f, 1.0f);
     }
+    color *= in.print;
     const glm::vec3 bumped = tangent.toWorld(y.normal);
     const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
     const AshikhminShirley lobe(weave_.lobeShape(y.yarn), color);

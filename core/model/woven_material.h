@@ -20,6 +20,9 @@ struct ShadingInput {
     // How uv changes from this pixel to the next along x and y at this point (the pixel's
     // footprint, from ray differentials): what the filtered BSDF averages over. Zero: a point.
     glm::dvec2 duvdx{0.0}, duvdy{0.0};
+    // Multiplies the yarns' diffuse colour R_d (not the backing's): a glTF base colour texture
+    // printed on the cloth. 1 leaves the model's colours exactly as they are.
+    glm::vec3 print{1.0f};
 };
 
 struct WovenShading {

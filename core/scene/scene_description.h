@@ -91,6 +91,14 @@ struct TransmissionParams {
     float attenuationDistance = std::numeric_limits<float>::infinity();
 };
 
+// What a glTF material made woven by a scene file, --woven or the previewer keeps of itself
+// (docs/SCENE_FORMAT.md): its normal map and alpha cut-out always, its base colour unless
+// "keep_base_color": false (woven_assignment.cpp).
+struct KeptGltfSurface {
+    bool print = true;  // the base colour texture and vertex colour multiply the yarns' colour
+    bool colorsFromFactor = false;  // the yarn colours are the base colour factor's (no layer set one)
+};
+
 // A glTF 2.0 material (metallic-roughness, the KHR extensions woven reads), or a woven one.
 // Defaults are woven's default material for primitives without one: a grey dielectric, as
 // Blender gives them; the glTF loader sets every field from the file, whose defaults differ.
@@ -98,6 +106,9 @@ struct Material {
     std::string name;
     // Woven when set: the weave replaces the glTF BSDF; emission and doubleSided still apply.
     std::optional<WovenParams> woven;
+    // Set where a glTF material was made woven after loading. A material woven in its file
+    // (WOVEN_fabric) has none: its glTF fields are other viewers' fallback, not applied.
+    std::optional<KeptGltfSurface> keptSurface;
     std::string draft;  // the WIF file the woven parameters were made from ("wif"), if any
     glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};  // linear RGB and alpha
     TextureRef baseColorTexture;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <iostream>
@@ -67,6 +68,43 @@ int specificity(const Target& t, const Mesh& mesh, const Material* material) {
             return -1;
     }
     return -1;
+}
+
+// "keep_base_color" is read here, not by the model: takes it out of `layer`, nullopt where absent.
+std::optional<bool> takeKeepBaseColor(nlohmann::json& layer) {
+    if (!layer.is_object() || !layer.contains("keep_base_color")) return std::nullopt;
+    const nlohmann::json& keep = layer["keep_base_color"];
+    if (!keep.is_boolean()) throw std::invalid_argument("'keep_base_color' must be true or false");
+    const bool value = keep.get<bool>();
+    layer.erase("keep_base_color");
+    return value;
+}
+
+// Whether a layer gives the yarns colours of its own (a draft brings its threads' colours), which
+// then win over a glTF material's base colour factor.
+bool setsYarnColor(const nlohmann::json& layer) {
+    for (const char* key : {"weft_color", "warp_color", "warp_colors", "weft_colors", "wif"})
+        if (layer.contains(key)) return true;
+    return false;
+}
+
+// A glTF material made woven keeps its surface (Material::keptSurface): the base colour factor
+// becomes both yarn colours unless a layer sets one or `keep` (the layers' "keep_base_color")
+// is false. A later call that turns the base colour off gives back woven's default colours where
+// the factor had set them.
+void keepGltfSurface(Material& material, WovenParams& params, std::optional<bool> keep, bool colorKeys, bool wasWoven) {
+    KeptGltfSurface kept = material.keptSurface.value_or(KeptGltfSurface{});
+    if (keep) kept.print = *keep;
+    const bool fromFactor = kept.print && !colorKeys && (!wasWoven || keep || kept.colorsFromFactor);
+    const WovenParams defaults;
+    if (fromFactor) {
+        params.weft_color = params.warp_color = glm::vec3(material.baseColor);
+    } else if (kept.colorsFromFactor && !colorKeys) {
+        params.weft_color = defaults.weft_color;
+        params.warp_color = defaults.warp_color;
+    }
+    kept.colorsFromFactor = fromFactor;
+    material.keptSurface = kept;
 }
 
 std::string quotedList(const std::set<std::string>& names) {
@@ -138,12 +176,18 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         const auto& [materialIndex, order] = key;
         Material material = materialIndex >= 0 ? scene.materials[size_t(materialIndex)] : Material{};
         if (materialIndex < 0) material.name = "(no material)";
+        const bool wasWoven = material.woven.has_value();
         WovenParams params = material.woven.value_or(WovenParams{});
+        std::optional<bool> keepBaseColor;
+        bool colorKeys = false;
         std::string names;
         for (size_t a : order) {
             std::vector<std::string> draftWarnings;
             try {
-                const MaterialJson read = materialFromJson(assignments[a].params, params, assignments[a].directory, draftWarnings);
+                nlohmann::json layer = assignments[a].params;
+                if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
+                colorKeys |= setsYarnColor(layer);
+                const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, draftWarnings);
                 params = read.params;
                 if (read.threadsPerCm) {
                     params.repeat = repeatForThreadsPerCm(scene, meshes, *read.threadsPerCm);
@@ -165,6 +209,10 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
             }
             names += (names.empty() ? "" : ", ") + assignments[a].target;
         }
+        // A material woven in its file keeps its woven colours; a primitive without a material has
+        // no glTF surface to keep.
+        if (materialIndex >= 0 && (!wasWoven || material.keptSurface))
+            keepGltfSurface(material, params, keepBaseColor, colorKeys, wasWoven);
         material.woven = params;
         if (materialIndex >= 0 && meshes.size() == users[materialIndex]) {
             scene.materials[size_t(materialIndex)] = std::move(material);
