@@ -41,7 +41,9 @@ public:
             fail("gltf", e.what());
         }
         scene.source = path_;
-        scene.lightingFromSceneFile = true;
+        // Lighting the file chose is kept as it is; a file that only makes things woven is lit as
+        // its glTF file would be.
+        scene.lightingFromSceneFile = root.contains("environment") || root.contains("lights");
         if (root.contains("materials")) readMaterials(root["materials"], scene);
         if (root.contains("environment")) readEnvironment(root["environment"], scene.environment);
         if (root.contains("lights")) readLights(root["lights"], scene.lights);

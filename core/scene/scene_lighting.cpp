@@ -98,10 +98,13 @@ float punctualAndEnvironmentIrradiance(const SceneDescription& scene) {
     return sum + 3.14159265f * mean;
 }
 
-bool lightByDefault(SceneDescription& scene) {
-    if (scene.lightingFromSceneFile || hasLightSources(scene)) return false;
-    scene.environment = studioEnvironment();
-    return true;
+DefaultLighting lightByDefault(SceneDescription& scene) {
+    if (scene.lightingFromSceneFile) return DefaultLighting::None;
+    const DefaultLighting why = !hasLightSources(scene)                               ? DefaultLighting::NoLight
+                                : punctualAndEnvironmentIrradiance(scene) < kDimIrradiance ? DefaultLighting::TooDim
+                                                                                    : DefaultLighting::None;
+    if (why != DefaultLighting::None) scene.environment = studioEnvironment();
+    return why;
 }
 
 std::shared_ptr<Image> readEnvironmentImage(const std::string& path) {
@@ -121,6 +124,7 @@ std::shared_ptr<Image> readEnvironmentImage(const std::string& path) {
 }
 
 Environment environmentFromOption(const std::string& value) {
+    if (value == "none") return Environment{};  // black: the scene's punctual lights alone
     char* end = nullptr;
     const float grey = std::strtof(value.c_str(), &end);
     Environment env;

@@ -23,9 +23,19 @@ float punctualAndEnvironmentIrradiance(const SceneDescription& scene);
 // The built-in studio environment (an equirectangular image, 512 x 256).
 Environment studioEnvironment();
 
-// Lights a scene without light sources with studioEnvironment(), unless a woven scene file set
-// its lighting; returns whether it did.
-bool lightByDefault(SceneDescription& scene);
+// Why a scene was given the studio environment, as glTF viewers light a file with theirs: it
+// brings no light source, or its lights and environment are too dim to see at exposure 0 (glTF's
+// photometric units read as they are: a 3 lux sun gives 0.004 W/m^2).
+enum class DefaultLighting { None, NoLight, TooDim };
+
+// Irradiance (W/m^2) below which a scene counts as too dim: at exposure 0 such a frame is nearly
+// black, where the studio environment gives about 3.
+inline constexpr float kDimIrradiance = 0.05f;
+
+// Adds studioEnvironment() to a scene that has no light source or is too dim, in place of its
+// environment and beside its punctual lights, unless a woven scene file chose its lighting;
+// returns why it did (None: it did not).
+DefaultLighting lightByDefault(SceneDescription& scene);
 
 // An equirectangular environment image (readImage(), .png/.jpg decoded from sRGB), its pixels
 // checked as light: a non-finite or too bright one (light_limits.h) throws ImageError naming
@@ -33,8 +43,8 @@ bool lightByDefault(SceneDescription& scene);
 // with one warning on stderr.
 std::shared_ptr<Image> readEnvironmentImage(const std::string& path);
 
-// --environment's value: an image file (.hdr, .exr; .png/.jpg decoded from sRGB) or a number,
-// the radiance of a uniform grey environment. Throws SceneError naming the option and the file.
+// --environment's value: an image file (.hdr, .exr; .png/.jpg decoded from sRGB), a number,
+// the radiance of a uniform grey environment, or "none" (black, and no default lighting). Throws SceneError naming the option and the file.
 Environment environmentFromOption(const std::string& value);
 
 }  // namespace woven

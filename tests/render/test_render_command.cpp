@@ -143,14 +143,40 @@ TEST(RenderCommand, SceneWithoutLightsIsLitByTheStudioEnvironmentAndSaysSo) {
     EXPECT_GT(sum, 0.0);
 }
 
-TEST(RenderCommand, SceneFilesKeepTheirLightingAndDimLightsAreNamed) {
+double meanRadiance(const std::string& exr) {
+    const Image image = readExr(exr).image;
+    double sum = 0.0;
+    for (const glm::vec3& p : image.pixels) sum += luminance(p);
+    return sum / double(image.pixels.size());
+}
+
+TEST(RenderCommand, SceneFilesThatChooseNoLightingAreLitAsTheirGltfIs) {
     test::TempDir dir;
     writeScene(dir.file("dark.gltf"), false);
-    // A scene file says how its scene is lit: no studio is added to it.
+    // A scene file that only names its glTF file (or only makes things woven) is lit as the glTF
+    // file is: by the studio, said once.
     std::ofstream(dir.file("dark.json")) << "{\"gltf\": \"dark.gltf\"}";
-    const Result file = runWoven({"render", dir.file("dark.json"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
-    expectFailure(file, "dark.json", "scene has no lights", dir);
-    // A 3 lux sun, as glTF files from other tools often carry: rendered, and named as dim.
+    const Result plain = runWoven({"render", dir.file("dark.json"), "--spp", "1", "--width", "8", "--height", "6",
+                                   "--out", dir.file("plain.exr")}, dir);
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    EXPECT_NE(plain.err.find("dark.json has no light source"), std::string::npos) << plain.err;
+    EXPECT_GT(meanRadiance(dir.file("plain.exr")), 0.0);
+    // A scene file that sets its lighting keeps it, even black: nothing is added.
+    std::ofstream(dir.file("black.json")) << "{\"gltf\": \"dark.gltf\", \"environment\": {\"color\": [0, 0, 0]}}";
+    const Result black = runWoven({"render", dir.file("black.json"), "--spp", "1", "--out", dir.file("out.exr")}, dir);
+    expectFailure(black, "black.json", "scene has no lights", dir);
+    std::ofstream(dir.file("lamp.json")) << "{\"gltf\": \"dark.gltf\", \"lights\": [{\"type\": \"point\", "
+                                            "\"position\": [0, 2, 0], \"intensity\": 0.001}]}";
+    const Result lamp = runWoven({"render", dir.file("lamp.json"), "--spp", "1", "--width", "8", "--height", "6",
+                                  "--out", dir.file("lamp.exr")}, dir);
+    ASSERT_EQ(lamp.exitCode, 0) << lamp.err;
+    EXPECT_EQ(lamp.err.find("studio"), std::string::npos) << lamp.err;
+}
+
+TEST(RenderCommand, DimGltfLightsGetTheStudioBesideThemUnlessTheUserChoosesLight) {
+    test::TempDir dir;
+    // A 3 lux sun, as glTF files from other tools often carry (GlamVelvetSofa's): 0.0044 W/m^2,
+    // nearly black at exposure 0.
     test::GltfBuilder b;
     b.useExtension("KHR_lights_punctual");
     b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}, {"intensity", 3}}};
@@ -158,11 +184,26 @@ TEST(RenderCommand, SceneFilesKeepTheirLightingAndDimLightsAreNamed) {
     b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}}})}}),
                 b.addNode({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}})});
     b.writeGltf(dir.file("dim.gltf"));
-    const Result dim = runWoven({"render", dir.file("dim.gltf"), "--spp", "1", "--width", "8", "--height", "6",
-                                 "--out", dir.file("dim.exr")}, dir);
+    const std::vector<std::string> frame = {"--spp", "4", "--width", "8", "--height", "6", "--integrator", "path"};
+    const auto render = [&](const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args = {"render", dir.file("dim.gltf"), "--out", dir.file(out)};
+        args.insert(args.end(), frame.begin(), frame.end());
+        args.insert(args.end(), extra.begin(), extra.end());
+        return runWoven(args, dir);
+    };
+    const Result dim = render("dim.exr", {});
     ASSERT_EQ(dim.exitCode, 0) << dim.err;
-    EXPECT_NE(dim.err.find("dim.gltf is lit dimly"), std::string::npos) << dim.err;
-    EXPECT_NE(dim.err.find("(3 lux)"), std::string::npos) << dim.err;
+    EXPECT_NE(dim.err.find("dim.gltf is lit too dimly"), std::string::npos) << dim.err;
+    EXPECT_NE(dim.err.find(", 3 lux"), std::string::npos) << dim.err;
+    EXPECT_NE(dim.err.find("studio environment added"), std::string::npos) << dim.err;
+    // --environment none keeps the file's own light alone: the sun's 0.0044 W/m^2 on a grey
+    // triangle. The studio's dome alone is over 100 times brighter (about 1 W/m^2), so a factor of
+    // 20 cannot come from noise at 4 spp.
+    const Result own = render("own.exr", {"--environment", "none"});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    EXPECT_EQ(own.err.find("studio"), std::string::npos) << own.err;
+    EXPECT_GT(meanRadiance(dir.file("dim.exr")), 20.0 * meanRadiance(dir.file("own.exr")));
+    EXPECT_GT(meanRadiance(dir.file("own.exr")), 0.0);
 }
 
 TEST(RenderCommand, EnvironmentOptionLightsAnyScene) {
