@@ -71,7 +71,7 @@ bake_figure() {
   echo "Path, BDPT and auto with the experimental weave filter on (\\`--filter\\`) and off (the default), and"
   echo "adaptive sampling off and at the default \\`--noise-threshold 0.05\\`, against an unfiltered, uniformly"
   echo "sampled reference (path and BDPT merged, 200 s), 160x120; the filter's bias is in the error."
-  for scene in default_scene paper_d_satin; do
+  for scene in coarse_drape paper_d_satin; do
     echo
     echo "### $scene"
     echo
@@ -83,7 +83,7 @@ bake_figure() {
   echo
   echo "## What a woven feature costs a render"
   echo
-  run "$build/bench/features/bench_features" assets/default_scene.json
+  run "$build/bench/features/bench_features" assets/coarse_drape.json
   echo
   echo "## Render throughput"
   echo
@@ -113,8 +113,8 @@ bake_figure() {
   echo
   echo "The GLSL preview (direct light, shadow maps, ambient environment) and the frame the Render"
   echo 'button (or `woven render` with the same options) makes, default scene.'
-  run "$woven" preview assets/default_scene.json --headless --width 480 --height 360 --screenshot "$out/preview_default.png"
-  run "$woven" preview assets/default_scene.json --headless --final --width 480 --height 360 --spp 256 \
+  run "$woven" preview assets/coarse_drape.json --headless --width 480 --height 360 --screenshot "$out/preview_default.png"
+  run "$woven" preview assets/coarse_drape.json --headless --final --width 480 --height 360 --spp 256 \
       --screenshot "$out/final_default.png"
   echo
   echo "![preview]($(basename "$out")/preview_default.png) ![final]($(basename "$out")/final_default.png)"
@@ -131,11 +131,11 @@ bake_figure() {
   echo "![isotropic]($(basename "$out")/figure1_isotropic.png) ![woven]($(basename "$out")/figure1_woven.png)"
   echo
   echo '```'
-  echo "$woven render assets/default_scene.json --width 480 --height 360 --time 20 --woven '$iso' -o $out/figure1_isotropic.png"
-  echo "$woven render assets/default_scene.json --width 480 --height 360 --time 20 -o $out/figure1_woven.png"
+  echo "$woven render assets/coarse_drape.json --width 480 --height 360 --time 20 --woven '$iso' -o $out/figure1_isotropic.png"
+  echo "$woven render assets/coarse_drape.json --width 480 --height 360 --time 20 -o $out/figure1_woven.png"
   echo '```'
-  "$woven" render assets/default_scene.json --width 480 --height 360 --time 20 --woven "$iso" -o "$out/figure1_isotropic.png" 2>/dev/null
-  "$woven" render assets/default_scene.json --width 480 --height 360 --time 20 -o "$out/figure1_woven.png" 2>/dev/null
+  "$woven" render assets/coarse_drape.json --width 480 --height 360 --time 20 --woven "$iso" -o "$out/figure1_isotropic.png" 2>/dev/null
+  "$woven" render assets/coarse_drape.json --width 480 --height 360 --time 20 -o "$out/figure1_woven.png" 2>/dev/null
   echo
   echo "## Fabric from weaving drafts"
   echo
@@ -155,7 +155,7 @@ bake_figure() {
   bake_figure paper_d_satin bake_satin
   bake_figure paper_c_twill bake_twill
   bake_figure houndstooth bake_houndstooth
-  bake_figure default_scene bake_gaps --woven 'Cloth={"yarn_width":0.75,"warp_width":0.7,"cy":0.8}'
+  bake_figure coarse_drape bake_gaps --woven 'Cloth={"yarn_width":0.75,"warp_width":0.7,"cy":0.8}'
 } > "$tmp"
 mv "$tmp" "$md"
 trap - EXIT

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "scene_loader.h"
+#include "uv_scale.h"
 
 namespace woven {
 namespace {
@@ -83,6 +84,22 @@ TEST(Assets, PaperVariants) {
     EXPECT_EQ(cloth("paper_c_twill.json").pattern, glm::ivec3(1, 2, 1));
     EXPECT_EQ(cloth("paper_d_satin.json").pattern, glm::ivec3(9, 1, 3));
     EXPECT_EQ(loadScene(kAssets + "/default_scene.json").render.width, 640);
+}
+
+// The default scene shows cloth as it is: denim's 25 ends and 16 picks per cm on the draped mesh
+// (its draft's spacing through "scale": "draft"), not threads centimetres wide.
+TEST(Assets, DefaultSceneIsDenimAtItsRealThreadCount) {
+    const SceneDescription scene = loadScene(kAssets + "/default_scene.json");
+    const int cloth = materialNamed(scene, "Cloth");
+    ASSERT_GE(cloth, 0);
+    std::vector<size_t> meshes;
+    for (size_t m = 0; m < scene.meshes.size(); ++m)
+        if (scene.meshes[m].material == cloth) meshes.push_back(m);
+    const glm::dvec2 metresPerUv = worldLengthPerUv(scene, meshes);
+    const glm::vec2 repeat = scene.materials[size_t(cloth)].woven->repeat;
+    EXPECT_NEAR(repeat.x / (metresPerUv.x * 100.0), 25.0, 0.25);
+    EXPECT_NEAR(repeat.y / (metresPerUv.y * 100.0), 16.0, 0.16);
+    EXPECT_TRUE(scene.hasCamera);
 }
 
 TEST(Assets, IndirectSceneHidesItsLampFromTheCloth) {

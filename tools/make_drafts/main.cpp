@@ -119,16 +119,35 @@ Draft twillStripes() {
     return d;
 }
 
+// Denim: 3/1 right-hand twill, warp-faced, indigo warp and undyed weft, at the thread counts of
+// a classic 14 oz jeans denim (about 64 ends and 40 picks per inch, 25 and 16 per cm: Paul (ed.),
+// Denim: Manufacture, Finishing and Applications, 2015, ch. 1); the yarns nearly fill their
+// spacing, as in a dense warp-faced cloth.
+Draft denim() {
+    const glm::vec3 indigo = srgb8(38, 52, 96), ecru = srgb8(226, 220, 200);
+    Draft d;
+    d.title = "Denim: 3/1 twill, indigo warp, ecru weft, 25 ends and 16 picks per cm";
+    d.shafts = d.treadles = 4;
+    d.warp = threads(stripes({{4, indigo}}), 0.04f, 0.038f, woven::LengthUnit::Centimeters);
+    d.weft = threads(stripes({{4, ecru}}), 0.0625f, 0.055f, woven::LengthUnit::Centimeters);
+    d.threading = straightDraw(4, 4);
+    d.tieup = twillTieup(4, 3);
+    for (int p = 0; p < 4; ++p) d.treadling.push_back(only(p));
+    d.palette = distinct(d);
+    return d;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Writes woven's sample drafts (houndstooth, gingham, twill with stripes) as WIF files"};
+    CLI::App app{"Writes woven's sample drafts (houndstooth, gingham, twill with stripes, denim) as WIF files"};
     std::string dir;
     app.add_option("dir", dir, "output folder (it must exist)")->required()->check(CLI::ExistingDirectory);
     CLI11_PARSE(app, argc, argv);
     try {
         for (const auto& [name, draft] : {std::pair<const char*, Draft>{"houndstooth.wif", houndstooth()},
-                                          {"gingham.wif", gingham()}, {"twill_stripes.wif", twillStripes()}}) {
+                                          {"gingham.wif", gingham()}, {"twill_stripes.wif", twillStripes()},
+                                          {"denim.wif", denim()}}) {
             const std::string path = (std::filesystem::path(dir) / name).string();
             woven::writeWif(path, draft);
             std::cerr << "wrote " << path << "\n";
