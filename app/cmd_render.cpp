@@ -24,6 +24,7 @@ struct RenderCommand {
     RenderOptions options;
     double time = 0.0;
     int firstSample = 0;
+    bool list = false;
 };
 
 // Set by SIGINT; the render stops after its current pass. The handler resets itself, so a second
@@ -77,7 +78,36 @@ std::string progressStatus(const RenderProgress& p, bool timeLimited, bool adapt
     return s.str();
 }
 
+// --list: what --camera, --woven and the rest can name, as the file has it.
+void listScene(const SceneDescription& scene, std::ostream& out) {
+    const auto quoted = [](const std::string& s) { return "'" + s + "'"; };
+    out << "cameras:" << (scene.cameras.empty() ? " none (--camera auto frames the scene)" : "") << "\n";
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+        out << "  " << i << "  " << quoted(scene.cameras[i].name) << "  node " << quoted(scene.cameras[i].node) << "\n";
+    out << "materials:" << (scene.materials.empty() ? " none" : "") << "\n";
+    for (const Material& m : scene.materials)
+        out << "  " << quoted(m.name) << "  " << (m.woven ? "woven" : "glTF") << "\n";
+    out << "meshes:" << (scene.meshes.empty() ? " none" : "") << "\n";
+    for (const Mesh& m : scene.meshes) {
+        const bool hasMaterial = m.material >= 0 && m.material < int(scene.materials.size());
+        out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles  material "
+            << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default") << "\n";
+    }
+    out << "lights:" << (scene.lights.empty() ? " none" : "") << "\n";
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const PunctualLight& l = scene.lights[i];
+        const bool directional = l.type == PunctualLight::Type::Directional;
+        out << "  " << (directional ? "directional" : l.type == PunctualLight::Type::Spot ? "spot" : "point") << "  "
+            << quoted(l.name.empty() ? "light" + std::to_string(i) : l.name) << "  intensity " << l.intensity.r << " "
+            << l.intensity.g << " " << l.intensity.b << (directional ? " W/m^2" : " W/sr") << "\n";
+    }
+}
+
 int runRender(RenderCommand o) {
+    if (o.list) {
+        listScene(loadScene(o.scene, o.options.frame.load), std::cout);
+        return 0;
+    }
     if (o.out.empty()) o.out = std::filesystem::path(o.scene).stem().string() + ".exr";
     checkFrameFileName(o.out);
 
@@ -144,6 +174,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--list", o->list,
+                  "print the scene's cameras (the numbers --camera takes), materials, meshes and lights, and "
+                  "render nothing");
     cmd->callback([o] {
         if (int rc = runRender(*o)) throw CLI::RuntimeError(rc);
     });

@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 
+#include "scene_camera.h"
 #include "woven_assignment.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
@@ -41,6 +42,12 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
     command.add_flag("--allow-any-path", o.load.anyPath,
                      "let a glTF file's buffers and images come from anywhere, not only from its own folder");
+    command.add_flag("--strict", o.load.strict,
+                     "a texture whose image file is missing is an error (by default: a warning, drawn without it)");
+    command.add_option("--camera", o.camera,
+                       "the glTF camera to look through: its index (woven render --list), its name or its node's "
+                       "name; auto: frame the scene's bounds as for a scene without a camera (default: the first)")
+        ->type_name("N|NAME|auto");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
@@ -56,6 +63,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
 }
 
 void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
+    if (!options.camera.empty()) chooseCamera(scene, options.camera);
     validateScene(scene);
     if (!options.environment.empty()) scene.environment = environmentFromOption(options.environment);
     // One call, so the options layer by specificity and then in the order given.

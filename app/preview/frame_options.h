@@ -26,12 +26,13 @@ struct FrameOptions {
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
-    LoadOptions load;                    // --allow-any-path
+    LoadOptions load;                    // --allow-any-path, --strict
+    std::string camera;                  // --camera N|NAME|auto (chooseCamera()); empty: the scene's
     DisplayTransform display;
 };
 
 // Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --no-filter --filter
-// --allow-any-path --woven --environment --exposure --tone-map.
+// --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

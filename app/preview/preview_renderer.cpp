@@ -161,6 +161,7 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
         drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, camera, viewProjection,
                  options, shadows);
     }
+    glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -192,6 +193,10 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     glUniform3fv(program.uniform("cameraPosition"), 1, glm::value_ptr(glm::vec3(camera.cameraToWorld[3])));
     glUniform3fv(program.uniform("emission"), 1, glm::value_ptr(material.emission));
     uploadLights(program, lights);
+    // A single-sided material shows its front alone, as glTF viewers draw it and camera rays see it
+    // (RayKind in render_scene.h); counter-clockwise is the front, as in glTF.
+    if (material.doubleSided) glDisable(GL_CULL_FACE);
+    else glEnable(GL_CULL_FACE);
     if (material.woven) {
         auto& weave = weaves_[materialIndex];
         if (!weave) weave = std::make_unique<WeaveTextures>();

@@ -167,7 +167,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
     int count = 0;
     while (true) {
         ++sink.rays;
-        auto hit = scene_.intersect(ray);
+        auto hit = scene_.intersect(ray, !importance && count == 0 ? RayKind::Camera : RayKind::Scattered);
         Vertex& v = path[count];
         Vertex& prev = path[count - 1];  // the path's start sits before path[0]
         if (!hit) {
@@ -321,7 +321,7 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, R
         L = qs.beta * vertexF(qs, ws->wi, true) * sampled.beta * std::abs(glm::dot(ws->wi, qs.ns));
         if (isBlack(L)) return glm::vec3(0.0f);
         ++sink.rays;
-        if (scene_.occluded(qs.hit, ws->pCamera)) return glm::vec3(0.0f);
+        if (!scene_.seenFromCamera(qs.hit, ws->pCamera)) return glm::vec3(0.0f);
         *pRaster = ws->pRaster;
     } else if (s == 1) {
         const Vertex& pt = camera[t - 1];

@@ -44,7 +44,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
     float prevBsdfPdf = 0.0f;
     for (int bounces = 0;; ++bounces) {
         ++sink.rays;
-        auto hit = scene_.intersect(ray);
+        auto hit = scene_.intersect(ray, bounces == 0 ? RayKind::Camera : RayKind::Scattered);
         if (!hit) {
             const int env = scene_.environmentLight();
             if (env >= 0) {

@@ -35,8 +35,47 @@ constexpr float kShadowEpsilon = 1e-4f;
 struct HitFilter {
     const Mesh* mesh;
     const SurfaceMaterial* material;
-    bool random;  // the material's answer depends on a random number (blended alpha)
+    bool random;       // the material's answer depends on a random number (blended alpha)
+    bool singleSided;  // glTF's doubleSided false: camera rays cull its back (RayKind)
 };
+
+// The face of single-sided surfaces a ray passes through: camera rays the back; rays towards the
+// camera the faces that are backs seen from it, so that both ways agree.
+enum class Cull { Back, Front };
+
+// An intersect context that says what its context filter culls: Embree hands the filter back the
+// pointer it was given, so Embree's part comes first.
+struct CullContext {
+    RTCIntersectContext embree;
+    Cull cull = Cull::Back;
+};
+
+// The context filter of camera rays (and of rays towards the camera): only they pay for it.
+void cullSingleSided(const RTCFilterFunctionNArguments* args) {
+    const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
+    if (!filter->singleSided) return;
+    const Cull cull = reinterpret_cast<const CullContext*>(args->context)->cull;
+    const std::vector<glm::vec3>& p = filter->mesh->positions;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const glm::uvec3 t = filter->mesh->triangles[RTCHitN_primID(args->hit, args->N, i)];
+        const glm::vec3 front = glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]);  // makeHit's ng
+        const glm::vec3 d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                          RTCRayN_dir_z(args->ray, args->N, i));
+        const float towardsBack = glm::dot(front, d);
+        if (cull == Cull::Back ? towardsBack > 0.0f : towardsBack < 0.0f) args->valid[i] = 0;
+    }
+}
+
+CullContext intersectContext(std::optional<Cull> cull) {
+    CullContext context;
+    rtcInitIntersectContext(&context.embree);
+    if (cull) {
+        context.embree.filter = cullSingleSided;
+        context.cull = *cull;
+    }
+    return context;
+}
 
 // A uniform number for stochastic transparency from the ray and the candidate hit: a pure
 // function of the path, so a frame stays a pure function of (scene, seed, sample range).
@@ -105,7 +144,7 @@ void RenderScene::Impl::buildGeometry() {
     if (!device) fail("cannot create the Embree device");
     rtcSetDeviceErrorFunction(device, embreeError, &embreeMessage);
     rtcScene = rtcNewScene(device);
-    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
 
     hitFilters.resize(scene->meshes.size());
@@ -120,11 +159,12 @@ void RenderScene::Impl::buildGeometry() {
         if (!vertices || !indices) fail("mesh '" + mesh.name + "': Embree cannot allocate it: " + embreeMessage);
         std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
         std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
-        // Only meshes whose material can let rays through pay for the filter.
         const SurfaceMaterial& material = (*materials)[mesh.material];
+        const bool singleSided = mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
+        hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided};
+        rtcSetGeometryUserData(geom, &hitFilters[m]);
+        // Only meshes whose material can let rays through pay for the geometry's filter.
         if (material.mayPassThrough(mesh)) {
-            hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly()};
-            rtcSetGeometryUserData(geom, &hitFilters[m]);
             rtcSetGeometryIntersectFilterFunction(geom, rejectPassThrough);
             rtcSetGeometryOccludedFilterFunction(geom, rejectPassThrough);
         }
@@ -284,25 +324,24 @@ float segmentEnd(const glm::vec3& from, const glm::vec3& target) {
 }
 }  // namespace
 
-std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
+    CullContext context = intersectContext(kind == RayKind::Camera ? std::optional(Cull::Back) : std::nullopt);
     RTCRayHit rh;
     rh.ray = toRtcRay(ray.o, ray.d, ray.tMax);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->rtcScene, &context, &rh);
+    rtcIntersect1(impl_->rtcScene, &context.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     return impl_->makeHit(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.d);
 }
 
 namespace {
-bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float tMax) {
+bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float tMax,
+                 std::optional<Cull> cull = std::nullopt) {
     if (!(tMax > 0.0f)) return false;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    CullContext context = intersectContext(cull);
     RTCRay r = toRtcRay(o, d, tMax);
-    rtcOccluded1(scene, &context, &r);
+    rtcOccluded1(scene, &context.embree, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 }  // namespace
@@ -338,6 +377,14 @@ bool RenderScene::occludedFrom(const glm::vec3& p, const glm::vec3& target) cons
 bool RenderScene::occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const {
     const Ray ray = spawnRay(from, dir);
     return occludedRay(impl_->rtcScene, ray.o, ray.d, std::numeric_limits<float>::infinity());
+}
+
+bool RenderScene::seenFromCamera(const SurfaceHit& from, const glm::vec3& camera) const {
+    const std::vector<Material>& materials = impl_->scene->materials;
+    const bool singleSided = from.material >= 0 && !materials[size_t(from.material)].doubleSided;
+    if (singleSided && glm::dot(from.ng, camera - from.p) < 0.0f) return false;  // the camera sees its back
+    const Ray ray = spawnRay(from, camera - from.p);
+    return !occludedRay(impl_->rtcScene, ray.o, camera - ray.o, segmentEnd(ray.o, camera), Cull::Front);
 }
 
 const SceneMaterials& RenderScene::materials() const { return *impl_->materials; }

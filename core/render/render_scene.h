@@ -13,6 +13,10 @@
 
 namespace woven {
 
+// Camera rays pass through the back of single-sided surfaces (glTF's doubleSided false), as glTF
+// viewers cull it; bounces and shadow rays meet both faces, as Cycles does (docs/MATERIALS.md).
+enum class RayKind { Scattered, Camera };
+
 class RenderScene {
 public:
     // Throws SceneError (scene_loader.h) for what cannot be rendered: NaN vertices, no geometry.
@@ -21,12 +25,15 @@ public:
     RenderScene(const RenderScene&) = delete;
     RenderScene& operator=(const RenderScene&) = delete;
 
-    std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind = RayKind::Scattered) const;
     // Is the segment from a surface point to `target` blocked? The origin is offset off the
     // surface; the far end stops short of target by the same relative epsilon.
     bool occluded(const SurfaceHit& from, const glm::vec3& target) const;
     bool occludedFrom(const glm::vec3& p, const glm::vec3& target) const;  // from a non-surface point (camera, light)
     bool occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const;
+    // Whether a camera at `camera` sees from.p as its camera rays would: nothing in between, and not
+    // the back of a single-sided surface (BDPT's light paths that end on the camera).
+    bool seenFromCamera(const SurfaceHit& from, const glm::vec3& camera) const;
 
     // A ray leaving a hit in direction d, offset off the surface on d's side so that it cannot
     // re-hit the same triangle (no acne, no leaks at shading-normal edges).

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <cmath>
 #include <filesystem>
@@ -119,9 +120,12 @@ public:
         readModel();
         checkExtensions();
         scene_.source = path_;
-        GltfMaterialReader(path_, document_, encodedImages_, [this](const std::string& m) { warn(m); }).read(scene_);
+        GltfMaterialReader(path_, document_, encodedImages_, absentImages(), options_.strict,
+                           [this](const std::string& m) { warn(m); })
+            .read(scene_);
         computeNodeMatrices();
         for (int root : rootNodes()) visit(root, {});
+        warnDegenerateTriangles();
         return std::move(scene_);
     }
 
@@ -178,7 +182,7 @@ private:
         if (!ok) {
             while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
             fail(std::string("cannot read ") + (binary ? "glTF binary" : "glTF") + ": " +
-                 (err.empty() ? "unknown error" : err));
+                 (err.empty() ? "unknown error" : jsonProblem(err)));
         }
     }
 
@@ -213,6 +217,38 @@ private:
             return false;
         }
         return true;
+    }
+    // The images tinygltf could not read because their file is not there: in none of the places
+    // it looked (the glTF file's folder, then the current one), and not outside the folder, which
+    // stays an error without --allow-any-path whether or not the file exists.
+    AbsentImages absentImages() const {
+        namespace fs = std::filesystem;
+        AbsentImages absent;
+        const fs::path folder = fs::path(path_).parent_path();
+        for (size_t i = 0; i < model_.images.size(); ++i) {
+            const std::string& uri = model_.images[i].uri;  // tinygltf keeps it for a file it could not load
+            if (uri.empty() || encodedImages_.count(int(i))) continue;
+            const std::string file = uriFilePath(uri);
+            std::error_code inFolder, inCurrent;
+            if (!fs::exists(folder / file, inFolder) && !inFolder && !fs::exists(file, inCurrent) && !inCurrent &&
+                allowedFile((folder / file).string()).empty())
+                absent.insert(int(i));
+        }
+        return absent;
+    }
+    // The file a relative URI names, decoded as tinygltf decodes it (%XX, and '+' as a space).
+    static std::string uriFilePath(const std::string& uri) {
+        std::string file;
+        for (size_t i = 0; i < uri.size(); ++i) {
+            if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+                std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+                file += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+                i += 2;
+            } else {
+                file += uri[i] == '+' ? ' ' : uri[i];
+            }
+        }
+        return file;
     }
     static bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
         *err = "woven does not write through the glTF loader";
@@ -298,8 +334,8 @@ private:
         for (int child : node.children) visit(child, path);
     }
 
+    // Every perspective camera goes into scene_.cameras (--camera chooses); the first is the scene's.
     void addCamera(const tinygltf::Node& node, const glm::mat4& world, const std::string& nodeName) {
-        if (scene_.hasCamera) return;
         if (size_t(node.camera) >= model_.cameras.size()) fail("node '" + nodeName + "': camera " + std::to_string(node.camera) + " does not exist");
         const tinygltf::Camera& camera = model_.cameras[node.camera];
         if (camera.type != "perspective") {
@@ -324,10 +360,13 @@ private:
         if (degenerate)
             fail("node '" + nodeName + "': the camera's transform is degenerate (a zero scale, parallel axes or a "
                  "non-finite value): it has no view to render");
-        scene_.camera.cameraToWorld = cameraToWorld;
-        scene_.camera.yfov = float(camera.perspective.yfov);
-        scene_.camera.aspect = float(aspect);
+        NamedCamera named{nameOr(camera.name, "camera", node.camera), nodeName, {}};
+        named.camera.cameraToWorld = cameraToWorld;
+        named.camera.yfov = float(camera.perspective.yfov);
+        named.camera.aspect = float(aspect);
+        if (!scene_.hasCamera) scene_.camera = named.camera;
         scene_.hasCamera = true;
+        scene_.cameras.push_back(std::move(named));
     }
 
     void addLight(const tinygltf::Value& index, const glm::mat4& world, const std::string& nodeName) {
@@ -340,9 +379,10 @@ private:
         else if (source.type == "spot") light.type = PunctualLight::Type::Spot;
         else if (source.type == "directional") light.type = PunctualLight::Type::Directional;
         else fail("light '" + nameOr(source.name, "light", lightIndex) + "': unknown type '" + source.type + "'");
+        light.name = nameOr(source.name, "light", lightIndex);
         light.position = glm::vec3(world[3]);
         light.direction = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f));
-        const std::string lightName = "light '" + nameOr(source.name, "light", lightIndex) + "'";
+        const std::string lightName = "light '" + light.name + "'";
         light.intensity = color3(source.color, glm::vec3(1.0f)) * float(source.intensity / kLumensPerWatt);
         if (const std::string problem = lightValueProblem(light.intensity); !problem.empty())
             fail(lightName + ": intensity " + std::to_string(source.intensity) + " times its colour, divided by " +
@@ -573,8 +613,10 @@ private:
         if (handedness < 0.0f)
             for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
 
-        if (const size_t dropped = removeDegenerateTriangles(mesh))
-            warn("mesh '" + name + "': dropped " + std::to_string(dropped) + " degenerate triangle(s)");
+        if (const size_t dropped = removeDegenerateTriangles(mesh)) {
+            degenerate_.triangles += dropped;
+            degenerate_.primitives.push_back(name);
+        }
         if (mesh.triangles.empty()) {
             warn("mesh '" + name + "': no triangles left, skipped");
             return;
@@ -609,6 +651,20 @@ private:
         scene_.meshes.push_back(std::move(mesh));
     }
 
+    // One warning for the file: exporters leave a degenerate triangle at the poles of every UV
+    // sphere, and a line per primitive buried every other warning.
+    void warnDegenerateTriangles() {
+        const std::vector<std::string>& in = degenerate_.primitives;
+        if (in.empty()) return;
+        constexpr size_t kNamed = 3;
+        std::string names;
+        for (size_t i = 0; i < std::min(in.size(), kNamed); ++i) names += (i ? ", '" : "'") + in[i] + "'";
+        if (in.size() > kNamed) names += ", ...";
+        const size_t n = degenerate_.triangles;
+        warn("dropped " + std::to_string(n) + " degenerate triangle" + (n == 1 ? "" : "s") + " in " +
+             std::to_string(in.size()) + " primitive" + (in.size() == 1 ? "" : "s") + " (" + names + ")");
+    }
+
     static int tangentTexCoord(const Material& m) {
         for (const TextureRef* t : {&m.normalTexture, &m.clearcoat.normalTexture, &m.anisotropy.texture})
             if (*t) return t->texCoord;
@@ -622,6 +678,10 @@ private:
     EncodedImages encodedImages_;
     ImageSink imageSink_{&encodedImages_, &model_};
     std::vector<glm::mat4> nodeWorld_;
+    struct DroppedTriangles {
+        size_t triangles = 0;
+        std::vector<std::string> primitives;
+    } degenerate_;
     SceneDescription scene_;
 };
 

@@ -44,8 +44,9 @@ glm::mat3 textureTransform(glm::vec2 offset, float rotation, glm::vec2 scale) {
 }  // namespace
 
 GltfMaterialReader::GltfMaterialReader(std::string path, const nlohmann::json& document, const EncodedImages& images,
-                                       std::function<void(const std::string&)> warn)
-    : path_(std::move(path)), document_(document), images_(images), warn_(std::move(warn)) {}
+                                       AbsentImages absent, bool strict, std::function<void(const std::string&)> warn)
+    : path_(std::move(path)), document_(document), images_(images), absent_(std::move(absent)), strict_(strict),
+      warn_(std::move(warn)) {}
 
 void GltfMaterialReader::fail(const std::string& where, const std::string& problem) const {
     throw SceneError(path_ + ": " + where + ": " + problem);
@@ -289,8 +290,16 @@ int GltfMaterialReader::imageTexture(int image, const std::string& where, SceneD
     const auto bytes = images_.find(image);
     if (bytes == images_.end()) {
         const std::string dir = std::filesystem::path(path_).parent_path().string();
-        fail(where, "cannot read texture file '" + (uri.is_string() ? uri.get<std::string>() : label) + "' (looked in '" +
-                        (dir.empty() ? "." : dir) + "')");
+        const std::string file = "'" + (uri.is_string() ? uri.get<std::string>() : label) + "'";
+        const std::string folder = " (looked in '" + (dir.empty() ? "." : dir) + "')";
+        if (!absent_.count(image)) fail(where, "cannot read texture file " + file + folder);
+        if (strict_) fail(where, "texture file " + file + " does not exist" + folder);
+        // No texture is the neutral placeholder of every use: the factor alone where a texture
+        // multiplies it (white), the geometry's normal for a normal map (flat), the tangent at full
+        // strength for anisotropy. Later uses of the image are dropped without another warning.
+        warn_(where + ": texture file " + file + " does not exist" + folder +
+              "; drawn without it (--strict makes this an error)");
+        return textureOfImage_[image] = -1;
     }
     try {
         scene.textures.push_back(decodeTexture(bytes->second.data(), bytes->second.size(), label));

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,11 +16,14 @@ namespace woven {
 
 // The encoded bytes of each glTF image that could be read, by image index.
 using EncodedImages = std::map<int, std::vector<unsigned char>>;
+// The images whose file does not exist (LoadOptions::strict).
+using AbsentImages = std::set<int>;
 
 class GltfMaterialReader {
 public:
+    // A texture of `absent` is dropped with one warning per image, unless `strict`.
     GltfMaterialReader(std::string path, const nlohmann::json& document, const EncodedImages& images,
-                       std::function<void(const std::string&)> warn);
+                       AbsentImages absent, bool strict, std::function<void(const std::string&)> warn);
 
     // Appends the file's materials to scene.materials and the images they use to scene.textures.
     void read(SceneDescription& scene);
@@ -38,8 +42,10 @@ private:
     std::string path_;
     const nlohmann::json& document_;
     const EncodedImages& images_;
+    AbsentImages absent_;
+    bool strict_;
     std::function<void(const std::string&)> warn_;
-    std::map<int, int> textureOfImage_;  // glTF image -> index in scene.textures
+    std::map<int, int> textureOfImage_;  // glTF image -> index in scene.textures (-1: absent)
 };
 
 }  // namespace woven

@@ -1,7 +1,10 @@
 #include "scene_camera.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+
+#include "scene_loader.h"
 
 namespace woven {
 
@@ -37,6 +40,31 @@ Camera framingCamera(const SceneBox& box, float yfov) {
 
 Camera sceneCamera(const SceneDescription& scene) {
     return scene.hasCamera ? scene.camera : framingCamera(sceneBounds(scene), scene.camera.yfov);
+}
+
+void chooseCamera(SceneDescription& scene, const std::string& choice) {
+    if (choice == "auto") {
+        scene.camera = Camera{};  // framed with the default field of view, not the file camera's
+        scene.hasCamera = false;
+        return;
+    }
+    const bool isIndex = !choice.empty() && choice.size() < 10 &&
+                         std::all_of(choice.begin(), choice.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+    const size_t index = isIndex ? std::stoul(choice) : 0;
+    for (size_t i = 0; i < scene.cameras.size(); ++i) {
+        const NamedCamera& c = scene.cameras[i];
+        if (isIndex ? index == i : (c.name == choice || c.node == choice)) {
+            scene.camera = c.camera;
+            scene.hasCamera = true;
+            return;
+        }
+    }
+    std::string cameras;
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+        cameras += (i ? ", " : "") + std::to_string(i) + " '" + scene.cameras[i].name + "' (node '" +
+                   scene.cameras[i].node + "')";
+    throw SceneError(scene.source + ": --camera " + choice + ": no such camera; " +
+                     (cameras.empty() ? "the file has none" : "its cameras are " + cameras) + ", or auto");
 }
 
 }  // namespace woven

@@ -3,6 +3,7 @@
 // that frames its bounds. `woven render` and the previewer both start from sceneCamera(), so a
 // final frame and the preview it came from look through the same camera, bit for bit.
 #include <glm/glm.hpp>
+#include <string>
 
 #include "scene_description.h"
 
@@ -26,5 +27,10 @@ Camera framingCamera(const SceneBox& box, float yfov);
 
 // The scene's camera if it has one, else framingCamera() of its bounds.
 Camera sceneCamera(const SceneDescription& scene);
+
+// --camera CHOICE: N (an index into scene.cameras), a camera's name or its node's, or "auto" (the
+// scene seen as if it had no camera). Sets scene.camera; throws SceneError naming the cameras
+// there are when CHOICE is none of them.
+void chooseCamera(SceneDescription& scene, const std::string& choice);
 
 }  // namespace woven

@@ -158,6 +158,7 @@ struct PunctualLight {
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // the way the light travels
     glm::vec3 intensity{1.0f};  // W/sr (point, spot) or W/m^2 (directional), colour x intensity
     float innerConeAngle = 0.0f, outerConeAngle = 0.7853982f;
+    std::string name;  // the file's, for woven render --list; may be empty
 };
 
 struct Environment {
@@ -170,6 +171,13 @@ struct Camera {
     glm::mat4 cameraToWorld{1.0f};  // glTF convention: looks down -z, +y up
     float yfov = 0.6911f;           // radians, vertical
     float aspect = 0.0f;            // 0: take it from the image size
+};
+
+// A camera as a glTF file names it: --camera chooses one by either name or its index.
+struct NamedCamera {
+    std::string name;  // the glTF camera's ("camera2" when unnamed)
+    std::string node;  // the node that holds it ("node5" when unnamed)
+    Camera camera;
 };
 
 // The integrators a frame can be rendered with; "auto" lets the render job choose.
@@ -198,6 +206,10 @@ struct SceneDescription {
     // What the loader skipped or approximated (also printed on stderr), e.g. line primitives,
     // dropped degenerate triangles.
     std::vector<std::string> warnings;
+    // Every perspective camera of a glTF file, in the order the loader meets them (depth first
+    // from the scene's roots; `camera` is the first unless a scene file sets its own), for
+    // --camera to choose from (scene_camera.h).
+    std::vector<NamedCamera> cameras;
 };
 
 }  // namespace woven

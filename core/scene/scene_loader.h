@@ -20,6 +20,10 @@ struct LoadOptions {
     // a URI such as "../../.ssh/id_rsa" or an absolute path could otherwise read any file the
     // user can into a render (woven render --allow-any-path).
     bool anyPath = false;
+    // A texture whose image file does not exist is drawn without it, with a warning, as glTF
+    // viewers and Blender do (a folder copied without one PNG); this makes it an error
+    // (woven render --strict). Unreadable or undecodable images are errors either way.
+    bool strict = false;
 };
 
 SceneDescription loadScene(const std::string& path, const LoadOptions& options = {});

@@ -92,6 +92,67 @@ TEST_P(GltfFurnace, WhiteLambertSphereReturnsTheEnvironment) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, GltfFurnace, ::testing::Values("path", "bdpt"));
 
+class GltfSides : public ::testing::TestWithParam<const char*> {};
+
+double meanLuminance(const FilmImage& film) {
+    double sum = 0.0;
+    for (const glm::vec3& p : film.radiance.pixels) sum += luminance(p);
+    return sum / double(film.radiance.pixels.size());
+}
+
+// A black card filling the view in a white environment. Single-sided and seen from behind, the
+// camera sees the environment through it, as glTF viewers show it; from the front, or
+// double-sided, it sees the card.
+TEST_P(GltfSides, CameraSeesThroughTheBackOfSingleSidedSurfaces) {
+    const auto frame = [&](bool doubleSided, float cameraZ) {
+        Material black = lambert(0.0f);
+        black.doubleSided = doubleSided;
+        auto scene = sceneWith({quad("card", {-10, -10, 0}, {10, -10, 0}, {10, 10, 0}, {-10, 10, 0}, 0)}, {black});
+        scene->environment.color = glm::vec3(1.0f);
+        scene->camera.cameraToWorld = glm::inverse(glm::lookAt(glm::vec3(0, 0, cameraZ), glm::vec3(0), glm::vec3(0, 1, 0)));
+        scene->camera.yfov = 0.5f;
+        scene->hasCamera = true;
+        RenderSettings s;
+        s.width = s.height = 8;
+        s.spp = 4;
+        s.integrator = GetParam();
+        return meanLuminance(render(scene, s));
+    };
+    EXPECT_NEAR(frame(false, -3.0f), 1.0, 1e-5);  // its back: the environment
+    EXPECT_EQ(frame(false, 3.0f), 0.0);           // its front
+    EXPECT_EQ(frame(true, -3.0f), 0.0);
+    EXPECT_EQ(frame(true, 3.0f), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, GltfSides, ::testing::Values("path", "bdpt"));
+
+// The camera looks through the back of a single-sided card at a white floor lit by a point light
+// under the card. BDPT's light paths that end on the camera see the floor through the card as
+// camera rays do: were the card in their way, its light-tracing strategy would be lost and BDPT
+// 9 % darker than the path tracer (0.06 % apart with it).
+TEST(GltfSidesIntegrators, BdptAgreesWithThePathTracerThroughACulledBack) {
+    Material card = lambert(0.0f);
+    card.doubleSided = false;
+    auto scene = sceneWith({quad("card", {-5, 0.5f, -5}, {5, 0.5f, -5}, {5, 0.5f, 5}, {-5, 0.5f, 5}, 0),  // faces -y
+                            quad("floor", {-20, 0, 20}, {20, 0, 20}, {20, 0, -20}, {-20, 0, -20}, 1)},  // faces +y
+                           {card, lambert(1.0f)});
+    PunctualLight bulb;
+    bulb.position = glm::vec3(0.0f, 0.3f, 0.0f);
+    scene->lights = {bulb};
+    scene->camera = lookingDown(2.0f, 0.4f);
+    scene->hasCamera = true;
+    RenderSettings s;
+    s.width = s.height = 16;
+    s.spp = 256;
+    s.maxDepth = 1;
+    s.integrator = "path";
+    const double path = meanLuminance(render(scene, s));
+    s.integrator = "bdpt";
+    const double bdpt = meanLuminance(render(scene, s));
+    EXPECT_GT(path, 0.5);  // about I / (pi h^2) = 3.5 below the bulb
+    EXPECT_NEAR(bdpt, path, 0.02 * path);
+}
+
 // A black quad at z = 1 (alpha cut out where u < 0.5, by a 2 x 1 texture) over a floor at z = 0.
 std::shared_ptr<SceneDescription> cutOutOverFloor(AlphaMode mode) {
     Material card = lambert(0.0f);

@@ -220,6 +220,36 @@ std::shared_ptr<SceneDescription> clothOverFloor(const WovenParams& params, bool
     return sceneWith(meshes, {cloth});
 }
 
+// glTF's doubleSided false: camera rays pass through the back (glTF viewers cull it); bounces
+// and shadow rays meet both faces (as Cycles shows them).
+TEST(RenderSceneSides, CameraRaysPassTheBackOfSingleSidedSurfacesOnly) {
+    Material single;
+    single.doubleSided = false;
+    const Material both;
+    // Facing +z at z = 1: "single" over x in [0, 1], "both" over [2, 3]; a double-sided sky at z = 2.
+    RenderScene scene(sceneWith({quad("single", {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}, 0),
+                                 quad("both", {2, 0, 1}, {3, 0, 1}, {3, 1, 1}, {2, 1, 1}, 1),
+                                 quad("sky", {-1, -1, 2}, {4, -1, 2}, {4, 2, 2}, {-1, 2, 2})},
+                                {single, both}));
+    const Ray up{{0.5f, 0.5f, 0.0f}, {0, 0, 1}};
+    EXPECT_EQ(scene.intersect(rayDown(0.5f, 0.5f, 1.5f), RayKind::Camera)->mesh, 0);  // the front
+    EXPECT_EQ(scene.intersect(up, RayKind::Camera)->mesh, 2);  // the back is culled: the sky behind
+    EXPECT_EQ(scene.intersect(up)->mesh, 0);                   // a bounce meets it
+    EXPECT_TRUE(scene.occludedFrom(up.o, {0.5f, 0.5f, 1.5f}));  // and so does a shadow ray
+    EXPECT_EQ(scene.intersect(Ray{{2.5f, 0.5f, 0.0f}, {0, 0, 1}}, RayKind::Camera)->mesh, 1);
+    EXPECT_EQ(scene.intersect(rayDown(2.5f, 0.5f, 1.5f), RayKind::Camera)->mesh, 1);
+
+    // BDPT's light paths ending on the camera agree with its rays: from below, a camera sees the
+    // sky through "single" (not through "both"), and not the back of "single" itself.
+    const SurfaceHit skyOverSingle = *scene.intersect(rayDown(0.5f, 0.5f));
+    const SurfaceHit skyOverBoth = *scene.intersect(rayDown(2.5f, 0.5f));
+    const SurfaceHit onSingle = *scene.intersect(rayDown(0.5f, 0.5f, 1.5f));
+    EXPECT_TRUE(scene.seenFromCamera(skyOverSingle, up.o));
+    EXPECT_FALSE(scene.seenFromCamera(skyOverBoth, {2.5f, 0.5f, 0.0f}));
+    EXPECT_FALSE(scene.seenFromCamera(onSingle, up.o));               // its back
+    EXPECT_TRUE(scene.seenFromCamera(onSingle, {0.5f, 0.5f, 1.5f}));  // its front
+}
+
 TEST(RenderSceneGaps, RaysAndShadowRaysPassThroughGapsOnly) {
     RenderScene scene(clothOverFloor(gappyWeave()));
     // In a gap: the ray reaches the floor, and so does a shadow ray; from below as well.

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "gltf_builder.h"
+#include "scene_camera.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
 
@@ -287,6 +288,51 @@ TEST(GltfScene, FirstPerspectiveCamera) {
     expectNear(glm::vec3(scene.camera.cameraToWorld * glm::vec4(0, 1, 0, 0)), {0, 1, 0});
     expectNear(glm::vec3(scene.camera.cameraToWorld[3]), {0, 1, 5});
     EXPECT_THAT(scene.warnings.at(0), HasSubstr("orthographic"));
+    ASSERT_EQ(scene.cameras.size(), 2u);  // every perspective one, in the order met
+    EXPECT_FLOAT_EQ(scene.cameras[1].camera.yfov, 0.9f);
+}
+
+// --camera: by index, by the camera's name, by its node's, or auto (as if the file had none).
+TEST(GltfScene, CamerasAreChosenByIndexNameOrNode) {
+    TempDir dir;
+    GltfBuilder b;
+    b.json()["cameras"] = {{{"name", "Wide"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 0.3}, {"znear", 0.1}}}}};
+    const int mount = b.addNode({{"name", "Mount"}, {"camera", 0}, {"translation", {1, 0, 0}}});
+    const int tele = b.addNode({{"camera", 1}});
+    b.setScene({b.addNode({{"name", "Rig"}, {"children", {mount}}}), tele, b.addNode({{"mesh", triangleMesh(b)}})});
+    b.writeGltf(dir.file("cams.gltf"));
+    const SceneDescription loaded = loadScene(dir.file("cams.gltf"));
+    ASSERT_EQ(loaded.cameras.size(), 2u);
+    EXPECT_EQ(loaded.cameras[0].name, "Wide");
+    EXPECT_EQ(loaded.cameras[0].node, "Mount");
+    EXPECT_EQ(loaded.cameras[1].name, "camera1");
+    EXPECT_EQ(loaded.cameras[1].node, "node1");
+    EXPECT_FLOAT_EQ(loaded.camera.yfov, 0.9f);  // the first is the scene's
+    const auto chosen = [&](const std::string& choice) {
+        SceneDescription scene = loaded;
+        chooseCamera(scene, choice);
+        return scene;
+    };
+    EXPECT_FLOAT_EQ(chosen("1").camera.yfov, 0.3f);
+    EXPECT_FLOAT_EQ(chosen("node1").camera.yfov, 0.3f);
+    EXPECT_FLOAT_EQ(chosen("camera1").camera.yfov, 0.3f);
+    const SceneDescription wide = chosen("Mount");
+    EXPECT_FLOAT_EQ(wide.camera.yfov, 0.9f);
+    expectNear(glm::vec3(wide.camera.cameraToWorld[3]), {1, 0, 0});
+    const SceneDescription automatic = chosen("auto");
+    EXPECT_FALSE(automatic.hasCamera);
+    EXPECT_EQ(sceneCamera(automatic).cameraToWorld, framingCamera(sceneBounds(automatic), Camera{}.yfov).cameraToWorld);
+    for (const std::string bad : {"2", "Tele", ""}) {
+        try {
+            chosen(bad);
+            ADD_FAILURE() << "--camera " << bad << " chose a camera";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), dir.file("cams.gltf") + ": --camera " + bad +
+                                                 ": no such camera; its cameras are 0 'Wide' (node 'Mount'), 1 "
+                                                 "'camera1' (node 'node1'), or auto");
+        }
+    }
 }
 
 TEST(GltfScene, PunctualLights) {
@@ -444,6 +490,22 @@ TEST(GltfMeshes, DegenerateTrianglesAreDroppedAndCounted) {
     EXPECT_THAT(scene.warnings[0], HasSubstr("dropped 2 degenerate"));
 }
 
+// Exporters leave a degenerate triangle at each pole of a UV sphere: one line for the file.
+TEST(GltfMeshes, DegenerateTrianglesOfManyPrimitivesAreOneWarning) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
+    const json primitive = {{"attributes", {{"POSITION", b.addPositions(p)}}}, {"indices", b.addIndices({0, 1, 2, 0, 0, 1, 0, 1, 3})}};
+    const int sphere = b.addMesh(primitive, "Sphere");
+    for (int i = 0; i < 3; ++i) b.json()["meshes"][sphere]["primitives"].push_back(primitive);
+    b.setScene({b.addNode({{"mesh", sphere}, {"name", "A"}}), b.addNode({{"mesh", b.addMesh(primitive, "Other")}, {"name", "B"}})});
+    b.writeGltf(dir.file("poles.gltf"));
+    const SceneDescription scene = loadScene(dir.file("poles.gltf"));
+    EXPECT_EQ(scene.meshes.size(), 5u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0], "dropped 10 degenerate triangles in 5 primitives ('A/Sphere/0', 'A/Sphere/1', 'A/Sphere/2', ...)");
+}
+
 TEST(GltfFormats, GlbAndDataUriLoadTheSameAsExternalBuffers) {
     TempDir dir;
     GltfBuilder b;
@@ -507,14 +569,44 @@ TEST_F(BrokenGltf, MissingBuffer) {
     EXPECT_THAT(message, HasSubstr("nobin.bin"));
 }
 
-TEST_F(BrokenGltf, MissingTexture) {
+// A texture file left out when a folder was copied is drawn without, as glTF viewers and Blender
+// do: one warning per file, however many uses share it; --strict makes it an error.
+TEST_F(BrokenGltf, MissingTextureFileIsAWarningUnlessStrict) {
     const std::string path = write("notex.gltf", [](GltfBuilder& g) {
         g.json()["images"] = {{{"uri", "gone.png"}}};
         g.json()["textures"] = {{{"source", 0}}};
+        g.addMaterial({{"name", "M"},
+                       {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {0.5, 0.25, 1, 1}}}},
+                       {"normalTexture", {{"index", 0}}}});
+    });
+    const SceneDescription scene = loadScene(path);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0], "material 'M'.pbrMetallicRoughness.baseColorTexture: texture file 'gone.png' does not "
+                                 "exist (looked in '" + dir.path().string() + "'); drawn without it (--strict makes this an error)");
+    const Material& m = scene.materials.at(0);
+    EXPECT_FALSE(m.baseColorTexture);  // the factor alone, as a white texture gives
+    EXPECT_EQ(m.baseColor, glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
+    EXPECT_FALSE(m.normalTexture);  // the geometry's normal, as a flat normal map gives
+    EXPECT_TRUE(scene.textures.empty());
+
+    LoadOptions strict;
+    strict.strict = true;
+    try {
+        loadScene(path, strict);
+        ADD_FAILURE() << "--strict loads a missing texture";
+    } catch (const SceneError& e) {
+        EXPECT_THAT(e.what(), HasSubstr(path + ": material 'M'.pbrMetallicRoughness.baseColorTexture: texture file 'gone.png' does not exist"));
+    }
+}
+
+// Outside the folder, whether the file is there or not is nothing a file may ask.
+TEST_F(BrokenGltf, MissingTextureOutsideTheFolderStaysAnError) {
+    const std::string path = write("up.gltf", [](GltfBuilder& g) {
+        g.json()["images"] = {{{"uri", "../gone.png"}}};
+        g.json()["textures"] = {{{"source", 0}}};
         g.addMaterial({{"name", "M"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
     });
-    const std::string message = loadError(path);
-    EXPECT_THAT(message, HasSubstr(path + ": material 'M'.pbrMetallicRoughness.baseColorTexture: cannot read texture file 'gone.png'"));
+    EXPECT_THAT(loadError(path), HasSubstr(path + ": material 'M'.pbrMetallicRoughness.baseColorTexture: cannot read texture file '../gone.png'"));
 }
 
 TEST_F(BrokenGltf, CorruptTexture) {
