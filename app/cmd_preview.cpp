@@ -28,6 +28,7 @@ struct PreviewCommandOptions {
     int frames = 0;
     std::string windowScreenshot;
     std::string wif;
+    std::string widgetMap;
 };
 
 SceneDescription openScene(const PreviewCommandOptions& o) {
@@ -76,8 +77,10 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
-    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
+    cmd->add_option("--widget-map", o->widgetMap,
+                    "Window: write the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON to FILE each frame");
     cmd->add_option("--wif", o->wif, "Window: open this draft (WIF file) on the first woven material, in the draft view");
     cmd->callback([o] {
         if (o->headless) return runHeadless(*o);
@@ -87,6 +90,7 @@ void addPreviewCommand(CLI::App& app) {
         window.frames = o->frames;
         window.screenshot = o->windowScreenshot;
         window.draft = o->wif;
+        window.widgetMap = o->widgetMap;
         runPreviewWindow(window);
     });
 }

@@ -6,7 +6,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libopenimageio-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
-  libgtest-dev libbenchmark-dev xvfb xauth gnuplot-nox
+  libgtest-dev libbenchmark-dev xvfb xauth xdotool gnuplot-nox
   clang libclang-rt-14-dev  # the fuzz and asan presets (docs/FUZZING.md): libFuzzer, ASan, UBSan
   slurm-wlm munge
 )

@@ -4,8 +4,17 @@
 #include <cmath>
 
 #include <glm/common.hpp>
+#include <imgui.h>
+#include <imgui_internal.h>
 
 namespace woven {
+
+bool panelInteracting() {
+    const ImGuiContext* g = ImGui::GetCurrentContext();
+    if (!g || g->ActiveId == 0) return false;
+    // The text field that has the focus (a slider typed into after Ctrl+click is one too).
+    return g->InputTextState.ID != g->ActiveId;
+}
 
 InteractiveResolution::InteractiveResolution(const Settings& settings) : settings_(settings) {}
 

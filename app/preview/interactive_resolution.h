@@ -9,6 +9,13 @@
 
 namespace woven {
 
+// Whether the window's ImGui panel is being interacted with, in the current ImGui context: a
+// slider, drag, colour or button held with the mouse or keys. A text field with the keyboard
+// focus is not (ImGui counts it as active as long as it has the focus, which would keep the view
+// at its interactive resolution while one types, and after): typing changes no value while it
+// goes on the way a drag does.
+bool panelInteracting();
+
 class InteractiveResolution {
 public:
     struct Settings {

@@ -1,54 +1,32 @@
-#include "preview_window.h"
+#include "preview_window_impl.h"
 
-#include <epoxy/gl.h>
-// epoxy must come first: GLFW would otherwise include the system GL header.
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
-#include <memory>
-#include <optional>
-#include <string>
-#include <vector>
 
 #include "demo_scene.h"
-#include "draft_material.h"
-#include "draft_view.h"
-#include "final_render.h"
 #include "gl_error.h"
 #include "image_io.h"
-#include "interactive_resolution.h"
-#include "material_file.h"
-#include "orbit_camera.h"
-#include "preview_renderer.h"
-#include "scene_export.h"
 #include "scene_loader.h"
-#include "scene_picker.h"
-#include "uv_scale.h"
-#include "weave_presets.h"
 #include "woven_assignment.h"
-#include "woven_edits.h"
 
 namespace woven {
 
 namespace {
 
-// ImGui's text fields edit fixed buffers.
-template <size_t N>
-void copyToBuffer(char (&buffer)[N], const std::string& text) {
-    std::snprintf(buffer, N, "%s", text.c_str());
-}
-
-bool hasExtension(const std::string& path, const char* ext) {
-    const size_t n = std::char_traits<char>::length(ext);
-    return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
-}
+// SIGINT, SIGTERM: the window closes at the end of the frame, as if its close button was pressed.
+std::atomic<bool> closeRequested{false};
+extern "C" void requestClose(int) { closeRequested = true; }
 
 // Weaving programs write .wif and .WIF alike.
 bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
@@ -82,74 +60,7 @@ std::vector<uint8_t> displayBytes(const Image& image, const DisplayTransform& tr
     return bytes;
 }
 
-
-class PreviewWindow {
-public:
-    explicit PreviewWindow(const PreviewWindowOptions& options);
-    ~PreviewWindow();
-    void run();
-
-private:
-    void openScene(const std::string& path);
-    void openDraft(const std::string& path);
-    void handleMouse();
-    void pick(glm::vec2 cursor);
-    void drawPanel();
-    void drawSelection();
-    void drawMaterialControls(WovenParams& p);
-    void drawDraftControls(WovenParams& p);
-    void drawDraftWindow();
-    void applyEdits();
-    void drawLightControls();
-    void drawRenderControls();
-    void updateFinalTexture(const FilmImage& film);
-    void drawFinalImage();
-    void writeWindowScreenshot(const std::string& path);
-    WovenParams* editedParams();
-    SceneDescription& scene() { return edits_->sceneForLighting(); }
-
-    static void onScroll(GLFWwindow* window, double, double dy);
-    static void onDrop(GLFWwindow* window, int count, const char** paths);
-
-    PreviewWindowOptions options_;
-    GLFWwindow* window_ = nullptr;
-    std::unique_ptr<PreviewRenderer> renderer_;
-    std::optional<WovenEdits> edits_;  // the scene as loaded, with the window's "make woven" edits
-    std::string scenePath_;
-    PreviewLights lights_;
-    OrbitCamera camera_;
-    ScenePicker picker_;
-    int pickedMesh_ = -1;     // the primitive last clicked
-    int targetChoice_ = 0;    // which of its targets the selection panel offers
-    int editIndex_ = -1;      // the edit the panel tunes
-    int presetIndex_ = -1;
-    DisplayTransform display_;
-    bool filterWeave_ = true;
-    bool shadows_ = true;
-    double scroll_ = 0.0;
-    std::vector<std::string> droppedPaths_;
-    glm::dvec2 lastCursor_{0.0};
-    std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
-    bool steering_ = false;                // the camera is being dragged or zoomed
-    InteractiveResolution resolution_;
-    std::string status_;
-    char materialPath_[512] = "material.json";
-    char imagePath_[512] = "render.png";
-    char exportPath_[512] = "scene.glb";
-
-    // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
-    // parameters at once, so the next frame shows it.
-    std::optional<DraftEditor> draft_;
-    int draftEdit_ = -1;
-    DraftView draftView_;
-    char draftPath_[512] = "draft.wif";
-
-    FinalRender final_;
-    std::optional<FilmImage> finalImage_;
-    GLuint finalTexture_ = 0;
-    bool showFinal_ = false;
-    RenderSettings render_;  // the Render button's, but for the camera
-};
+}  // namespace
 
 PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
     : options_(options), filterWeave_(!options.frame.noFilter) {
@@ -178,6 +89,7 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    imguiKeyCallback_ = glfwSetKeyCallback(window_, onKey);  // ImGui's, which ours forwards to
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     renderer_ = std::make_unique<PreviewRenderer>();
@@ -301,6 +213,26 @@ void PreviewWindow::onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) self->droppedPaths_.emplace_back(paths[i]);
 }
 
+void PreviewWindow::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    auto* self = static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window));
+    auto& pressed = self->pressedSinceFrame_;
+    if (action == GLFW_PRESS) pressed.push_back(key);
+    if (action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), key) != pressed.end()) {
+        self->deferredReleases_.emplace_back(key, scancode, mods);
+        return;
+    }
+    if (self->imguiKeyCallback_) self->imguiKeyCallback_(window, key, scancode, action, mods);
+}
+
+// After ImGui::NewFrame(), which saw the keys down.
+void PreviewWindow::releaseDeferredKeys() {
+    pressedSinceFrame_.clear();
+    std::vector<glm::ivec3> releases;
+    releases.swap(deferredReleases_);
+    for (const glm::ivec3& r : releases)
+        if (imguiKeyCallback_) imguiKeyCallback_(window_, r.x, r.y, GLFW_RELEASE, r.z);
+}
+
 void PreviewWindow::handleMouse() {
     glm::dvec2 cursor;
     glfwGetCursorPos(window_, &cursor.x, &cursor.y);
@@ -337,332 +269,6 @@ void PreviewWindow::handleMouse() {
     // A held button steers even while the cursor rests, so a pause in a drag is no full frame.
     steering_ = changed || pressedAt_ || glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-}
-
-void PreviewWindow::drawMaterialControls(WovenParams& p) {
-    const auto& presets = weavePresets();
-    const char* presetName = presetIndex_ >= 0 ? presets[presetIndex_].name.c_str() : "(custom)";
-    if (ImGui::BeginCombo("weave preset", presetName)) {
-        for (size_t i = 0; i < presets.size(); ++i)
-            if (ImGui::Selectable(presets[i].name.c_str(), int(i) == presetIndex_)) {
-                presetIndex_ = int(i);
-                applyPreset(presets[i], p);
-            }
-        ImGui::EndCombo();
-    }
-    for (const ParamInfo& info : wovenParamTable()) {
-        if (!isNumeric(info.type)) continue;  // the tile and the per-thread lists: the draft view
-        char* field = reinterpret_cast<char*>(&p) + info.offset;
-        ImGui::PushID(info.name);
-        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
-        switch (info.type) {
-        case ParamType::Float:
-            ImGui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
-            break;
-        case ParamType::Int:
-            ImGui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
-            break;
-        case ParamType::Vec2:
-            ImGui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
-            break;
-        case ParamType::Vec3:
-            ImGui::ColorEdit3(info.label, reinterpret_cast<float*>(field), ImGuiColorEditFlags_Float);
-            break;
-        case ParamType::IVec3: {
-            int* v = reinterpret_cast<int*>(field);
-            if (ImGui::InputInt3(info.label, v)) {
-                for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(info.min), int(info.max));
-                p.tile.clear();  // an edited (i, j, k) replaces a hand-drawn tile
-                presetIndex_ = -1;
-            }
-            break;
-        }
-        default: break;
-        }
-        ImGui::PopID();
-    }
-    try {
-        validate(p);
-    } catch (const std::exception& e) {
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", e.what());
-    }
-
-    ImGui::InputText("scene file", materialPath_, sizeof materialPath_);
-    const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-    if (ImGui::Button("Save materials")) {
-        // Every edit under its target, as a scene file's "materials" says it.
-        try {
-            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
-            for (const WovenEdit& e : edits_->edits()) saveMaterial(materialPath_, e.target, e.params, gltf ? scenePath_ : "");
-            status_ = std::string("saved ") + materialPath_;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Load material")) {
-        try {
-            std::vector<std::string> warnings;
-            const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
-            p = read.params;
-            if (read.threadsPerCm) p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target), *read.threadsPerCm);
-            presetIndex_ = -1;
-            status_ = std::string("loaded ") + materialPath_;
-            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-            if (!read.wif.empty()) {
-                draft_ = DraftEditor::open(read.wif, warnings);
-                draftEdit_ = editIndex_;
-                copyToBuffer(draftPath_, read.wif);
-            }
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    drawDraftControls(p);
-}
-
-void PreviewWindow::drawDraftControls(WovenParams& p) {
-    ImGui::Separator();
-    ImGui::InputText("draft file", draftPath_, sizeof draftPath_);
-    if (ImGui::Button("Open draft")) {
-        try {
-            openDraft(draftPath_);
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    if (!draft_ || draftEdit_ != editIndex_) {
-        ImGui::SameLine();
-        ImGui::TextDisabled("(or drop a .wif on the window)");
-        return;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Save WIF")) {
-        try {
-            draft_->save(draftPath_);
-            status_ = std::string("saved ") + draftPath_;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    ImGui::SameLine();
-    // "scale": "draft": the draft's threads per centimetre on this mesh.
-    if (ImGui::Button("Real scale")) {
-        try {
-            const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-            p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
-                                             draftThreadsPerCm(draft_->draft(), draft_->name()));
-            validate(p);
-            status_ = "repeat from the draft's spacing";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    if (ImGui::Button("Save material with draft")) {
-        try {
-            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
-            const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
-                                                          gltf ? scenePath_ : "", *draft_);
-            copyToBuffer(draftPath_, wif);
-            status_ = std::string("saved ") + materialPath_ + " and " + wif;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-}
-
-// The draft view of the material the draft belongs to, beside the panel.
-void PreviewWindow::drawDraftWindow() {
-    if (!draft_ || draftEdit_ < 0 || draftEdit_ >= int(edits_->edits().size())) return;
-    WovenParams* woven = &edits_->params(draftEdit_);
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(456, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(std::max(display.x - 464, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Draft");
-    try {
-        if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
-            *woven = draft_->material(*woven);
-            presetIndex_ = -1;
-            showFinal_ = false;  // the rendered frame is of the old cloth
-            applyEdits();
-        }
-    } catch (const std::exception& e) {
-        status_ = e.what();
-    }
-    ImGui::End();
-}
-
-// Edits the scene's own lights, so the Render button sees the same lighting as the preview.
-void PreviewWindow::drawLightControls() {
-    static const char* typeNames[] = {"point", "spot", "directional"};
-    bool changed = false;
-    for (size_t i = 0; i < scene().lights.size(); ++i) {
-        PunctualLight& light = scene().lights[i];
-        ImGui::PushID(int(i));
-        ImGui::Text("light %zu (%s)", i, typeNames[int(light.type)]);
-        changed |= ImGui::ColorEdit3("intensity", &light.intensity.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-        if (light.type == PunctualLight::Type::Point)
-            changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
-        if (light.type != PunctualLight::Type::Point && ImGui::SliderFloat3("direction", &light.direction.x, -1.0f, 1.0f)) {
-            if (glm::length(light.direction) < 1e-3f) light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-            light.direction = glm::normalize(light.direction);
-            changed = true;
-        }
-        ImGui::PopID();
-    }
-    changed |= ImGui::ColorEdit3("environment", &scene().environment.color.x,
-                                 ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    if (changed) lights_ = PreviewLights::fromScene(scene());
-}
-
-void PreviewWindow::drawRenderControls() {
-    ImGui::InputInt2("render size", &render_.width);
-    render_.width = std::clamp(render_.width, 1, 16384);
-    render_.height = std::clamp(render_.height, 1, 16384);
-    ImGui::InputInt("spp", &render_.spp);
-    render_.spp = std::clamp(render_.spp, 1, 1 << 20);
-    ImGui::InputDouble("noise threshold", &render_.noiseThreshold, 0.01, 0.05, "%.3f");
-    render_.noiseThreshold = std::clamp(render_.noiseThreshold, 0.0, 1.0);
-    if (ImGui::BeginCombo("integrator", render_.integrator.c_str())) {
-        for (const char* name : kIntegratorNames)
-            if (ImGui::Selectable(name, render_.integrator == name)) render_.integrator = name;
-        ImGui::EndCombo();
-    }
-    if (ImGui::Button("Render")) {
-        RenderSettings settings = render_;
-        settings.camera = camera_.camera();
-        final_.start(scene(), settings);
-        finalImage_.reset();
-        showFinal_ = true;
-    }
-    if (final_.running()) {
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) final_.cancel();
-    }
-    // Export: the scene as the window shows it, through its camera, woven materials baked.
-    ImGui::SameLine();
-    if (ImGui::Button("Export")) {
-        SceneDescription shown = scene();
-        shown.camera = camera_.camera();
-        shown.hasCamera = true;
-        try {
-            const std::vector<std::string> warnings = exportScene(shown, exportPath_, ExportOptions{});
-            for (const std::string& w : warnings) std::cerr << "warning: " << exportPath_ << ": " << w << "\n";
-            status_ = "exported " + std::string(exportPath_) + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(-1.0f);
-    ImGui::InputText("##export file", exportPath_, sizeof exportPath_);
-    if (final_.running() || finalImage_)
-        ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
-    if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());
-    if (!finalImage_) return;
-    ImGui::Checkbox("show the rendered frame", &showFinal_);
-    ImGui::InputText("image file", imagePath_, sizeof imagePath_);
-    const bool png = ImGui::Button("Save PNG");
-    ImGui::SameLine();
-    const bool exr = ImGui::Button("Save EXR");
-    if (png || exr) {
-        std::string path = imagePath_;
-        const size_t dot = path.find_last_of('.');
-        path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
-        try {
-            writeFrame(path, finalImage_->exr(), display_);
-            status_ = "saved " + path;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-}
-
-// What the last click picked, the targets that name it, and "make woven" / "revert".
-void PreviewWindow::drawSelection() {
-    if (pickedMesh_ < 0 || pickedMesh_ >= int(scene().meshes.size())) {
-        ImGui::TextWrapped("Click a surface to select it.");
-        return;
-    }
-    const Mesh& mesh = scene().meshes[size_t(pickedMesh_)];
-    std::string path;
-    for (const std::string& node : mesh.nodePath) path += (path.empty() ? "" : " > ") + node;
-    ImGui::TextWrapped("node %s", path.c_str());
-    ImGui::TextWrapped("mesh %s", mesh.meshName.c_str());
-    ImGui::TextWrapped("material %s", mesh.material >= 0 ? scene().materials[size_t(mesh.material)].name.c_str() : "(none)");
-    const std::vector<std::string> targets = edits_->targetsFor(pickedMesh_);
-    targetChoice_ = std::clamp(targetChoice_, 0, int(targets.size()) - 1);
-    if (ImGui::BeginCombo("target", targets[size_t(targetChoice_)].c_str())) {
-        for (size_t i = 0; i < targets.size(); ++i)
-            if (ImGui::Selectable(targets[i].c_str(), int(i) == targetChoice_)) targetChoice_ = int(i);
-        ImGui::EndCombo();
-    }
-    const std::string& target = targets[size_t(targetChoice_)];
-    if (ImGui::Button("Make woven")) {
-        try {
-            editIndex_ = edits_->makeWoven(target);
-            presetIndex_ = -1;
-            applyEdits();
-            status_ = "made " + target + " woven";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Revert")) {
-        const std::string current = editIndex_ >= 0 ? edits_->edits()[size_t(editIndex_)].target : "";
-        if (edits_->revert(target)) {
-            editIndex_ = -1;
-            for (size_t i = 0; i < edits_->edits().size(); ++i)
-                if (edits_->edits()[i].target == current) editIndex_ = int(i);
-            applyEdits();
-            status_ = "reverted " + target;
-        } else {
-            status_ = target + " has no edit to revert";
-        }
-    }
-}
-
-void PreviewWindow::drawPanel() {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(440, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
-    ImGui::Begin("woven");
-    ImGui::PushItemWidth(-200.0f);  // room for the paper's long labels
-    ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
-    ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
-                100.0f * resolution_.scale());
-    static const char* const toneMaps[] = {"clamp", "reinhard", "aces"};  // core's ToneMap order
-    int toneMap = int(display_.toneMap);
-    const bool exposureChanged = ImGui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
-    const bool toneMapChanged = ImGui::Combo("tone map", &toneMap, toneMaps, IM_ARRAYSIZE(toneMaps));
-    display_.toneMap = ToneMap(toneMap);
-    if ((exposureChanged || toneMapChanged) && finalImage_) updateFinalTexture(*finalImage_);
-    ImGui::Checkbox("filter distant weave", &filterWeave_);
-    ImGui::SameLine();
-    ImGui::Checkbox("shadows", &shadows_);
-    if (ImGui::Button("Frame scene")) {
-        const SceneBox box = sceneBounds(scene());
-        camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
-    }
-
-    if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) drawSelection();
-    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const auto& edits = edits_->edits();
-        if (ImGui::BeginCombo("woven", editIndex_ >= 0 ? edits[size_t(editIndex_)].target.c_str() : "(none: click a surface)")) {
-            for (size_t i = 0; i < edits.size(); ++i)
-                if (ImGui::Selectable(edits[i].target.c_str(), int(i) == editIndex_)) editIndex_ = int(i), presetIndex_ = -1;
-            ImGui::EndCombo();
-        }
-        if (WovenParams* p = editedParams()) {
-            drawMaterialControls(*p);
-            applyEdits();
-        }
-    }
-    if (ImGui::CollapsingHeader("Lights")) drawLightControls();
-    if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderControls();
-    if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
-    ImGui::PopItemWidth();
-    ImGui::End();
 }
 
 void PreviewWindow::updateFinalTexture(const FilmImage& film) {
@@ -711,12 +317,45 @@ void PreviewWindow::writeWindowScreenshot(const std::string& path) {
     writePng(path, image, {0.0f, ToneMap::Clamp});
 }
 
+// The frame's widgets and what the window test waits on, written whole (FILE.tmp, renamed) so a
+// reader never sees half a frame.
+void PreviewWindow::writeWidgetMap(const std::string& path) {
+    nlohmann::json map = widgets_.json();
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetWindowPos(window_, &x, &y);
+    glfwGetWindowSize(window_, &width, &height);
+    nlohmann::json image = nullptr;
+    if (finalImage_) image = {finalImage_->radiance.width, finalImage_->radiance.height};
+    map["state"] = {
+        {"frame", frame_},
+        {"window", {{"pos", {x, y}}, {"size", {width, height}}}},
+        {"status", status_},
+        {"interacting", interacting_},
+        {"resolution_scale", resolution_.scale()},
+        {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
+                    {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
+        {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
+                   {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image},
+                   {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},
+    };
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp);
+        out << map.dump() << "\n";
+        if (!out) throw std::runtime_error(tmp + ": could not write the widget map");
+    }
+    std::filesystem::rename(tmp, path);
+}
+
 void PreviewWindow::run() {
+    closeRequested = false;
+    auto previousInt = std::signal(SIGINT, requestClose);
+    auto previousTerm = std::signal(SIGTERM, requestClose);
     glfwGetCursorPos(window_, &lastCursor_.x, &lastCursor_.y);
     double frameStart = glfwGetTime();
-    for (int frame = 1; !glfwWindowShouldClose(window_); ++frame) {
+    for (frame_ = 1; !glfwWindowShouldClose(window_); ++frame_) {
         const double now = glfwGetTime();
-        if (frame > 1) resolution_.frameTook(now - frameStart);
+        if (frame_ > 1) resolution_.frameTook(now - frameStart);
         frameStart = now;
         glfwPollEvents();
         std::vector<std::string> dropped;
@@ -729,16 +368,25 @@ void PreviewWindow::run() {
                 status_ = e.what();
             }
         }
+        // The job stores its last snapshot before it stops running: once it was seen stopped,
+        // the snapshot taken next is its last.
+        const bool renderStopped = !final_.running();
         if (std::optional<FilmImage> snapshot = final_.newSnapshot()) {
             finalImage_ = std::move(snapshot);
             updateFinalTexture(*finalImage_);
         }
+        finalDone_ = renderStopped && finalImage_ && final_.error().empty();
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
+        releaseDeferredKeys();
+        widgets_.beginFrame();
+        setCurrentWidgetMap(&widgets_);
         drawPanel();
         drawDraftWindow();
+        setCurrentWidgetMap(nullptr);
+        widgets_.warnClashes();
         drawFinalImage();
         handleMouse();
         ImGui::Render();
@@ -756,8 +404,9 @@ void PreviewWindow::run() {
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
             try {
-                const bool interacting = steering_ || ImGui::IsAnyItemActive();
-                renderer_->render(scene(), lights_, camera, resolution_.frameSize({width, height}, interacting, now),
+                // A focused text field is no interaction: the view stays sharp while typing.
+                interacting_ = steering_ || panelInteracting();
+                renderer_->render(scene(), lights_, camera, resolution_.frameSize({width, height}, interacting_, now),
                                   preview);
                 renderer_->display(0, {0, 0}, {width, height}, display_);
             } catch (const std::exception& e) {
@@ -768,14 +417,16 @@ void PreviewWindow::run() {
         }
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        const bool last = options_.frames > 0 && frame >= options_.frames;
+        // A signal ends the loop after this frame, which is then the last (and its screenshot).
+        const bool last = (options_.frames > 0 && frame_ >= options_.frames) || closeRequested;
         if (last && !options_.screenshot.empty()) writeWindowScreenshot(options_.screenshot);
         glfwSwapBuffers(window_);
+        if (!options_.widgetMap.empty()) writeWidgetMap(options_.widgetMap);
         if (last) break;
     }
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
 }
-
-}  // namespace
 
 void runPreviewWindow(const PreviewWindowOptions& options) {
     PreviewWindow window(options);

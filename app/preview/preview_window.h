@@ -17,11 +17,15 @@ struct PreviewWindowOptions {
     // is the scene's, else the window's.
     FrameOptions frame;
     int frames = 0;              // quit after this many frames; 0 = until the window is closed
-    std::string screenshot;      // PNG of the last frame (panel included), written before quitting
+    std::string screenshot;      // PNG of the last frame (panel included), written before quitting (not
+                                 // when the window is closed by its close button)
     std::string draft;           // a WIF file to open on the first woven material at start
+    // Each frame, the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON
+    // (widget_map.h), written whole: for tests that click through the window.
+    std::string widgetMap;
 };
 
-// Runs until the window closes (or `frames` frames). Throws GlError when no window or context
+// Runs until the window closes (or `frames` frames, or SIGINT or SIGTERM). Throws GlError when no window or context
 // can be had, std::runtime_error when the initial scene cannot be loaded.
 void runPreviewWindow(const PreviewWindowOptions& options);
 

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "headless_imgui.h"
 #include "interactive_resolution.h"
 
 namespace woven {
@@ -111,6 +112,70 @@ TEST(InteractiveResolution, FramesItDidNotSizeDoNotCount) {
     for (int i = 0; i < 10; ++i) r.frameTook(0.001);
     r.frameSize(kWindow, true, now);
     EXPECT_EQ(r.scale(), settled);
+}
+
+}  // namespace
+}  // namespace woven
+
+// panelInteracting(), which the window asks each frame, on a real ImGui context: a text field
+// with the keyboard focus is active to ImGui (IsAnyItemActive) but is no interaction; a slider
+// held is.
+namespace woven {
+namespace {
+
+struct Panel {
+    char text[32] = "160";
+    float value = 0.5f;
+    ImVec2 textAt, sliderAt;  // the widgets' centres, as last drawn
+    void draw() {
+        ImGui::InputText("text", text, sizeof text);
+        textAt = itemCentre();
+        ImGui::SliderFloat("value", &value, 0.0f, 1.0f);
+        sliderAt = itemCentre();
+    }
+};
+
+TEST(PanelInteracting, NotWithoutAContextOrAnActiveItem) {
+    EXPECT_FALSE(panelInteracting());
+    HeadlessImGui imgui;
+    Panel panel;
+    for (int i = 0; i < 3; ++i) imgui.frame(ImVec2(390, 290), false, [&] { panel.draw(); });
+    EXPECT_FALSE(ImGui::IsAnyItemActive());
+    EXPECT_FALSE(panelInteracting());
+}
+
+TEST(PanelInteracting, NotWhileATextFieldHasTheFocus) {
+    HeadlessImGui imgui;
+    Panel panel;
+    imgui.frame(ImVec2(390, 290), false, [&] { panel.draw(); });
+    // Clicked into, then typed into with the mouse away, for a while.
+    imgui.frame(panel.textAt, false, [&] { panel.draw(); });
+    imgui.frame(panel.textAt, true, [&] { panel.draw(); });
+    imgui.frame(panel.textAt, false, [&] { panel.draw(); });
+    for (int i = 0; i < 10; ++i) {
+        if (i == 3) ImGui::GetIO().AddInputCharacter('5');
+        imgui.frame(ImVec2(390, 290), false, [&] { panel.draw(); });
+        ASSERT_TRUE(ImGui::IsAnyItemActive()) << "frame " << i << ": the text field lost the focus";
+        EXPECT_FALSE(panelInteracting()) << "frame " << i;
+    }
+    EXPECT_STREQ(panel.text, "1605");
+}
+
+TEST(PanelInteracting, WhileASliderIsHeldOrDragged) {
+    HeadlessImGui imgui;
+    Panel panel;
+    imgui.frame(ImVec2(390, 290), false, [&] { panel.draw(); });
+    imgui.frame(panel.sliderAt, false, [&] { panel.draw(); });
+    const ImVec2 at = panel.sliderAt;
+    for (int i = 0; i < 6; ++i) {
+        // Held still for three frames, then dragged right.
+        imgui.frame(ImVec2(at.x + (i < 3 ? 0.0f : 10.0f * float(i)), at.y), true, [&] { panel.draw(); });
+        EXPECT_TRUE(panelInteracting()) << "frame " << i;
+    }
+    EXPECT_GT(panel.value, 0.5f);
+    imgui.frame(at, false, [&] { panel.draw(); });
+    imgui.frame(at, false, [&] { panel.draw(); });
+    EXPECT_FALSE(panelInteracting());
 }
 
 }  // namespace

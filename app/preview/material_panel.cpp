@@ -1,0 +1,222 @@
+// The panel's Selection and Material sections (the sliders generated from wovenParamTable(),
+// presets, saving and loading, the draft's file), and the Draft window beside the panel.
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+
+#include "draft_material.h"
+#include "material_file.h"
+#include "preview_window_impl.h"
+#include "uv_scale.h"
+#include "weave_presets.h"
+#include "woven_params.h"
+
+namespace woven {
+
+void PreviewWindow::drawMaterialControls(WovenParams& p) {
+    const auto& presets = weavePresets();
+    const char* presetName = presetIndex_ >= 0 ? presets[presetIndex_].name.c_str() : "(custom)";
+    if (ui::BeginCombo("weave preset", presetName)) {
+        for (size_t i = 0; i < presets.size(); ++i)
+            if (ui::Selectable(presets[i].name.c_str(), int(i) == presetIndex_)) {
+                presetIndex_ = int(i);
+                applyPreset(presets[i], p);
+            }
+        ui::EndCombo();
+    }
+    for (const ParamInfo& info : wovenParamTable()) {
+        if (!isNumeric(info.type)) continue;  // the tile and the per-thread lists: the draft view
+        char* field = reinterpret_cast<char*>(&p) + info.offset;
+        ImGui::PushID(info.name);
+        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+        switch (info.type) {
+        case ParamType::Float:
+            ui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
+            break;
+        case ParamType::Int:
+            ui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
+            break;
+        case ParamType::Vec2:
+            ui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
+            break;
+        case ParamType::Vec3:
+            ui::ColorEdit3(info.label, reinterpret_cast<float*>(field), ImGuiColorEditFlags_Float);
+            break;
+        case ParamType::IVec3: {
+            int* v = reinterpret_cast<int*>(field);
+            if (ui::InputInt3(info.label, v)) {
+                for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(info.min), int(info.max));
+                p.tile.clear();  // an edited (i, j, k) replaces a hand-drawn tile
+                presetIndex_ = -1;
+            }
+            break;
+        }
+        default: break;
+        }
+        ImGui::PopID();
+    }
+    try {
+        validate(p);
+    } catch (const std::exception& e) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", e.what());
+    }
+
+    ui::InputText("scene file", materialPath_, sizeof materialPath_);
+    const std::string& target = edits_->edits()[size_t(editIndex_)].target;
+    if (ui::Button("Save materials")) {
+        // Every edit under its target, as a scene file's "materials" says it.
+        try {
+            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
+            for (const WovenEdit& e : edits_->edits()) saveMaterial(materialPath_, e.target, e.params, gltf ? scenePath_ : "");
+            status_ = std::string("saved ") + materialPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ui::Button("Load material")) {
+        try {
+            std::vector<std::string> warnings;
+            const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
+            p = read.params;
+            if (read.threadsPerCm) p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target), *read.threadsPerCm);
+            presetIndex_ = -1;
+            status_ = std::string("loaded ") + materialPath_;
+            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+            if (!read.wif.empty()) {
+                draft_ = DraftEditor::open(read.wif, warnings);
+                draftEdit_ = editIndex_;
+                copyToBuffer(draftPath_, read.wif);
+            }
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    drawDraftControls(p);
+}
+
+void PreviewWindow::drawDraftControls(WovenParams& p) {
+    ImGui::Separator();
+    ui::InputText("draft file", draftPath_, sizeof draftPath_);
+    if (ui::Button("Open draft")) {
+        try {
+            openDraft(draftPath_);
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (!draft_ || draftEdit_ != editIndex_) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(or drop a .wif on the window)");
+        return;
+    }
+    ImGui::SameLine();
+    if (ui::Button("Save WIF")) {
+        try {
+            draft_->save(draftPath_);
+            status_ = std::string("saved ") + draftPath_;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    // "scale": "draft": the draft's threads per centimetre on this mesh.
+    if (ui::Button("Real scale")) {
+        try {
+            const std::string& target = edits_->edits()[size_t(editIndex_)].target;
+            p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
+                                             draftThreadsPerCm(draft_->draft(), draft_->name()));
+            validate(p);
+            status_ = "repeat from the draft's spacing";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    if (ui::Button("Save material with draft")) {
+        try {
+            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
+            const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
+                                                          gltf ? scenePath_ : "", *draft_);
+            copyToBuffer(draftPath_, wif);
+            status_ = std::string("saved ") + materialPath_ + " and " + wif;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+// The draft view of the material the draft belongs to, beside the panel.
+void PreviewWindow::drawDraftWindow() {
+    if (!draft_ || draftEdit_ < 0 || draftEdit_ >= int(edits_->edits().size())) return;
+    WovenParams* woven = &edits_->params(draftEdit_);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    // Beside the panel, as wide as it leaves the window.
+    const ImGuiWindow* panel = ImGui::FindWindowByName("woven");
+    const float left = panel ? panel->Rect().Max.x + 8.0f : 456.0f;
+    ImGui::SetNextWindowPos(ImVec2(left, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::max(display.x - left - 8.0f, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Draft");
+    try {
+        if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
+            *woven = draft_->material(*woven);
+            presetIndex_ = -1;
+            showFinal_ = false;  // the rendered frame is of the old cloth
+            applyEdits();
+        }
+    } catch (const std::exception& e) {
+        status_ = e.what();
+    }
+    ImGui::End();
+}
+
+
+// What the last click picked, the targets that name it, and "make woven" / "revert".
+void PreviewWindow::drawSelection() {
+    if (pickedMesh_ < 0 || pickedMesh_ >= int(scene().meshes.size())) {
+        ImGui::TextWrapped("Click a surface to select it.");
+        return;
+    }
+    const Mesh& mesh = scene().meshes[size_t(pickedMesh_)];
+    std::string path;
+    for (const std::string& node : mesh.nodePath) path += (path.empty() ? "" : " > ") + node;
+    ImGui::TextWrapped("node %s", path.c_str());
+    ImGui::TextWrapped("mesh %s", mesh.meshName.c_str());
+    ImGui::TextWrapped("material %s", mesh.material >= 0 ? scene().materials[size_t(mesh.material)].name.c_str() : "(none)");
+    const std::vector<std::string> targets = edits_->targetsFor(pickedMesh_);
+    targetChoice_ = std::clamp(targetChoice_, 0, int(targets.size()) - 1);
+    if (ui::BeginCombo("target", targets[size_t(targetChoice_)].c_str())) {
+        for (size_t i = 0; i < targets.size(); ++i)
+            if (ui::Selectable(targets[i].c_str(), int(i) == targetChoice_)) targetChoice_ = int(i);
+        ui::EndCombo();
+    }
+    const std::string& target = targets[size_t(targetChoice_)];
+    if (ui::Button("Make woven")) {
+        try {
+            editIndex_ = edits_->makeWoven(target);
+            presetIndex_ = -1;
+            applyEdits();
+            status_ = "made " + target + " woven";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ui::Button("Revert")) {
+        const std::string current = editIndex_ >= 0 ? edits_->edits()[size_t(editIndex_)].target : "";
+        if (edits_->revert(target)) {
+            editIndex_ = -1;
+            for (size_t i = 0; i < edits_->edits().size(); ++i)
+                if (edits_->edits()[i].target == current) editIndex_ = int(i);
+            applyEdits();
+            status_ = "reverted " + target;
+        } else {
+            status_ = target + " has no edit to revert";
+        }
+    }
+}
+
+
+}  // namespace woven

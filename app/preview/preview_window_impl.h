@@ -1,0 +1,130 @@
+#pragma once
+// The previewer window's class, private to app/preview: its loop and mouse handling are in
+// preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
+// render_panel.cpp (the Render button) and material_panel.cpp (selection, material, draft).
+#include <epoxy/gl.h>
+// epoxy must come first: GLFW would otherwise include the system GL header.
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "draft_editor.h"
+#include "draft_view.h"
+#include "final_render.h"
+#include "interactive_resolution.h"
+#include "orbit_camera.h"
+#include "preview_lights.h"
+#include "preview_renderer.h"
+#include "preview_window.h"
+#include "scene_picker.h"
+#include "widget_map.h"
+#include "woven_edits.h"
+
+namespace woven {
+
+// ImGui's text fields edit fixed buffers.
+template <size_t N>
+void copyToBuffer(char (&buffer)[N], const std::string& text) {
+    std::snprintf(buffer, N, "%s", text.c_str());
+}
+
+inline bool hasExtension(const std::string& path, const char* ext) {
+    const size_t n = std::char_traits<char>::length(ext);
+    return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
+}
+
+class PreviewWindow {
+public:
+    // The label column of the panel: the widest label any of its fields shows.
+    static float labelWidth();
+
+    explicit PreviewWindow(const PreviewWindowOptions& options);
+    ~PreviewWindow();
+    void run();
+
+private:
+    void openScene(const std::string& path);
+    void openDraft(const std::string& path);
+    void handleMouse();
+    void pick(glm::vec2 cursor);
+    void drawPanel();
+    void drawSelection();
+    void drawMaterialControls(WovenParams& p);
+    void drawDraftControls(WovenParams& p);
+    void drawDraftWindow();
+    void applyEdits();
+    void drawLightControls();
+    void drawRenderControls();
+    void updateFinalTexture(const FilmImage& film);
+    void drawFinalImage();
+    void writeWindowScreenshot(const std::string& path);
+    void writeWidgetMap(const std::string& path);
+    // `value` within [lo, hi], saying so in the status line when it was not.
+    template <typename T>
+    void clampSetting(const char* name, T& value, T lo, T hi);
+    WovenParams* editedParams();
+    SceneDescription& scene() { return edits_->sceneForLighting(); }
+
+    static void onScroll(GLFWwindow* window, double, double dy);
+    static void onDrop(GLFWwindow* window, int count, const char** paths);
+    // Between ImGui's GLFW backend and GLFW: a key released before ImGui saw it down (a quick
+    // Tab or Enter while a frame takes 100 ms and more, in software) is released after the
+    // next ImGui::NewFrame() instead, so ImGui sees it pressed. ImGui 1.86's backend keeps only
+    // whether a key is down, not that it went down; it does so for mouse buttons alone.
+    static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+    void releaseDeferredKeys();
+
+    PreviewWindowOptions options_;
+    GLFWwindow* window_ = nullptr;
+    std::unique_ptr<PreviewRenderer> renderer_;
+    std::optional<WovenEdits> edits_;  // the scene as loaded, with the window's "make woven" edits
+    std::string scenePath_;
+    PreviewLights lights_;
+    OrbitCamera camera_;
+    ScenePicker picker_;
+    int pickedMesh_ = -1;     // the primitive last clicked
+    int targetChoice_ = 0;    // which of its targets the selection panel offers
+    int editIndex_ = -1;      // the edit the panel tunes
+    int presetIndex_ = -1;
+    DisplayTransform display_;
+    bool filterWeave_ = true;
+    bool shadows_ = true;
+    double scroll_ = 0.0;
+    std::vector<std::string> droppedPaths_;
+    GLFWkeyfun imguiKeyCallback_ = nullptr;
+    std::vector<int> pressedSinceFrame_;       // keys that went down since the last NewFrame()
+    std::vector<glm::ivec3> deferredReleases_;  // key, scancode, mods
+    glm::dvec2 lastCursor_{0.0};
+    std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
+    bool steering_ = false;                // the camera is being dragged or zoomed
+    InteractiveResolution resolution_;
+    std::string status_;
+    char materialPath_[512] = "material.json";
+    char imagePath_[512] = "render.png";
+    char exportPath_[512] = "scene.glb";
+
+    // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
+    // parameters at once, so the next frame shows it.
+    std::optional<DraftEditor> draft_;
+    int draftEdit_ = -1;
+    DraftView draftView_;
+    char draftPath_[512] = "draft.wif";
+
+    FinalRender final_;
+    std::optional<FilmImage> finalImage_;
+    GLuint finalTexture_ = 0;
+    bool showFinal_ = false;
+    RenderSettings render_;  // the Render button's, but for the camera
+    bool finalDone_ = false;  // the render ended (not cancelled, not failed) and its last pass is shown
+
+    // The panel's widgets this frame: ID clashes warned on stderr, and for --widget-map.
+    WidgetMap widgets_;
+    int frame_ = 0;
+    bool interacting_ = false;  // the last frame was drawn as an interactive one
+};
+
+}  // namespace woven

@@ -1,0 +1,95 @@
+// The panel's Render section: the final frame's settings, the Render button (core's RenderJob for
+// the window's camera, on a background thread), Export, the progress, and saving the frame.
+#include <imgui.h>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+
+#include "image_io.h"
+#include "preview_window_impl.h"
+#include "scene_export.h"
+
+namespace woven {
+
+template <typename T>
+void PreviewWindow::clampSetting(const char* name, T& value, T lo, T hi) {
+    const T clamped = std::clamp(value, lo, hi);
+    if (clamped == value) return;
+    status_ = std::string(name) + " " + std::to_string(value) + " is out of range " + std::to_string(lo) + ".." +
+              std::to_string(hi) + ": " + std::to_string(clamped) + " instead";
+    value = clamped;
+}
+
+void PreviewWindow::drawRenderControls() {
+    // Two fields, so that Tab moves from the width to the height.
+    const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+    const float half = std::max((ImGui::CalcItemWidth() - spacing) * 0.5f, 1.0f);
+    ImGui::SetNextItemWidth(half);
+    ui::InputInt("##width", &render_.width, 0, 0);
+    ImGui::SameLine(0.0f, spacing);
+    ImGui::SetNextItemWidth(half);
+    ui::InputInt("render size##height", &render_.height, 0, 0);
+    clampSetting("render width", render_.width, 1, 16384);
+    clampSetting("render height", render_.height, 1, 16384);
+    ui::InputInt("spp", &render_.spp);
+    clampSetting("spp", render_.spp, 1, 1 << 20);
+    ui::InputDouble("noise threshold", &render_.noiseThreshold, 0.01, 0.05, "%.3f");
+    clampSetting("noise threshold", render_.noiseThreshold, 0.0, 1.0);
+    if (ui::BeginCombo("integrator", render_.integrator.c_str())) {
+        for (const char* name : kIntegratorNames)
+            if (ui::Selectable(name, render_.integrator == name)) render_.integrator = name;
+        ui::EndCombo();
+    }
+    if (ui::Button("Render")) {
+        RenderSettings settings = render_;
+        settings.camera = camera_.camera();
+        final_.start(scene(), settings);
+        finalImage_.reset();
+        finalDone_ = false;
+        showFinal_ = true;
+    }
+    if (final_.running()) {
+        ImGui::SameLine();
+        if (ui::Button("Cancel")) final_.cancel();
+    }
+    // Export: the scene as the window shows it, through its camera, woven materials baked.
+    ImGui::SameLine();
+    if (ui::Button("Export")) {
+        SceneDescription shown = scene();
+        shown.camera = camera_.camera();
+        shown.hasCamera = true;
+        try {
+            const std::vector<std::string> warnings = exportScene(shown, exportPath_, ExportOptions{});
+            for (const std::string& w : warnings) std::cerr << "warning: " << exportPath_ << ": " << w << "\n";
+            status_ = "exported " + std::string(exportPath_) + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    ui::InputText("##export file", exportPath_, sizeof exportPath_);
+    if (final_.running() || finalImage_)
+        ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
+    if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());
+    if (!finalImage_) return;
+    ui::Checkbox("show the rendered frame", &showFinal_);
+    ui::InputText("image file", imagePath_, sizeof imagePath_);
+    const bool png = ui::Button("Save PNG");
+    ImGui::SameLine();
+    const bool exr = ui::Button("Save EXR");
+    if (png || exr) {
+        std::string path = imagePath_;
+        const size_t dot = path.find_last_of('.');
+        path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
+        try {
+            writeFrame(path, finalImage_->exr(), display_);
+            status_ = "saved " + path;
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+}
+
+}  // namespace woven
