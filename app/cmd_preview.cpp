@@ -77,6 +77,9 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
+    cmd->add_flag("--no-filter", o->frame.noFilter,
+                  "Point-sample the weave in the preview even where it is finer than a pixel (the Render button "
+                  "filters only with --filter)");
     cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->add_option("--widget-map", o->widgetMap,

@@ -67,6 +67,8 @@ int reportParseError(const CLI::App& app, const CLI::ParseError& error, int argc
     if (dynamic_cast<const CLI::CallForHelp*>(&error) || dynamic_cast<const CLI::CallForAllHelp*>(&error) ||
         dynamic_cast<const CLI::Success*>(&error))
         return app.exit(error);
+    // A command that already said what went wrong and only sets the exit code.
+    if (dynamic_cast<const CLI::RuntimeError*>(&error)) return code;
     const auto parsed = app.get_subcommands();
     if (parsed.empty()) {
         const std::vector<std::string> commands = commandNames(app);
@@ -102,7 +104,17 @@ int reportParseError(const CLI::App& app, const CLI::ParseError& error, int argc
         std::cerr << "(" << name << " --help lists its options)\n";
         return code;
     }
-    std::cerr << name << ": error: " << error.what() << "\n(" << name << " --help lists its options)\n";
+    std::string message = error.what();
+    // CLI11's "Could not convert: --first-sample = 4294967295": the value does not fit the option.
+    const std::string unconverted = "Could not convert: ";
+    if (dynamic_cast<const CLI::ConversionError*>(&error) && message.rfind(unconverted, 0) == 0) {
+        const std::string rest = message.substr(unconverted.size());
+        const size_t eq = rest.find(" = ");
+        if (eq != std::string::npos)
+            message = rest.substr(0, eq) + ": '" + rest.substr(eq + 3) + "' is not a value this option takes (a whole number "
+                      "in its range, or a number where it takes one)";
+    }
+    std::cerr << name << ": error: " << message << "\n(" << name << " --help lists its options)\n";
     return code;
 }
 

@@ -1,27 +1,17 @@
 #include "frame_options.h"
 
+#include <cctype>
 #include <iostream>
 #include <map>
 #include <sstream>
 
+#include "number_checks.h"
 #include "scene_camera.h"
 #include "woven_assignment.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
 
 namespace woven {
-
-namespace {
-// Below this the frame is nearly black at exposure 0: the studio environment gives about 3.
-constexpr float kDimIrradiance = 0.05f;
-
-// Emissive surfaces may light the scene (a room's lamp): then the note would be wrong.
-bool hasEmitters(const SceneDescription& scene) {
-    for (const Material& m : scene.materials)
-        if (!m.unlit && m.emission != glm::vec3(0.0f)) return true;
-    return false;
-}
-}  // namespace
 
 void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--width", o.width, "image width (default: the scene's, else 640)")->check(CLI::Range(1, 1 << 15));
@@ -35,8 +25,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     threshold << "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
                  "--spp is then its most; 0: every pixel takes every sample (default: "
               << kDefaultNoiseThreshold << ")";
-    command.add_option("--noise-threshold", o.noiseThreshold, threshold.str())->check(CLI::NonNegativeNumber);
-    command.add_flag("--no-filter", o.noFilter, "the preview point-samples the weave even where it is finer than a pixel");
+    command.add_option("--noise-threshold", o.noiseThreshold, threshold.str())->check(finiteNumber(0.0));
     command.add_flag("--filter", o.filterRender,
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
@@ -51,14 +40,27 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
                        "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
-                       "radiance (a number), instead of its own environment")
-        ->type_name("FILE|GREY");
-    static const std::map<std::string, ToneMap> toneMaps = {
-        {"clamp", ToneMap::Clamp}, {"reinhard", ToneMap::Reinhard}, {"aces", ToneMap::Aces}};
+                       "radiance (a number), instead of its own environment; none: no environment, and no studio light added "
+                       "to a scene whose lights are missing or too dim")
+        ->type_name("FILE|GREY|none");
+    // A validator of our own: CLI11's transformer names its internals ("Check filmic value in
+    // {aces->2,...} FAILED") where a user needs the choices.
+    const CLI::Validator toneMapNames(
+        [](std::string& value) {
+            static const std::map<std::string, ToneMap> toneMaps = {
+                {"clamp", ToneMap::Clamp}, {"reinhard", ToneMap::Reinhard}, {"aces", ToneMap::Aces}};
+            std::string lower = value;
+            for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+            const auto found = toneMaps.find(lower);
+            if (found == toneMaps.end()) return "'" + value + "' is not a tone curve woven has: aces, clamp or reinhard";
+            value = std::to_string(int(found->second));
+            return std::string();
+        },
+        "");
     // 2^40 either way takes any radiance to the display's range; beyond, the scale overflows.
-    command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops")->check(CLI::Range(-40.0f, 40.0f));
+    command.add_option("--exposure", o.display.exposure, "PNG and display exposure in stops")->check(finiteNumber(-40.0, 40.0));
     command.add_option("--tone-map", o.display.toneMap, "PNG and display tone curve: aces (default), clamp or reinhard")
-        ->transform(CLI::CheckedTransformer(toneMaps, CLI::ignore_case).description(""))
+        ->transform(toneMapNames)
         ->type_name("aces|clamp|reinhard");
 }
 
@@ -71,15 +73,20 @@ void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
     for (const std::string& option : options.woven) assignments.push_back(parseWovenOption(scene, option));
     if (!assignments.empty()) assignWoven(scene, assignments);
     // An --environment given is the user's choice, even a black one.
-    if (options.environment.empty() && lightByDefault(scene)) {
-        std::cerr << "note: " << scene.source
-                  << " has no light source (punctual light or environment): lit by woven's studio environment "
-                     "(--environment FILE|GREY to choose)\n";
-    } else if (const float E = punctualAndEnvironmentIrradiance(scene); E < kDimIrradiance && !hasEmitters(scene)) {
-        // glTF lights are photometric: a few lux or candela is far too dim to see (0.004 W/m^2 for
-        // 3 lux), as in Blender. Say so rather than leave a black frame unexplained.
-        std::cerr << "note: " << scene.source << " is lit dimly: its lights and environment give about " << E
-                  << " W/m^2 (" << E * 683.0f << " lux) at its centre; try --environment 1 or --exposure\n";
+    if (!options.environment.empty()) return;
+    const float E = punctualAndEnvironmentIrradiance(scene);
+    switch (lightByDefault(scene)) {
+        case DefaultLighting::None: break;
+        case DefaultLighting::NoLight:
+            std::cerr << "note: " << scene.source
+                      << " has no light source (punctual light or environment): lit by woven's studio environment "
+                         "(--environment FILE|GREY|none to choose)\n";
+            break;
+        case DefaultLighting::TooDim:
+            std::cerr << "note: " << scene.source << " is lit too dimly to see (about " << E << " W/m^2, " << E * 683.0f
+                      << " lux, at its centre): woven's studio environment added beside its lights, as glTF viewers "
+                         "do (--environment none for its own lights alone, or --exposure)\n";
+            break;
     }
 }
 

@@ -22,7 +22,7 @@ struct FrameOptions {
     uint64_t seed = 0;
     int maxDepth = 8;
     std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
-    bool noFilter = false;               // the preview point-samples the weave everywhere
+    bool noFilter = false;               // the preview point-samples the weave everywhere (preview's --no-filter)
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
@@ -31,12 +31,13 @@ struct FrameOptions {
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --no-filter --filter
+// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --filter
 // --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without
-// --environment, the studio environment if nothing lights it (said on stderr). Throws SceneError for a scene that cannot be
+// --environment, the studio environment if nothing lights it or its light is too dim to see
+// (lightByDefault(), said on stderr). Throws SceneError for a scene that cannot be
 // shown (no triangles, NaN vertices: validateScene()).
 void applySceneOptions(SceneDescription& scene, const FrameOptions& options);
 

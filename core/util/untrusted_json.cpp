@@ -32,8 +32,25 @@ nlohmann::json parseUntrustedJson(std::string_view text) {
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
-        throw std::invalid_argument(std::string("not valid JSON: ") + e.what());
+        throw std::invalid_argument("not valid JSON: " + jsonProblem(e.what()));
     }
+}
+
+std::string jsonProblem(std::string message) {
+    static const std::string tag = "[json.exception.";
+    for (size_t at; (at = message.find(tag)) != std::string::npos;) {
+        const size_t close = message.find("] ", at);
+        if (close == std::string::npos) break;
+        message.erase(at, close + 2 - at);
+    }
+    static const std::string overflow = "number overflow parsing '";
+    if (const size_t at = message.find(overflow); at != std::string::npos) {
+        const size_t end = message.find('\'', at + overflow.size());
+        const std::string number = message.substr(at + overflow.size(), end - at - overflow.size());
+        message.replace(at, end == std::string::npos ? std::string::npos : end + 1 - at,
+                        "the number " + number + " is beyond the range of a double (about 1.8e308)");
+    }
+    return message;
 }
 
 }  // namespace woven

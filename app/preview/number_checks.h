@@ -1,0 +1,20 @@
+#pragma once
+// Number checks for options. CLI11's own let NaN through (every comparison with it is false, so
+// `--exposure nan` gave a black frame) and print their bounds in full: "0.000000 to 1797693...",
+// the largest double as 309 digits.
+#include <CLI/CLI.hpp>
+
+#include <limits>
+
+namespace woven {
+
+// A finite number from `lowest` to `highest` (either may be infinite: no bound on that side).
+// The message names the value and the bounds as people write them: "'nan' is not a finite
+// number", "'-1' is below 0".
+CLI::Validator finiteNumber(double lowest = -std::numeric_limits<double>::infinity(),
+                            double highest = std::numeric_limits<double>::infinity());
+
+// A finite number above zero (a time, a scale).
+CLI::Validator positiveNumber();
+
+}  // namespace woven
