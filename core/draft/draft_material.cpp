@@ -53,8 +53,16 @@ WovenParams applyDraft(const Draft& draft, const std::string& name, const WovenP
     colors(p.warp_colors, p.warp_color, std::move(tile.warpColors));
     colors(p.weft_colors, p.weft_color, std::move(tile.weftColors));
 
+    // The model reads spacings as proportions of the repeat: divided by their mean they keep their
+    // ratios whatever the draft's unit, so a draft in microns is as good as one in inches.
     auto spacing = [](std::vector<float>& list, const std::vector<float>& threads) {
-        if (!threads.empty()) list = allEqual(threads) ? std::vector<float>{} : threads;
+        if (threads.empty()) return;
+        if (allEqual(threads)) return list.clear();
+        double mean = 0.0;
+        for (float s : threads) mean += s;
+        mean /= double(threads.size());
+        list.clear();
+        for (float s : threads) list.push_back(float(s / mean));
     };
     spacing(p.warp_spacing, tile.warpSpacing);
     spacing(p.weft_spacing, tile.weftSpacing);

@@ -49,6 +49,19 @@ protected:
     std::vector<std::string> warnings;
 };
 
+// Spacings are proportions: a draft in tiny units (2e-7 cm, in a sensible ratio) is read as the
+// same cloth, not refused later as a 'warp_spacing' the user never wrote.
+TEST_F(DraftMaterial, TinySpacingsKeepTheirRatios) {
+    std::string text = replaced(threadedTwill(), "Spacing=0.1\nThickness=0.05", "Spacing=2e-7\nThickness=1e-7");
+    text = replaced(text, "[WEFT SPACING]\n2=0.3", "[WEFT SPACING]\n2=6e-7");
+    std::ofstream(dir.file("tiny.wif"), std::ios::binary) << text;
+    const WovenParams p = read({{"wif", "tiny.wif"}}).params;
+    ASSERT_EQ(p.weft_spacing.size(), 8u);
+    EXPECT_FLOAT_EQ(p.weft_spacing[0], 0.8f);
+    EXPECT_FLOAT_EQ(p.weft_spacing[1], 2.4f);
+    EXPECT_NO_THROW(validate(p));
+}
+
 TEST_F(DraftMaterial, TileColoursSpacingAndWidthsPerThread) {
     const WovenParams p = read({{"wif", "twill.wif"}}).params;
     EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -60,11 +73,12 @@ TEST_F(DraftMaterial, TileColoursSpacingAndWidthsPerThread) {
     // Weft: every pick black, so the material's weft colour, no list.
     EXPECT_TRUE(p.weft_colors.empty());
     EXPECT_EQ(p.weft_color, glm::vec3(0.0f));
-    // Even warp spacing needs no list; the weft's is in centimetres.
+    // Even warp spacing needs no list; the weft's (0.1 cm but 0.3 cm for pick 2) keeps its ratios
+    // as proportions of their mean, 0.125 cm.
     EXPECT_TRUE(p.warp_spacing.empty());
     ASSERT_EQ(p.weft_spacing.size(), 8u);
-    EXPECT_FLOAT_EQ(p.weft_spacing[0], 0.1f);
-    EXPECT_FLOAT_EQ(p.weft_spacing[1], 0.3f);
+    EXPECT_FLOAT_EQ(p.weft_spacing[0], 0.8f);
+    EXPECT_FLOAT_EQ(p.weft_spacing[1], 2.4f);
     // Widths: every end 0.04 / 0.05; picks 0.05 / 0.1 and, for pick 2, 0.05 / 0.3.
     EXPECT_FLOAT_EQ(p.warp_width, 0.8f);
     EXPECT_TRUE(p.warp_yarns.empty());
