@@ -286,9 +286,11 @@ void addSubmitCommand(CLI::App& app) {
     // task gets for its share (SlurmJob::noiseThreshold).
     for (CLI::Option* option : addRenderOptions(*cmd, o->render)) {
         if (option->check_lname("spp") || option->check_lname("noise-threshold")) continue;
-        option->transform([o, name = option->get_name()](std::string value) {
-            o->renderArguments.push_back(name);
-            o->renderArguments.push_back(value);
+        // A flag is passed on as itself: `woven render` reads "--strict true" as a stray argument.
+        const bool flag = option->get_expected_max() == 0;
+        option->transform([o, name = option->get_name(), flag](std::string value) {
+            if (!flag || CLI::detail::to_flag_value(value) > 0) o->renderArguments.push_back(name);
+            if (!flag) o->renderArguments.push_back(value);
             return value;
         });
     }

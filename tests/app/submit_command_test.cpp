@@ -84,8 +84,9 @@ TEST(SubmitCommand, DryRunScriptsRunByHandGiveTheLocalFrameBitForBit) {
     const fs::path root = dir.path() / "it's a folder";
     const std::string scene = writeScene(root / "my scene.json", 0.3f);
     const std::string out = (root / "out" / "frame $1.exr").string();
+    // Flags too (--strict, --allow-any-path): each task gets them as flags, not as "--strict true".
     const std::vector<std::string> options = {"--width", "32", "--height", "24", "--integrator", "path", "--seed", "4",
-                                              "--woven",
+                                              "--strict", "--allow-any-path", "--woven",
                                               "Cloth={\"ex\": 3, \"pattern\": [2, 1, 1], \"weft_color\": [0.8, 0.2, 0.1]}"};
     std::vector<std::string> submit = {"submit", scene, "--tasks", "3", "--spp", "5", "-o", out, "--dry-run",
                                        "--partition", "short", "--time", "5:00", "--cpus-per-task", "2",
