@@ -10,6 +10,7 @@
 #include "flat_cloth.h"
 #include "gltf_writer.h"
 #include "image_io.h"
+#include "output_path.h"
 #include "scene_camera.h"
 #include "scene_export.h"
 #include "scene_loader.h"
@@ -67,6 +68,7 @@ void runBake(ExportCommand o) {
         const Material& original = scene.materials[size_t(b.material)];
         const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
         for (int map = 0; map < BakedMaterial::kMapCount; ++map) {
+            refuseOverwritingInputs(stem + "_" + BakedMaterial::mapName(map) + ".png", scene.inputFiles);
             writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + ".png", b.baked.textures[size_t(map)]);
             if (!o.mips) continue;
             for (size_t level = 0; level < b.baked.mipLevels[size_t(map)].size(); ++level)
@@ -81,6 +83,7 @@ void runBake(ExportCommand o) {
         square.materials.push_back(bakedMaterial(original, b.baked, 0));
         square.textures = b.baked.textures;
         std::vector<std::string> warnings;
+        refuseOverwritingInputs(stem + ".gltf", scene.inputFiles);
         writeGltf(stem + ".gltf", square, sceneCamera(square), warnings);
         std::cout << "material '" << original.name << "': " << b.baked.textures[0].width << "x" << b.baked.textures[0].height
                   << " texels for " << b.baked.threads.x * o.options.bake.repeats << "x" << b.baked.threads.y * o.options.bake.repeats
@@ -96,6 +99,7 @@ void runExport(ExportCommand o) {
     if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
         throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
+    refuseOverwritingInputs(o.out, scene.inputFiles);
     std::cerr << "export: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
     for (const std::string& w : exportScene(scene, o.out, o.options, &bakes)) std::cerr << "warning: " << o.out << ": " << w << "\n";

@@ -161,6 +161,7 @@ private:
         } catch (const FileReadError& e) {
             throw SceneError(e.what());
         }
+        scene_.inputFiles.push_back(path_);
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
         document_ = jsonPart(file);
         const nlohmann::json& document = document_;
@@ -216,6 +217,7 @@ private:
             *err = e.what();
             return false;
         }
+        static_cast<GltfLoader*>(self)->scene_.inputFiles.push_back(path);
         return true;
     }
     // The images tinygltf could not read because their file is not there: in none of the places

@@ -200,9 +200,12 @@ struct SceneDescription {
     Camera camera;
     bool hasCamera = false;
     RenderHints render;
-    // A woven scene file sets the lighting on purpose (a room lit by its lamp alone): no default
-    // lighting is added to it (scene_lighting.h).
+    // A woven scene file that sets "environment" or "lights" chose its lighting on purpose (a room
+    // lit by its lamp alone): no default lighting is added to it (scene_lighting.h).
     bool lightingFromSceneFile = false;
+    // Every file the scene was read from (a scene file, its glTF file, buffers and images), as
+    // given: what no output of woven's may overwrite (output_path.h).
+    std::vector<std::string> inputFiles;
     // What the loader skipped or approximated (also printed on stderr), e.g. line primitives,
     // dropped degenerate triangles.
     std::vector<std::string> warnings;

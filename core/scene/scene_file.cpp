@@ -41,6 +41,7 @@ public:
             fail("gltf", e.what());
         }
         scene.source = path_;
+        scene.inputFiles.push_back(path_);
         // Lighting the file chose is kept as it is; a file that only makes things woven is lit as
         // its glTF file would be.
         scene.lightingFromSceneFile = root.contains("environment") || root.contains("lights");

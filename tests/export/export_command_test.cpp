@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "../common/run_woven.h"
@@ -135,6 +136,34 @@ TEST(ExportCommand, AnUnwritablePathGetsAClearMessageAndNoFile) {
     EXPECT_EQ(bake.exitCode, 1);
     EXPECT_NE(bake.out.find(dir.file("nowhere") + ": no such folder"), std::string::npos) << bake.out;
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+// An output never replaces an input: export onto its own glTF file (through another spelling of
+// the path, and onto the glTF a scene file names) and render onto one of the scene's files.
+TEST(ExportCommand, AnOutputThatIsAnInputIsRefusedAndTheInputKept) {
+    TempDir dir;
+    SceneDescription plain;
+    Mesh quad;
+    quad.name = quad.meshName = "Quad";
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    quad.uvs = {{0, 0}, {1, 0}, {1, 1}};
+    quad.triangles = {{0, 1, 2}};
+    plain.meshes = {quad};
+    std::vector<std::string> warnings;
+    writeGltf(dir.file("scene.gltf"), plain, sceneCamera(plain), warnings);
+    const auto before = std::filesystem::file_size(dir.file("scene.gltf"));
+    const std::string woven = " --woven '*={\"repeat\": [40, 40]}' --size 16 2>&1";
+    const auto self = runWoven("export " + quoted(dir.file("scene.gltf")) + " -o " + quoted(dir.file("./scene.gltf")) + woven);
+    EXPECT_EQ(self.exitCode, 1);
+    EXPECT_NE(self.out.find("writing it would replace what it reads"), std::string::npos) << self.out;
+    std::ofstream(dir.file("scene.json")) << R"({"gltf": "scene.gltf", "environment": {"color": [1, 1, 1]}})";
+    const auto named = runWoven("export " + quoted(dir.file("scene.json")) + " -o " + quoted(dir.file("scene.gltf")) + woven);
+    EXPECT_EQ(named.exitCode, 1);
+    EXPECT_NE(named.out.find(dir.file("scene.gltf") + ": is an input"), std::string::npos) << named.out;
+    const auto render = runWoven("render " + quoted(dir.file("scene.json")) + " -o " + quoted(dir.file("scene.json.png")) +
+                                 " --spp 1 --width 8 --height 8 2>&1");
+    EXPECT_EQ(render.exitCode, 0) << render.out;  // a new file beside the inputs is fine
+    EXPECT_EQ(std::filesystem::file_size(dir.file("scene.gltf")), before);
 }
 
 }  // namespace
