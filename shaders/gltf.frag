@@ -1,15 +1,8 @@
 // The glTF material's surface shader: core's GltfMaterial (every texture looked up, the normal
 // map applied) and gltf_bxdf.glsl lit by lighting.glsl, plus the occlusion texture, which only
 // the preview uses. The C++ side (gltf_gl_material.cpp) defines MAP_<NAME> as the index into
-// maps[] of each texture the material has, MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT and
-// PREVIEW_SHADOWS. BLEND alpha and transmission become screen-door coverage (screen_door.glsl).
-in vec3 vPosition;
-in vec3 vNormal;
-in vec2 vUv;
-in vec2 vUv1;
-in vec4 vColor;
-in vec4 vTangent;
-
+// maps[] (texture_maps.glsl) of each texture the material has, MAP_COUNT, ALPHA_MASK or
+// ALPHA_BLEND, UNLIT and PREVIEW_SHADOWS. BLEND alpha and transmission become screen-door coverage (screen_door.glsl).
 layout(location = 0) out vec4 outRadiance;
 
 uniform vec3 cameraPosition;
@@ -27,19 +20,6 @@ uniform float anisotropyStrength;
 uniform vec2 anisotropyRotation;  // (cos, sin) of KHR_materials_anisotropy's rotation
 uniform float clearcoatFactor, clearcoatRoughnessFactor;
 uniform float transmissionFactor;
-
-#if MAP_COUNT > 0
-// One texture use as core's TextureSampler: its set of texture coordinates and its
-// KHR_texture_transform; sRGB decoding and wrap modes are the GL texture's and sampler's.
-uniform sampler2D maps[MAP_COUNT];
-uniform int mapTexCoord[MAP_COUNT];
-uniform mat3 mapTransform[MAP_COUNT];
-
-vec4 lookup(int i) {
-    vec2 uv = mapTexCoord[i] == 1 ? vUv1 : vUv;
-    return texture(maps[i], (mapTransform[i] * vec3(uv, 1.0)).xy);
-}
-#endif
 
 // As core's keepReflectionAbove(): a normal map's normal tilted so far that the view's mirror
 // direction falls below the surface is tilted back until it stays `margin` above.
@@ -139,17 +119,10 @@ void main() {
     if (through > 0.0 && 1.0 - through < ditherThreshold()) discard;
 
     vec3 n = ns;
-    // The tangent frame of the file's normal; handedness from the tangent's w, as core.
-    vec3 t = vTangent.xyz - dot(vTangent.xyz, ns) * ns;
-    bool tangents = dot(t, t) > 1e-20;
-    t = tangents ? normalize(t) : vec3(0.0);
-    vec3 b = (vTangent.w < 0.0 ? -1.0 : 1.0) * cross(ns, t);
+    vec3 t, b;
+    bool tangents = tangentSpace(ns, vTangent, t, b);
 #ifdef MAP_NORMAL
-    if (tangents) {
-        vec3 m = lookup(MAP_NORMAL).xyz * 2.0 - 1.0;
-        vec3 perturbed = m.x * normalScale * t + m.y * normalScale * b + m.z * ns;
-        if (dot(perturbed, perturbed) > 1e-20) n = normalize(perturbed);
-    }
+    if (tangents) n = normalMapped(ns, t, b, lookup(MAP_NORMAL).xyz, normalScale);
 #endif
     n = backSide ? -n : n;
 #ifdef MAP_NORMAL

@@ -3,15 +3,21 @@
 // C++ side picks from its parameters (woven_gl_material.cpp): WOVEN_NOISE, WOVEN_CRIMP,
 // WOVEN_GAPS (both yarns narrower than their element), WOVEN_THREADS (per-thread colours, yarns
 // or spacing), WOVEN_SPACING (threads of different widths) and WOVEN_FILTER (the far-field weave
-// filter); PREVIEW_SHADOWS (lighting.glsl).
-in vec3 vPosition;
-in vec3 vNormal;
-in vec2 vUv;
-
+// filter); PREVIEW_SHADOWS (lighting.glsl). A glTF material made woven keeps its surface (core's
+// WovenSurfaceMaterial): WOVEN_PRINT (the base colour texture and vertex colour multiply the
+// yarns' colour), MAP_BASE_COLOR and MAP_NORMAL in maps[] (texture_maps.glsl), ALPHA_MASK or
+// ALPHA_BLEND, as gltf.frag has them.
 layout(location = 0) out vec4 outRadiance;
 
 uniform vec3 cameraPosition;
 uniform vec3 emission;  // radiance of the front face
+#if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
+uniform vec4 baseColorFactor;  // its alpha; the colour is the yarns'
+uniform float alphaCutoff;
+#endif
+#ifdef MAP_NORMAL
+uniform float normalScale;
+#endif
 
 // A projection keeps a fair part of its vector, else it is rounding noise (as core).
 bool usableProjection(vec3 projected, vec3 original) {
@@ -52,7 +58,8 @@ vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     return sum;
 }
 
-vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
+// `print` multiplies the yarns' colour, as core's ShadingInput::print.
+vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 print) {
     if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
     bool weft = y.type == WEFT;
     // The thread's colour and its yarn's lobe and noise (core's WovenMaterial::shade).
@@ -69,6 +76,7 @@ vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo) {
     uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
     if (noise > 0.0) color = clamp(color * (1.0 + noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
 #endif
+    color *= print;
     Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
     return reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
 }
@@ -105,7 +113,7 @@ vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float ded
 }
 #endif
 
-vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy,
+vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy, vec3 print,
                       out float coverage) {
     vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
 #ifdef WOVEN_THREADS
@@ -114,8 +122,8 @@ vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e,
 #else
     vec3 weftColor = material.weft_color, warpColor = material.warp_color;
 #endif
-    Lobe weft = Lobe(material.ex, material.ey, material.rs, weftColor);
-    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, warpColor);
+    Lobe weft = Lobe(material.ex, material.ey, material.rs, weftColor * print);
+    Lobe warp = Lobe(material.warp_ex, material.warp_ey, material.rs, warpColor * print);
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     vec3 weftWo[FILTER_SAMPLES], warpWo[FILTER_SAMPLES];
     vec3 sum = vec3(0.0);
@@ -162,6 +170,10 @@ void main() {
     if (dot(ng, wo) < 0.0) ng = -ng;
     vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
     bool backSide = dot(wo, ns) < 0.0;
+#ifdef MAP_NORMAL
+    vec3 t, b;
+    if (tangentSpace(ns, vTangent, t, b)) ns = normalMapped(ns, t, b, lookup(MAP_NORMAL).xyz, normalScale);
+#endif
     vec3 n = backSide ? -ns : ns;
     vec3 radiance = backSide ? vec3(0.0) : emission;
 
@@ -184,6 +196,27 @@ void main() {
 #else
     const float farWeight = 0.0;
 #endif
+    // The glTF base colour's alpha and print, looked up (and cut out) after every derivative.
+#if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
+    float alpha = baseColorFactor.a * vColor.a;
+#endif
+#ifdef WOVEN_PRINT
+    vec3 print = vColor.rgb;
+#else
+    const vec3 print = vec3(1.0);
+#endif
+#ifdef MAP_BASE_COLOR
+    vec4 base = lookup(MAP_BASE_COLOR);
+#if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
+    alpha *= base.a;
+#endif
+#ifdef WOVEN_PRINT
+    print *= base.rgb;
+#endif
+#endif
+#ifdef ALPHA_MASK
+    if (alpha < alphaCutoff) discard;
+#endif
     vec3 near = vec3(0.0);
     float nearOpacity = 1.0;
     if (farWeight < 1.0) {
@@ -192,15 +225,20 @@ void main() {
         if (y.type == GAP && material.backing == 0) nearOpacity = 0.0;
         else
 #endif
-        near = yarnRadiance(y, tangent, p, ng, wo);
+        near = yarnRadiance(y, tangent, p, ng, wo, print);
     }
     vec3 far = vec3(0.0);
     float farOpacity = 1.0;
 #ifdef WOVEN_FILTER
-    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, e, dedx, dedy, farOpacity);
+    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, e, dedx, dedy, print, farOpacity);
 #endif
     float opacity = mix(nearOpacity, farOpacity, farWeight);
-    if (opacity < ditherThreshold()) discard;
+    // A point shows where the weave covers it and, for BLEND, alpha lets it be seen.
+    float coverage = opacity;
+#ifdef ALPHA_BLEND
+    coverage *= alpha;
+#endif
+    if (coverage < ditherThreshold()) discard;
     radiance += ((1.0 - farWeight) * nearOpacity * near + farWeight * far) / opacity;
     outRadiance = vec4(radiance, 1.0);
 }

@@ -28,13 +28,17 @@ std::vector<MapUse> gltfMaps(const Material& m) {
     return used;
 }
 
+std::string alphaDefines(const Material& m) {
+    switch (m.alphaMode) {
+        case AlphaMode::Mask: return "#define ALPHA_MASK\n";
+        case AlphaMode::Blend: return "#define ALPHA_BLEND\n";
+        case AlphaMode::Opaque: break;
+    }
+    return "";
+}
+
 std::string gltfProgramPreamble(const Material& m, bool shadows) {
-    std::string defines;
-    const std::vector<MapUse> maps = gltfMaps(m);
-    for (size_t i = 0; i < maps.size(); ++i) defines += "#define " + std::string(maps[i].define) + " " + std::to_string(i) + "\n";
-    defines += "#define MAP_COUNT " + std::to_string(maps.size()) + "\n";
-    if (m.alphaMode == AlphaMode::Mask) defines += "#define ALPHA_MASK\n";
-    if (m.alphaMode == AlphaMode::Blend) defines += "#define ALPHA_BLEND\n";
+    std::string defines = mapDefines(gltfMaps(m)) + alphaDefines(m);
     if (m.unlit) defines += "#define UNLIT\n";
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines;
@@ -43,7 +47,8 @@ std::string gltfProgramPreamble(const Material& m, bool shadows) {
 std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
-        std::vector<std::string>{"frame.glsl", "lighting.glsl", "screen_door.glsl", "gltf_bxdf.glsl", "gltf.frag"},
+        std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "lighting.glsl", "screen_door.glsl", "texture_maps.glsl",
+                                 "normal_map.glsl", "gltf_bxdf.glsl", "gltf.frag"},
         preamble);
 }
 
@@ -65,16 +70,7 @@ void uploadGltfMaterial(const ShaderProgram& program, const Material& m, GpuText
     glUniform1f(program.uniform("clearcoatFactor"), m.clearcoat.factor);
     glUniform1f(program.uniform("clearcoatRoughnessFactor"), m.clearcoat.roughness);
     glUniform1f(program.uniform("transmissionFactor"), m.transmission.factor);
-    const std::vector<MapUse> maps = gltfMaps(m);
-    for (size_t i = 0; i < maps.size(); ++i) {
-        const int unit = firstUnit + int(i);
-        textures.bind(*maps[i].ref, unit);
-        const std::string index = "[" + std::to_string(i) + "]";
-        glUniform1i(program.uniform(("maps" + index).c_str()), unit);
-        glUniform1i(program.uniform(("mapTexCoord" + index).c_str()), maps[i].ref->texCoord);
-        glUniformMatrix3fv(program.uniform(("mapTransform" + index).c_str()), 1, GL_FALSE,
-                           glm::value_ptr(maps[i].ref->uvTransform));
-    }
+    textures.bindMaps(program, gltfMaps(m), firstUnit);
 }
 
 }  // namespace woven

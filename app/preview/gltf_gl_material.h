@@ -10,12 +10,11 @@
 
 namespace woven {
 
-// One texture the material uses: its GLSL define and the reference.
-struct MapUse {
-    const char* define;
-    const TextureRef* ref;
-};
+// The textures the material uses, in maps[] order.
 std::vector<MapUse> gltfMaps(const Material& material);
+
+// ALPHA_MASK or ALPHA_BLEND as the material's alphaMode says (nothing when opaque).
+std::string alphaDefines(const Material& material);
 
 // MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, and
 // PREVIEW_SHADOWS when `shadows`.

@@ -1,7 +1,8 @@
 #include "gpu_textures.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <cmath>
-#include <string>
 
 #include "gl_error.h"
 
@@ -17,6 +18,12 @@ GLint glWrap(TextureWrap wrap) {
     return GL_REPEAT;
 }
 }  // namespace
+
+std::string mapDefines(const std::vector<MapUse>& maps) {
+    std::string defines;
+    for (size_t i = 0; i < maps.size(); ++i) defines += "#define " + std::string(maps[i].define) + " " + std::to_string(i) + "\n";
+    return defines + "#define MAP_COUNT " + std::to_string(maps.size()) + "\n";
+}
 
 GpuTextures::~GpuTextures() { reset(nullptr); }
 
@@ -71,6 +78,18 @@ void GpuTextures::bind(const TextureRef& ref, int unit) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, texture(ref.image, ref.srgb));
     glBindSampler(GLuint(unit), sampler(ref));
+}
+
+void GpuTextures::bindMaps(const ShaderProgram& program, const std::vector<MapUse>& maps, int firstUnit) {
+    for (size_t i = 0; i < maps.size(); ++i) {
+        const int unit = firstUnit + int(i);
+        bind(*maps[i].ref, unit);
+        const std::string index = "[" + std::to_string(i) + "]";
+        glUniform1i(program.uniform(("maps" + index).c_str()), unit);
+        glUniform1i(program.uniform(("mapTexCoord" + index).c_str()), maps[i].ref->texCoord);
+        glUniformMatrix3fv(program.uniform(("mapTransform" + index).c_str()), 1, GL_FALSE,
+                           glm::value_ptr(maps[i].ref->uvTransform));
+    }
 }
 
 }  // namespace woven

@@ -6,12 +6,23 @@
 #include <epoxy/gl.h>
 
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include "scene_description.h"
+#include "shader_program.h"
 
 namespace woven {
+
+// One texture a surface shader samples through maps[] (shaders/texture_maps.glsl): its GLSL
+// define and the reference.
+struct MapUse {
+    const char* define;
+    const TextureRef* ref;
+};
+// "#define MAP_<NAME> i" for each map, i its index in `maps`, and MAP_COUNT.
+std::string mapDefines(const std::vector<MapUse>& maps);
 
 class GpuTextures {
 public:
@@ -25,6 +36,8 @@ public:
     // Binds the texture and sampler of `ref` to texture unit `unit`. Throws GlError for an
     // image that does not exist.
     void bind(const TextureRef& ref, int unit);
+    // Binds map i to unit firstUnit + i and sets its maps[i], mapTexCoord[i] and mapTransform[i].
+    void bindMaps(const ShaderProgram& program, const std::vector<MapUse>& maps, int firstUnit);
 
 private:
     GLuint texture(int image, bool srgb);

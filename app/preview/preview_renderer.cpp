@@ -93,7 +93,7 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
 
 const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave, bool shadows) {
     // The preamble names the program; a comment tells the two kinds apart.
-    const std::string preamble = material.woven ? "// woven\n" + wovenProgramPreamble(*material.woven, filterWeave, shadows)
+    const std::string preamble = material.woven ? "// woven\n" + wovenProgramPreamble(material, filterWeave, shadows)
                                                 : "// gltf\n" + gltfProgramPreamble(material, shadows);
     auto it = programs_.find(preamble);
     if (it == programs_.end())
@@ -203,6 +203,7 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         weave->update(*material.woven);
         uploadWovenParams(program, *material.woven);
         weave->bind(program);
+        uploadKeptSurface(program, material, textures_, 8);  // after the weave's units 0 to 7
     } else {
         glActiveTexture(GL_TEXTURE3);
         glBindTexture(GL_TEXTURE_2D, sheenAlbedoTable_);

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "gltf_gl_material.h"
 #include "weave.h"
 #include "weave_far_field.h"
 
@@ -78,6 +79,16 @@ void uploadColorTrack(GLuint texture, const ThreadLayout& side) {
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glBindTexture(GL_TEXTURE_1D, 0);
+}
+
+// The textures of what a glTF material made woven keeps, in maps[] order.
+std::vector<MapUse> keptSurfaceMaps(const Material& m) {
+    std::vector<MapUse> maps;
+    if (!m.keptSurface) return maps;
+    if (m.baseColorTexture && (m.keptSurface->print || m.alphaMode != AlphaMode::Opaque))
+        maps.push_back({"MAP_BASE_COLOR", &m.baseColorTexture});
+    if (m.normalTexture) maps.push_back({"MAP_NORMAL", &m.normalTexture});
+    return maps;
 }
 
 void setNearest(GLenum target) {
@@ -242,8 +253,19 @@ void WeaveTextures::bind(const ShaderProgram& program) const {
     glActiveTexture(GL_TEXTURE0);
 }
 
-std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bool shadows) {
-    std::string defines = wovenFeatureDefines(params, filterWeave);
+void uploadKeptSurface(const ShaderProgram& program, const Material& m, GpuTextures& textures, int firstUnit) {
+    glUniform4fv(program.uniform("baseColorFactor"), 1, glm::value_ptr(m.baseColor));
+    glUniform1f(program.uniform("alphaCutoff"), m.alphaCutoff);
+    glUniform1f(program.uniform("normalScale"), m.normalTexture.scale);
+    textures.bindMaps(program, keptSurfaceMaps(m), firstUnit);
+}
+
+std::string wovenProgramPreamble(const Material& material, bool filterWeave, bool shadows) {
+    std::string defines = wovenFeatureDefines(*material.woven, filterWeave) + mapDefines(keptSurfaceMaps(material));
+    if (material.keptSurface) {
+        if (material.keptSurface->print) defines += "#define WOVEN_PRINT\n";
+        defines += alphaDefines(material);
+    }
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines + wovenParamsGlslStruct();
 }
@@ -251,8 +273,9 @@ std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bo
 std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
-        std::vector<std::string>{"frame.glsl", "woven_params.glsl", "ashikhmin_shirley.glsl", "yarn_noise.glsl",
-                                 "yarn_geometry.glsl", "lighting.glsl", "screen_door.glsl", "woven.frag"},
+        std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "woven_params.glsl", "ashikhmin_shirley.glsl",
+                                 "yarn_noise.glsl", "yarn_geometry.glsl", "lighting.glsl", "screen_door.glsl",
+                                 "texture_maps.glsl", "normal_map.glsl", "woven.frag"},
         preamble);
 }
 

@@ -2,13 +2,15 @@
 // A woven material on the GPU: the GLSL declaration of `struct WovenParams` and the upload of
 // every numeric field, both generated from core's wovenParamTable() so the C++ struct, the scene
 // files, the sliders and the shader share one list; the weave and the per-thread lists as
-// textures; the #defines that compile in only the features the material uses.
+// textures; the #defines that compile in only the features the material uses; what a glTF
+// material made woven keeps of its surface (shaders/woven.frag).
 #include <epoxy/gl.h>
 
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "gpu_textures.h"
 #include "shader_program.h"
 #include "weave_coverage.h"  // Weave, WeaveCoverage
 #include "woven_params.h"
@@ -58,9 +60,15 @@ private:
     std::optional<WovenParams> uploaded_;
 };
 
-// The woven program's preamble for a material: feature #defines (PREVIEW_SHADOWS when
-// `shadows`) plus the WovenParams struct.
-std::string wovenProgramPreamble(const WovenParams& params, bool filterWeave, bool shadows);
+// What a glTF material made woven keeps (Material::keptSurface) on the GPU: sets the base
+// colour's alpha, the cutoff and the normal scale, and binds its base colour texture (the print,
+// alpha) and normal map to units from `firstUnit` on; nothing for a material woven in its file.
+void uploadKeptSurface(const ShaderProgram& program, const Material& material, GpuTextures& textures, int firstUnit);
+
+// The woven program's preamble for a woven material: feature #defines (PREVIEW_SHADOWS when
+// `shadows`), what it keeps of a glTF material (WOVEN_PRINT, MAP_<NAME>, ALPHA_MASK or
+// ALPHA_BLEND), plus the WovenParams struct.
+std::string wovenProgramPreamble(const Material& material, bool filterWeave, bool shadows);
 // shaders/mesh.vert + the woven.frag chain, compiled with `preamble`.
 std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble);
 

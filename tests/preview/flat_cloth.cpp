@@ -108,7 +108,8 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
                         hit.tex.hasUv = true;
                         hit.material = 0;
                         const glm::vec3 wo = -d;
-                        if (auto bsdf = materials.bsdf(hit, wo)) {
+                        const auto bsdf = materials[0].passesThrough(hit.tex, 0.0f) ? std::nullopt : materials.bsdf(hit, wo);
+                        if (bsdf) {
                             L = directLight(scene, *bsdf, p, glm::dot(wo, up) < 0.0f ? -up : up, wo);
                             onYarn = true;
                         }

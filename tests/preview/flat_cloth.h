@@ -12,6 +12,16 @@ namespace woven::test {
 
 SceneDescription flatClothScene(const WovenParams& material);
 SceneDescription flatScene(const Material& material);
+// flatScene's uv square in 4 x 4 texels of value f(x, y), magnified on screen (no mip level but
+// the first is used).
+template <class F>
+TextureImage texture4x4(F f) {
+    TextureImage t;
+    t.width = t.height = 4;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) t.bytes.push_back(f(x, y));
+    return t;
+}
 
 // The direction (unit length) of `camera`'s ray through image position (x, y) in pixels of a
 // width x height image, row 0 at the top: the preview's projection.
@@ -20,7 +30,8 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
 // Core's direct-lighting image of flatScene: per pixel the mean over n x n stratified sub-pixel
 // positions of SceneMaterials::bsdf + Bsdf::eval (the renderer's own path from hit to BSDF)
 // times each light's incident radiance and cosine; rays that miss (or pass where the material
-// reflects nothing, a see-through gap) see the environment. `hitMask` (optional) receives 1
+// lets them through or reflects nothing: an alpha cut-out, a see-through gap) see the
+// environment. `hitMask` (optional) receives 1
 // where every sub-pixel position hits a reflecting point, else 0.
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n,
                          std::vector<uint8_t>* hitMask = nullptr);

@@ -29,16 +29,6 @@ Material dielectric(glm::vec3 base, float roughness) {
     return m;
 }
 
-// 4 x 4 texels, magnified on screen (no mip level but the first is used), of value f(x, y).
-template <class F>
-TextureImage texture4x4(F f) {
-    TextureImage t;
-    t.width = t.height = 4;
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) t.bytes.push_back(f(x, y));
-    return t;
-}
-
 std::vector<NamedMaterial> cases() {
     std::vector<NamedMaterial> all;
     all.push_back({"rough_dielectric", dielectric({0.6f, 0.3f, 0.2f}, 0.6f), {}});

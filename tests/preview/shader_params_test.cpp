@@ -44,7 +44,7 @@ std::set<std::string> activeMaterialUniforms(GLuint program) {
 TEST(ShaderParams, EveryTableEntryIsAnActiveUniformAndNothingElse) {
     ensureHeadlessGl();
     const Material m = everyFeature();
-    const auto program = buildWovenProgram(wovenProgramPreamble(*m.woven, true, true));
+    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, true));
     const std::set<std::string> active = activeMaterialUniforms(program->id());
     std::set<std::string> table;
     for (const ParamInfo& info : wovenParamTable()) {
@@ -68,7 +68,7 @@ TEST(ShaderParams, UploadedValuesReadBackPerField) {
     p.warp_color = {0.4f, 0.5f, 0.6f};
     p.cy = 0.29f; p.noise_scale = 0.31f; p.backing = 1;
     p.backing_color = {0.7f, 0.8f, 0.9f};
-    const auto program = buildWovenProgram(wovenProgramPreamble(*m.woven, true, true));
+    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, true));
     glUseProgram(program->id());
     uploadWovenParams(*program, p);
     for (const ParamInfo& info : wovenParamTable()) {

@@ -1,0 +1,9 @@
+// What mesh.vert hands every surface shader, interpolated: world-space position and normal, both
+// sets of texture coordinates, the vertex colour and the tangent (zero or white where the mesh
+// has none).
+in vec3 vPosition;
+in vec3 vNormal;
+in vec2 vUv;
+in vec2 vUv1;
+in vec4 vColor;
+in vec4 vTangent;
