@@ -4,6 +4,7 @@
 // `--integrator auto` picks the efficient one, and measures what the weave filter and adaptive
 // sampling gain (less noise) and cost (bias: the reference is unfiltered and uniformly sampled).
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,12 +19,20 @@
 
 #include "commands.h"
 #include "image_io.h"
+#include "number_checks.h"
 #include "render_job.h"
+#include "scene_camera.h"
+#include "scene_hash.h"
 #include "scene_loader.h"
 
 namespace woven {
 
 namespace {
+
+// What --budgets and --reference-time take. A time of 0, below or NaN would set no time limit at
+// all (a render then takes its 2^20 samples); below a millisecond no pass ends in time, and over a
+// day is a slip of the keyboard (1e9 s is 30 years).
+constexpr double kMinSeconds = 1e-3, kMaxSeconds = 86400;
 
 struct ConvergeOptions {
     std::string scene, outDir = "converge";
@@ -85,12 +94,17 @@ Timed renderFor(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
 
 // The reference: unfiltered path tracing and BDPT (both unbiased, so neither is favoured) merged by
 // inverse variance, each integrator's variance estimated from two independent halves of its
-// render; cached next to the results and reused when its settings match. An equal-weight merge
-// would let the noisier integrator's error dominate the reference on scenes where it is poor.
+// render; cached next to the results under a name that holds all it is a function of (the scene's
+// content hash, as another scene may have the same file name, the size and the exact reference
+// time) and reused when it is there. An equal-weight merge would let the noisier integrator's
+// error dominate the reference on scenes where it is poor.
 Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o, const std::string& stem) {
     namespace fs = std::filesystem;
+    char referenceTime[32];
+    *std::to_chars(referenceTime, referenceTime + sizeof referenceTime - 1, o.referenceTime).ptr = '\0';
     std::ostringstream key;
-    key << stem << "_unfiltered_" << o.width << "x" << o.height << "_" << int(o.referenceTime) << "s_reference.exr";
+    key << stem << "_reference_" << sceneHash(*scene, sceneCamera(*scene)) << "_" << o.width << "x" << o.height << "_"
+        << referenceTime << "s.exr";
     const fs::path path = fs::path(o.outDir) / key.str();
     if (fs::exists(path)) {
         std::cerr << "converge: reusing reference " << path.string() << "\n";
@@ -345,7 +359,8 @@ void addConvergeCommand(CLI::App& app) {
         "Error against an unfiltered, uniformly sampled converged reference versus time for each integrator, with "
         "the weave filter on and off and adaptive sampling off and on (tables, CSV, log-log PNG)");
     cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
-    cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',');
+    const CLI::Validator timeCheck = finiteNumber(kMinSeconds, kMaxSeconds);
+    cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',')->check(timeCheck);
     cmd->add_option("--integrators", o->integrators, "integrators to compare (path, bdpt, auto)")
         ->delimiter(',')
         ->check(CLI::IsMember({"path", "bdpt", "auto"}));
@@ -355,9 +370,9 @@ void addConvergeCommand(CLI::App& app) {
     cmd->add_option("--noise-thresholds", o->thresholds,
                     "adaptive sampling's thresholds to compare; 0: uniform sampling (default: 0 and woven render's)")
         ->delimiter(',')
-        ->check(CLI::NonNegativeNumber);
+        ->check(finiteNumber(0.0));
     cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
-        ->check(CLI::PositiveNumber);
+        ->check(timeCheck);
     cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));
     cmd->add_option("--height", o->height, "image height")->check(CLI::Range(8, 8192));
     cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(CLI::NonNegativeNumber);

@@ -1,7 +1,8 @@
 // `woven merge`: combine EXR renders of disjoint sample ranges of one frame (for example the
 // tasks of a Slurm job array, see `woven submit`) into the render of their union. Each part
 // keeps the exact sums of its samples and its sample range (image_io.h), so the merge is the
-// frame one render of the union gives, bit for bit, and overlaps and gaps are seen.
+// frame one render of the union gives, bit for bit, and overlaps and gaps are seen. Parts also
+// record which frame they are of (frame_identity.h): parts of different frames are refused.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "commands.h"
 #include "atomic_file.h"
 #include "image_io.h"
+#include "sample_index_check.h"
 
 namespace woven {
 
@@ -20,6 +22,7 @@ namespace {
 struct Part {
     std::string path;
     SampleRange samples;
+    std::optional<FrameIdentity> frame;
 };
 
 ExrImage readPart(const std::string& path) {
@@ -42,7 +45,7 @@ ExrImage readPart(const std::string& path) {
 }
 
 // Throws when parts (sorted by their first sample) overlap, or fall outside [0, expected).
-void checkDisjoint(const std::vector<Part>& sorted, std::optional<int> expected) {
+void checkDisjoint(const std::vector<Part>& sorted, std::optional<int64_t> expected) {
     for (size_t i = 1; i < sorted.size(); ++i) {
         const Part &a = sorted[i - 1], &b = sorted[i];
         if (b.samples.first < a.samples.end())
@@ -53,6 +56,59 @@ void checkDisjoint(const std::vector<Part>& sorted, std::optional<int> expected)
         if (expected && p.samples.end() > *expected)
             throw std::invalid_argument(p.path + " holds " + describe(p.samples) + ", beyond the " +
                                         std::to_string(*expected) + " expected");
+}
+
+// How `b`'s identity keeps it out of `a`'s frame, in words ("seed 7 in A, 8 in B; ..."), or ""
+// when both can be parts of one frame. Integrators that --integrator auto chose may differ: each
+// task of a frame times its own pilot.
+std::string frameDifference(const Part& a, const Part& b) {
+    const FrameIdentity &x = *a.frame, &y = *b.frame;
+    std::string text;
+    const auto differ = [&](const std::string& what, const std::string& inA, const std::string& inB) {
+        text += (text.empty() ? "" : "; ") + what + " " + inA + " in " + a.path + ", " + inB + " in " + b.path;
+    };
+    const auto picked = [](const std::string& integrator) { return integrator.rfind("auto", 0) == 0; };
+    if (x.scene != y.scene) differ("the scene (with its camera and materials) has the hash", x.scene, y.scene);
+    if (x.seed != y.seed) differ("--seed", std::to_string(x.seed), std::to_string(y.seed));
+    if (x.integrator != y.integrator && !(picked(x.integrator) && picked(y.integrator)))
+        differ("--integrator", x.integrator, y.integrator);
+    if (x.maxDepth != y.maxDepth) differ("--max-depth", std::to_string(x.maxDepth), std::to_string(y.maxDepth));
+    if (x.filterWeave != y.filterWeave) differ("--filter", x.filterWeave ? "on" : "off", y.filterWeave ? "on" : "off");
+    return text;
+}
+
+// Throws when two parts cannot be parts of one frame; the merged frame's identity, none when a
+// part has none (written before parts recorded it: said in one warning).
+std::optional<FrameIdentity> commonFrame(const std::vector<Part>& parts) {
+    const Part* first = nullptr;
+    std::vector<std::string> unrecorded;
+    bool mixedPicks = false;
+    for (const Part& p : parts) {
+        if (!p.frame) {
+            unrecorded.push_back(p.path);
+            continue;
+        }
+        if (!first) {
+            first = &p;
+            continue;
+        }
+        if (const std::string difference = frameDifference(*first, p); !difference.empty())
+            throw std::invalid_argument(first->path + " and " + p.path + " are parts of different frames: " + difference);
+        mixedPicks |= p.frame->integrator != first->frame->integrator;
+    }
+    if (!unrecorded.empty())
+        std::cerr << "warning: " << unrecorded.front()
+                  << (unrecorded.size() > 1 ? " and " + std::to_string(unrecorded.size() - 1) + " more" : "")
+                  << " record no scene, seed or integrator (an older woven wrote them): merged without checking that "
+                     "every part is of one frame\n";
+    if (!first || !unrecorded.empty()) return std::nullopt;
+    FrameIdentity frame = *first->frame;
+    if (mixedPicks) {
+        std::cerr << "note: --integrator auto chose differently for some parts: the merge is a frame of both integrators, "
+                     "not the bits of one render\n";
+        frame.integrator = "auto";
+    }
+    return frame;
 }
 
 // The runs of samples that disjoint parts, sorted by their first sample, hold together.
@@ -66,9 +122,9 @@ std::vector<SampleRange> heldRuns(const std::vector<Part>& sorted) {
 }
 
 // The runs of [0, expected) that none of `held` (sorted, disjoint) covers.
-std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int expected) {
+std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int64_t expected) {
     std::vector<SampleRange> missing;
-    int next = 0;
+    int64_t next = 0;
     for (const SampleRange& r : held) {
         if (r.first > next) missing.push_back({next, r.first - next});
         next = r.end();
@@ -97,7 +153,7 @@ void checkFiles(const std::vector<std::string>& inputs, const std::string& out) 
     }
 }
 
-void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int> expected) {
+void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int64_t> expected) {
     checkFiles(inputs, out);
     // One part in memory at a time: the sum is added up as they are read, and the ranges are
     // checked once all are known (a merge with overlapping parts writes nothing).
@@ -115,13 +171,14 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         }
         for (size_t i = 0; i < sum.sampleCount.size(); ++i) sum.sampleCount[i] += part.sampleCount[i];
         for (size_t i = 0; i < sum.sampleSums.size(); ++i) sum.sampleSums[i] += part.sampleSums[i];
-        parts.push_back({path, *part.samples});
+        parts.push_back({path, *part.samples, part.frame});
     }
     if (parts.empty())
         throw std::invalid_argument(out + " not written: no part files" +
                                     (expected ? ", " + describe(SampleRange{0, *expected}) + " missing" : ""));
     std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.samples.first < b.samples.first; });
     checkDisjoint(parts, expected);
+    sum.frame = commonFrame(parts);
     const std::vector<SampleRange> held = heldRuns(parts);
     const std::vector<SampleRange> missing = expected ? gaps(held, *expected) : std::vector<SampleRange>();
 
@@ -148,7 +205,7 @@ void addMergeCommand(CLI::App& app) {
     struct Options {
         std::vector<std::string> inputs;
         std::string out;
-        std::optional<int> expected;
+        std::optional<int64_t> expected;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
@@ -159,7 +216,7 @@ void addMergeCommand(CLI::App& app) {
                     "the parts must hold samples 0..N-1 of every pixel: when some are missing, OUT is not written, "
                     "the missing samples are named, the parts there are go to OUT.partial.exr and the exit status "
                     "is 1")
-        ->check(CLI::PositiveNumber);
+        ->check(sampleIndexCheck(1, kSampleIndexLimit));
     cmd->callback([o] { runMerge(o->inputs, o->out, o->expected); });
 }
 

@@ -1,4 +1,5 @@
 // `woven render SCENE`: a final frame of a scene file with either integrator, to EXR or PNG.
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
@@ -6,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 #include "commands.h"
 #include "frame_limits.h"
@@ -13,6 +15,7 @@
 #include "progress_bar.h"
 #include "render_options.h"
 #include "render_job.h"
+#include "sample_index_check.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -23,7 +26,7 @@ struct RenderCommand {
     std::string scene, out;
     RenderOptions options;
     double time = 0.0;
-    int firstSample = 0;
+    int64_t firstSample = 0;
     bool list = false;
 };
 
@@ -117,12 +120,17 @@ int runRender(RenderCommand o) {
     RenderSettings settings = frameSettings(*scene, o.options.frame);
     const bool timeLimited = o.time > 0.0;
     const bool sppGiven = o.options.frame.spp > 0;
-    if (timeLimited && !sppGiven) settings.spp = std::numeric_limits<int>::max() - o.firstSample;
+    if (timeLimited && !sppGiven)
+        settings.spp = int(std::min<int64_t>(std::numeric_limits<int>::max(), kSampleIndexLimit - o.firstSample));
     settings.timeLimit = o.time;
     settings.threads = o.options.threads;
     if (settings.threads > workerThreads(settings.threads))
         std::cerr << "warning: --threads " << settings.threads << ": this machine has " << workerThreads(0)
                   << " hardware threads for woven; using " << workerThreads(0) << "\n";
+    if (!withinSampleIndexLimit(o.firstSample, settings.spp))
+        throw std::invalid_argument("--first-sample " + std::to_string(o.firstSample) + " with --spp " +
+                                    std::to_string(settings.spp) + " ends past sample index 2^62 (" +
+                                    std::to_string(kSampleIndexLimit) + "), where the integrator pilot's samples are");
     settings.firstSample = o.firstSample;
 
     RenderJob job(scene, settings);
@@ -173,7 +181,7 @@ void addRenderCommand(CLI::App& app) {
                     "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(sampleIndexCheck(0, kSampleIndexLimit - 1));
     cmd->add_flag("--list", o->list,
                   "print the scene's cameras (the numbers --camera takes), materials, meshes and lights, and "
                   "render nothing");

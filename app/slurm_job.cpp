@@ -41,8 +41,8 @@ std::vector<std::string> commonSbatchArguments(const SbatchOptions& o) {
 }  // namespace
 
 SampleRange SlurmJob::taskSamples(int index) const {
-    const long long t = index % tasks;
-    const int first = int(spp * t / tasks), end = int(spp * (t + 1) / tasks);
+    const int64_t t = index % tasks;
+    const int64_t first = spp * t / tasks, end = spp * (t + 1) / tasks;
     return {first, end - first};
 }
 

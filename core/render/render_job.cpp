@@ -16,6 +16,7 @@
 #include "integrator.h"
 #include "render_scene.h"
 #include "scene_camera.h"
+#include "scene_hash.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -78,6 +79,7 @@ struct RenderJob::Impl {
     std::unique_ptr<CameraModel> cameraModel;
     std::unique_ptr<Integrator> integrator;
     std::string integratorName;
+    std::string sceneHash;  // of the scene through `camera`, for the frame's identity
     tbb::task_arena arena;
 
     mutable std::mutex filmMutex;
@@ -164,7 +166,10 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
         throw std::invalid_argument("image size must be positive, got " + std::to_string(settings.width) + "x" +
                                     std::to_string(settings.height));
     if (settings.spp < 0) throw std::invalid_argument("samples per pixel must not be negative");
-    if (settings.firstSample < 0) throw std::invalid_argument("the first sample index must not be negative");
+    if (!withinSampleIndexLimit(settings.firstSample, settings.spp))
+        throw std::invalid_argument("the sample range from " + std::to_string(settings.firstSample) + ", " +
+                                    std::to_string(settings.spp) + " samples, is not within 0 to 2^62 (" +
+                                    std::to_string(kSampleIndexLimit) + ")");
     if (settings.maxDepth < 1) throw std::invalid_argument("the maximum depth must be at least 1");
     if (!(settings.noiseThreshold >= 0.0)) throw std::invalid_argument("the noise threshold must not be negative");
     checkFrameFitsInMemory(settings.width, settings.height);
@@ -176,6 +181,7 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
                          ": scene has no lights: add an emissive material, a KHR_lights_punctual light or an environment");
     im.camera = im.settings.camera ? *im.settings.camera : sceneCamera(*im.description);
     im.cameraModel = std::make_unique<CameraModel>(im.camera, im.settings.width, im.settings.height);
+    im.sceneHash = sceneHash(*im.description, im.camera);
     im.integratorName = im.settings.integrator;
     if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
 }
@@ -189,6 +195,7 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
         const std::string chosen = im.pickIntegrator(cancel);
         if (cancel.load()) return;
         im.integrator = makeIntegrator(chosen, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
+        std::lock_guard<std::mutex> lock(im.filmMutex);  // snapshot() reads it from other threads
         im.integratorName = chosen;
     }
     const Clock::time_point renderStart = Clock::now();
@@ -235,7 +242,11 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
 FilmImage RenderJob::snapshot() const {
     std::lock_guard<std::mutex> lock(impl_->filmMutex);
     FilmImage image = impl_->film.image();
-    image.samples = {impl_->settings.firstSample, impl_->film.passes()};
+    const Impl& im = *impl_;
+    image.samples = {im.settings.firstSample, im.film.passes()};
+    const bool picked = im.settings.integrator == "auto" && im.integratorName != "auto";
+    image.frame = {im.sceneHash, im.settings.seed, (picked ? "auto: " : "") + im.integratorName, im.settings.maxDepth,
+                   im.settings.filterWeave};
     return image;
 }
 

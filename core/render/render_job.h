@@ -19,7 +19,7 @@ namespace woven {
 struct RenderSettings {
     int width = 640, height = 480;
     int spp = 64;              // samples per pixel to take (from firstSample on)
-    int firstSample = 0;       // start of this render's sample range (for distributed renders)
+    int64_t firstSample = 0;   // start of this render's sample range (for distributed renders)
     double timeLimit = 0.0;    // seconds; > 0 stops after the pass that crosses it
     std::string integrator = "auto";  // "bdpt", "path" or "auto"
     uint64_t seed = 0;
@@ -55,15 +55,16 @@ struct RenderProgress {
 };
 
 // Mean radiance and sample count per pixel, and what an EXR keeps so that renders of disjoint
-// sample ranges merge exactly (image_io.h): the exact sums and the sample range.
+// sample ranges merge exactly (image_io.h): the exact sums, the sample range and the frame.
 struct FilmImage {
     Image radiance;          // linear RGB mean
     std::vector<float> sampleCount;  // per pixel
     std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
     SampleRange samples{};
+    FrameIdentity frame{};
 
     // As a frame file keeps it (writeFrame): everything `woven merge` needs.
-    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples}; }
+    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples, frame}; }
 };
 
 class RenderJob {

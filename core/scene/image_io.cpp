@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -151,17 +152,73 @@ std::string sumChannelName(int rgb, int word) {
 const char* const kFirstSampleAttribute = "wovenFirstSample";
 const char* const kSampleCountAttribute = "wovenSampleCount";
 
+// A whole number written as decimal digits, all of `text`.
+template <typename T>
+bool parseWhole(const std::string& text, T* value) {
+    const char* end = text.data() + text.size();
+    const auto [last, error] = std::from_chars(text.data(), end, *value);
+    return !text.empty() && error == std::errc() && last == end;
+}
+
+// A sample index: a decimal string, or an int as versions before 64-bit ranges wrote it.
+bool readSampleIndex(const OIIO::ParamValue& value, int64_t* index) {
+    if (value.type() == OIIO::TypeInt) {
+        *index = value.get_int();
+        return true;
+    }
+    return value.type() == OIIO::TypeString && parseWhole(value.get_string(), index);
+}
+
 std::string readSampleRange(const OIIO::ImageSpec& spec, std::optional<SampleRange>* samples) {
     const OIIO::ParamValue* first = spec.find_attribute(kFirstSampleAttribute);
     const OIIO::ParamValue* count = spec.find_attribute(kSampleCountAttribute);
     if (!first && !count) return "";
     if (!first || !count)
         return std::string("has only one of the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute;
-    if (first->type() != OIIO::TypeInt || count->type() != OIIO::TypeInt)
-        return std::string("the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute + " must be ints";
-    const int f = first->get_int(), c = count->get_int();
-    if (f < 0 || c < 0) return "has a negative sample range";
+    int64_t f = 0, c = 0;
+    if (!readSampleIndex(*first, &f) || !readSampleIndex(*count, &c))
+        return std::string("the attributes ") + kFirstSampleAttribute + " and " + kSampleCountAttribute +
+               " must be whole numbers (decimal strings, or ints)";
+    if (!withinSampleIndexLimit(f, c))
+        return "has the sample range first " + std::to_string(f) + ", count " + std::to_string(c) +
+               ", which is not within samples 0 to 2^62 (" + std::to_string(kSampleIndexLimit) + ")";
     *samples = SampleRange{f, c};
+    return "";
+}
+
+const char* const kSceneAttribute = "wovenScene";
+const char* const kSeedAttribute = "wovenSeed";
+const char* const kIntegratorAttribute = "wovenIntegrator";
+const char* const kMaxDepthAttribute = "wovenMaxDepth";
+const char* const kFilterAttribute = "wovenFilter";
+
+std::string readFrameIdentity(const OIIO::ImageSpec& spec, std::optional<FrameIdentity>* frame) {
+    const char* const names[] = {kSceneAttribute, kSeedAttribute, kIntegratorAttribute, kMaxDepthAttribute, kFilterAttribute};
+    int found = 0;
+    for (const char* name : names) found += spec.find_attribute(name) != nullptr;
+    if (found == 0) return "";
+    const std::string all = "wovenScene, wovenSeed, wovenIntegrator, wovenMaxDepth and wovenFilter";
+    if (found != 5) return "has only some of the attributes " + all;
+    const OIIO::ParamValue& scene = *spec.find_attribute(kSceneAttribute);
+    const OIIO::ParamValue& seed = *spec.find_attribute(kSeedAttribute);
+    const OIIO::ParamValue& integrator = *spec.find_attribute(kIntegratorAttribute);
+    const OIIO::ParamValue& maxDepth = *spec.find_attribute(kMaxDepthAttribute);
+    const OIIO::ParamValue& filter = *spec.find_attribute(kFilterAttribute);
+    FrameIdentity f;
+    if (scene.type() != OIIO::TypeString || seed.type() != OIIO::TypeString || integrator.type() != OIIO::TypeString ||
+        maxDepth.type() != OIIO::TypeInt || filter.type() != OIIO::TypeInt || !parseWhole(seed.get_string(), &f.seed))
+        return "the attributes " + all + " must be a string, a decimal string, a string and two ints";
+    f.scene = scene.get_string();
+    f.integrator = integrator.get_string();
+    f.maxDepth = maxDepth.get_int();
+    f.filterWeave = filter.get_int() != 0;
+    // Merge names them in its messages: only what woven writes.
+    const bool hex = f.scene.size() == 16 && f.scene.find_first_not_of("0123456789abcdef") == std::string::npos;
+    const char* const integrators[] = {"path", "bdpt", "auto: path", "auto: bdpt", "auto"};
+    if (!hex || std::find(std::begin(integrators), std::end(integrators), f.integrator) == std::end(integrators) ||
+        f.maxDepth < 1 || (filter.get_int() != 0 && filter.get_int() != 1))
+        return "has attributes " + all + " that woven does not write";
+    *frame = f;
     return "";
 }
 
@@ -286,6 +343,7 @@ ExrImage readExr(const std::string& path) {
             }
     }
     if (const std::string problem = readSampleRange(spec, &result.samples); !problem.empty()) fail(path, problem);
+    if (const std::string problem = readFrameIdentity(spec, &result.frame); !problem.empty()) fail(path, problem);
     return result;
 }
 
@@ -369,8 +427,15 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     spec.nchannels = int(spec.channelnames.size());
     spec.attribute("compression", "zip");
     if (exr.samples) {
-        spec.attribute(kFirstSampleAttribute, exr.samples->first);
-        spec.attribute(kSampleCountAttribute, exr.samples->count);
+        spec.attribute(kFirstSampleAttribute, std::to_string(exr.samples->first));
+        spec.attribute(kSampleCountAttribute, std::to_string(exr.samples->count));
+    }
+    if (const std::optional<FrameIdentity>& f = exr.frame) {
+        spec.attribute(kSceneAttribute, f->scene);
+        spec.attribute(kSeedAttribute, std::to_string(f->seed));
+        spec.attribute(kIntegratorAttribute, f->integrator);
+        spec.attribute(kMaxDepthAttribute, f->maxDepth);
+        spec.attribute(kFilterAttribute, int(f->filterWeave));
     }
     const size_t pixelBytes = spec.pixel_bytes(true);
     std::vector<unsigned char> data(count * pixelBytes);

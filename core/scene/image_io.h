@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact_sum.h"
+#include "frame_identity.h"
 #include "sample_range.h"
 #include "scene_description.h"
 #include "srgb.h"  // PNG and JPEG are sRGB-encoded
@@ -72,20 +73,23 @@ void writePng(const std::string& path, const Image& image, const DisplayTransfor
 
 // A linear image with, optionally, how many samples each pixel's value is the mean of, and what
 // a render keeps so that renders of disjoint sample ranges merge exactly: the exact sums of the
-// samples and which samples they are.
+// samples, which samples they are and which frame they are samples of.
 struct ExrImage {
     Image image;
     std::vector<float> sampleCount;        // empty, or one per pixel (channel "N")
     std::vector<ExactSum> sampleSums{};    // empty, or three per pixel: R, G, B
     std::optional<SampleRange> samples{};  // the same for every pixel
+    std::optional<FrameIdentity> frame{};  // none in files of other tools and of woven before it
 };
 enum class ExrPrecision { Half, Float };
 
 // Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
 // float, exact for counts below 2^24), ZIP-compressed. Sample sums go to 32-bit unsigned
 // channels sum.B0-sum.B3, sum.G0-sum.G3, sum.R0-sum.R3 (ExactSum::words(), least significant
-// first), the sample range to int attributes wovenFirstSample and wovenSampleCount; other tools
-// read R, G, B (and N) and ignore the rest.
+// first), the sample range to attributes wovenFirstSample and wovenSampleCount (decimal strings:
+// EXR has no 64-bit integer attribute; files of earlier versions have ints, which are read too),
+// the frame's identity to wovenScene, wovenSeed (strings), wovenIntegrator (a string),
+// wovenMaxDepth and wovenFilter (ints); other tools read R, G, B (and N) and ignore the rest.
 void writeExr(const std::string& path, const ExrImage& exr,
               ExrPrecision precision = ExrPrecision::Half);
 ExrImage readExr(const std::string& path);

@@ -22,12 +22,14 @@ Result run(const std::string& args) { return woven::test::runWovenCommand(args);
 
 class MergeCommand : public woven::test::CommandTest {
 protected:
-    // Samples [first, first + spp) of a small BDPT frame (splats and camera paths both).
-    std::string render(const std::string& name, int first, int spp) {
+    // Samples [first, first + spp) of a small BDPT frame (splats and camera paths both), or of
+    // the frame `options` say.
+    std::string render(const std::string& name, int64_t first, int spp,
+                       const std::string& options = "--width 48 --height 36 --seed 11 --integrator bdpt") {
         const std::string path = file(name);
         const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
-        EXPECT_EQ(run("render " + scene + " --width 48 --height 36 --seed 11 --integrator bdpt --first-sample " +
-                      std::to_string(first) + " --spp " + std::to_string(spp) + " -o " + path)
+        EXPECT_EQ(run("render " + scene + " " + options + " --first-sample " + std::to_string(first) + " --spp " +
+                      std::to_string(spp) + " -o " + path)
                       .status,
                   0);
         return path;
@@ -99,6 +101,102 @@ TEST_F(MergeCommand, OverlapsAndStrangersAreRefusedAndWriteNothing) {
     EXPECT_THAT(r.output, testing::HasSubstr("no part files, samples 0-3 missing"));
     EXPECT_FALSE(fs::exists(file("frame.exr")));
     EXPECT_FALSE(fs::exists(file("frame.partial.exr")));
+}
+
+// Sample indices are 64-bit: ranges past 2^31 overlap, abut and merge as any others (a 32-bit end
+// wrapped to a negative number, so parts that overlapped merged and counted samples twice).
+const std::string kSmall = "--width 12 --height 9 --seed 11 --integrator bdpt";
+
+TEST_F(MergeCommand, RangesPast32BitsAreCheckedAndMergeBitForBit) {
+    const int64_t base = 2147483646;
+    const std::string a = render("a.exr", base, 2, kSmall);
+    const std::string b = render("b.exr", base + 1, 2, kSmall);
+    Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.output, testing::HasSubstr("(samples 2147483646-2147483647) and " + b +
+                                             " (samples 2147483647-2147483648) overlap"));
+    EXPECT_FALSE(fs::exists(file("frame.exr")));
+
+    const std::string c = render("c.exr", base + 2, 1, kSmall);
+    ASSERT_EQ(run("merge " + a + " " + c + " -o " + file("frame.exr")).status, 0);
+    const woven::ExrImage m = woven::readExr(file("frame.exr"));
+    const woven::ExrImage u = woven::readExr(render("all.exr", base, 3, kSmall));
+    ASSERT_TRUE(m.samples);
+    EXPECT_EQ(m.samples->first, base);
+    EXPECT_EQ(m.samples->count, 3);
+    EXPECT_EQ(m.sampleSums, u.sampleSums);
+    EXPECT_EQ(m.sampleCount, std::vector<float>(m.sampleCount.size(), 3.0f));
+
+    // Past 2^32 too; beyond 2^62 (where the auto integrator's pilot samples) the option is named.
+    const woven::ExrImage far = woven::readExr(render("far.exr", 4294967295, 1, kSmall));
+    ASSERT_TRUE(far.samples);
+    EXPECT_EQ(far.samples->first, 4294967295);
+    const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
+    r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387904 -o " + file("x.exr"));
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.output, testing::HasSubstr("--first-sample: '4611686018427387904' is not a whole number from 0 to"));
+    r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387900 --spp 5 -o " + file("x.exr"));
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.output, testing::HasSubstr("--first-sample 4611686018427387900 with --spp 5 ends past sample index 2^62"));
+    EXPECT_FALSE(fs::exists(file("x.exr")));
+}
+
+// Parts record the frame they are of: a different seed, integrator, depth, weave filter or
+// scene (here a material changed by --woven) is refused, naming both files and what differs.
+TEST_F(MergeCommand, PartsOfDifferentFramesAreRefusedNamingWhatDiffers) {
+    const std::string a = render("a.exr", 0, 1, kSmall);
+    const std::pair<const char*, const char*> others[] = {
+        {"--width 12 --height 9 --seed 12 --integrator bdpt", "--seed 11 in "},
+        {"--width 12 --height 9 --seed 11 --integrator path", "--integrator bdpt in "},
+        {"--width 12 --height 9 --seed 11 --integrator bdpt --max-depth 3", "--max-depth 8 in "},
+        {"--width 12 --height 9 --seed 11 --integrator bdpt --filter", "--filter off in "},
+        {"--width 12 --height 9 --seed 11 --integrator bdpt --woven 'Cloth={\"weft_color\": [0.9, 0.1, 0.1]}'",
+         "the scene (with its camera and materials) has the hash "},
+    };
+    for (const auto& [options, difference] : others) {
+        const std::string b = render("b.exr", 1, 1, options);
+        const Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
+        EXPECT_NE(r.status, 0) << options;
+        EXPECT_THAT(r.output, testing::HasSubstr(a + " and " + b + " are parts of different frames: " + difference))
+            << options;
+        EXPECT_FALSE(fs::exists(file("frame.exr"))) << options;
+    }
+    // What only decides how many samples a pixel takes may differ (woven submit gives each task
+    // its own noise threshold).
+    const std::string b = render("b.exr", 1, 2, kSmall + " --noise-threshold 0.3");
+    const Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    ASSERT_TRUE(woven::readExr(file("frame.exr")).frame);
+    EXPECT_EQ(woven::readExr(file("frame.exr")).frame->seed, 11u);
+}
+
+// Parts written before parts recorded their frame merge as they did, with one warning; the merge
+// records no frame then. Parts whose --integrator auto chose differently merge, said in a note.
+TEST_F(MergeCommand, PartsWithoutAnIdentityMergeWithOneWarning) {
+    const std::string a = render("a.exr", 0, 1, kSmall), b = render("b.exr", 1, 1, kSmall), c = render("c.exr", 2, 1, kSmall);
+    for (const std::string& path : {b, c}) {
+        woven::ExrImage old = woven::readExr(path);
+        old.frame.reset();
+        woven::writeExr(path, old, woven::ExrPrecision::Float);
+    }
+    Result r = run("merge " + a + " " + b + " " + c + " -o " + file("frame.exr"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_THAT(r.output, testing::HasSubstr("warning: " + b + " and 1 more record no scene, seed or integrator"));
+    EXPECT_EQ(r.output.find("warning:"), r.output.rfind("warning:")) << r.output;
+    EXPECT_FALSE(woven::readExr(file("frame.exr")).frame);
+
+    const std::string picks[] = {"auto: path", "auto: bdpt"};
+    for (int i = 0; i < 2; ++i) {
+        woven::ExrImage part = woven::readExr(i == 0 ? a : b);
+        part.frame = woven::readExr(a).frame;
+        part.frame->integrator = picks[i];
+        woven::writeExr(i == 0 ? a : b, part, woven::ExrPrecision::Float);
+    }
+    r = run("merge " + a + " " + b + " -o " + file("auto.exr"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_THAT(r.output, testing::HasSubstr("note: --integrator auto chose differently"));
+    ASSERT_TRUE(woven::readExr(file("auto.exr")).frame);
+    EXPECT_EQ(woven::readExr(file("auto.exr")).frame->integrator, "auto");
 }
 
 }  // namespace

@@ -358,7 +358,7 @@ std::shared_ptr<SceneDescription> clothUnderSkyScene() {
     return scene;
 }
 
-FilmImage renderRange(std::shared_ptr<const SceneDescription> scene, const char* integrator, int firstSample, int spp,
+FilmImage renderRange(std::shared_ptr<const SceneDescription> scene, const char* integrator, int64_t firstSample, int spp,
                       int width, int height, int threads = 0) {
     RenderSettings settings;
     settings.width = width;
@@ -462,6 +462,35 @@ TEST_P(Reproducible, DisjointSampleRangesAddUpToTheUnionExactly) {
             ASSERT_EQ(sum.mean(n), all.radiance.pixels[i][c]) << "pixel " << i;
         }
     }
+}
+
+// Sample indices are 64-bit: samples 2^32 on are not samples 0 on again, ranges across 2^32 add
+// up exactly, and past 2^62 (the auto pilot's) a range is refused. Every render records its frame.
+TEST_P(Reproducible, SampleIndicesPast32BitsAreTheirOwnAndAddUpExactly) {
+    const auto scene = clothInBoxScene();
+    const int64_t wrap = int64_t(1) << 32;
+    EXPECT_NE(renderRange(scene, GetParam(), wrap, 2, 12, 9).sampleSums, renderRange(scene, GetParam(), 0, 2, 12, 9).sampleSums);
+    const FilmImage below = renderRange(scene, GetParam(), wrap - 1, 1, 12, 9);
+    const FilmImage across = renderRange(scene, GetParam(), wrap, 2, 12, 9);
+    const FilmImage all = renderRange(scene, GetParam(), wrap - 1, 3, 12, 9);
+    EXPECT_EQ(all.samples.first, wrap - 1);
+    EXPECT_EQ(all.samples.end(), wrap + 2);
+    for (size_t i = 0; i < all.sampleSums.size(); ++i) {
+        ExactSum sum = below.sampleSums[i];
+        sum += across.sampleSums[i];
+        ASSERT_EQ(sum, all.sampleSums[i]) << "channel " << i;
+    }
+    EXPECT_EQ(all.frame.scene, below.frame.scene);
+    EXPECT_EQ(all.frame.scene.size(), 16u);
+    EXPECT_EQ(all.frame.seed, 11u);
+    EXPECT_EQ(all.frame.integrator, GetParam());
+    EXPECT_EQ(all.frame.maxDepth, RenderSettings().maxDepth);
+    EXPECT_FALSE(all.frame.filterWeave);
+
+    RenderSettings settings;
+    settings.firstSample = kSampleIndexLimit - 1;
+    settings.spp = 2;
+    EXPECT_THROW(RenderJob(scene, settings), std::invalid_argument);
 }
 
 // Adaptive sampling decides between whole passes from the film alone: the same seed gives the

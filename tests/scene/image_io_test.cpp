@@ -4,6 +4,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <OpenImageIO/imageio.h>
 #include <stb_image_write.h>
 
 #include <filesystem>
@@ -185,6 +186,61 @@ TEST(Exr, KeepsExactSampleSumsAndTheSampleRange) {
     const ExrImage plain = readExr(dir.file("plain.exr"));
     EXPECT_TRUE(plain.sampleSums.empty());
     EXPECT_FALSE(plain.samples);
+}
+
+TEST(Exr, KeepsSampleRangesPast32BitsAndTheFrameIdentity) {
+    TempDir dir;
+    ExrImage exr;
+    exr.image = gradient(3, 2);
+    exr.sampleCount.assign(6, 3.0f);
+    exr.sampleSums.assign(18, ExactSum());
+    exr.frame = FrameIdentity{"0123456789abcdef", 0xfedcba9876543210ull, "auto: bdpt", 5, true};
+    for (const SampleRange range : {SampleRange{2147483647, 3}, SampleRange{4294967295, 1},
+                                    SampleRange{kSampleIndexLimit - 7, 7}}) {
+        exr.samples = range;
+        writeExr(dir.file("p.exr"), exr, ExrPrecision::Float);
+        const ExrImage back = readExr(dir.file("p.exr"));
+        ASSERT_TRUE(back.samples);
+        EXPECT_EQ(back.samples->first, range.first);
+        EXPECT_EQ(back.samples->count, range.count);
+        ASSERT_TRUE(back.frame);
+        EXPECT_EQ(back.frame->scene, "0123456789abcdef");
+        EXPECT_EQ(back.frame->seed, 0xfedcba9876543210ull);
+        EXPECT_EQ(back.frame->integrator, "auto: bdpt");
+        EXPECT_EQ(back.frame->maxDepth, 5);
+        EXPECT_TRUE(back.frame->filterWeave);
+    }
+
+    // A range past 2^62, which woven never writes, is refused by name.
+    exr.samples = SampleRange{kSampleIndexLimit, 1};
+    writeExr(dir.file("far.exr"), exr, ExrPrecision::Float);
+    EXPECT_THAT([&] { readExr(dir.file("far.exr")); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr("not within samples 0 to 2^62")));
+}
+
+// Parts written before sample ranges were 64-bit and parts recorded their frame: int attributes,
+// no identity. They read as they did.
+TEST(Exr, ReadsTheIntSampleRangeOfEarlierParts) {
+    TempDir dir;
+    const std::string path = dir.file("old.exr");
+    OIIO::ImageSpec spec(2, 1, 3, OIIO::TypeDesc::FLOAT);
+    spec.attribute("wovenFirstSample", 2147483646);
+    spec.attribute("wovenSampleCount", 1);
+    const float pixels[6] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    const ExrImage old = readExr(path);
+    ASSERT_TRUE(old.samples);
+    EXPECT_EQ(old.samples->first, 2147483646);
+    EXPECT_EQ(old.samples->count, 1);
+    EXPECT_FALSE(old.frame);
+
+    // Some of the identity's attributes without the rest: not a file woven wrote.
+    spec.attribute("wovenSeed", "7");
+    out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    EXPECT_THAT([&] { readExr(path); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr("has only some of the attributes wovenScene")));
 }
 
 TEST(Exr, HalfRoundTripIsWithinHalfPrecision) {

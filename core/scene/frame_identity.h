@@ -1,0 +1,23 @@
+#pragma once
+// What makes a render a part of one frame rather than of another, besides its size and its
+// sample range (sample_range.h): a frame is a pure function of (scene, seed, sample range) for
+// one integrator and the options that change what a sample is. Part files record it, and `woven
+// merge` refuses parts whose identities differ. What only decides how many samples a pixel takes
+// (--spp, --time, --noise-threshold, which `woven submit` gives each task its own share of) or
+// how a PNG shows them (--exposure, --tone-map) is no part of it.
+#include <cstdint>
+#include <string>
+
+namespace woven {
+
+struct FrameIdentity {
+    std::string scene;       // sceneHash() of the scene as rendered, through the camera it used
+    uint64_t seed = 0;
+    // "path" or "bdpt"; "auto: path" or "auto: bdpt" where --integrator auto's pilot chose (it
+    // times both, so the tasks of one frame may choose differently), "auto" for a merge of both.
+    std::string integrator;
+    int maxDepth = 0;
+    bool filterWeave = false;
+};
+
+}  // namespace woven
