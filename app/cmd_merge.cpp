@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "atomic_file.h"
 #include "image_io.h"
+#include "output_path.h"
 #include "sample_index_check.h"
 
 namespace woven {
@@ -139,15 +140,11 @@ void checkFiles(const std::vector<std::string>& inputs, const std::string& out) 
     if (lowerExtension(out) != ".exr")
         throw std::invalid_argument(out + ": merge writes OpenEXR: the output's name must end in .exr");
     checkWritable(out);
-    const auto same = [](const std::string& a, const std::string& b) {
-        std::error_code error;
-        return std::filesystem::equivalent(a, b, error) && !error;
-    };
     for (size_t i = 0; i < inputs.size(); ++i) {
-        if (same(inputs[i], out))
+        if (sameFile(inputs[i], out))
             throw std::invalid_argument(inputs[i] + " is both a part and the output: merging would replace it");
         for (size_t j = 0; j < i; ++j)
-            if (same(inputs[i], inputs[j]))
+            if (sameFile(inputs[i], inputs[j]))
                 throw std::invalid_argument(inputs[j] + " and " + inputs[i] +
                                             " are the same file: its samples would count twice");
     }

@@ -10,8 +10,10 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "number_checks.h"
 #include "frame_limits.h"
 #include "image_io.h"
+#include "output_path.h"
 #include "progress_bar.h"
 #include "render_options.h"
 #include "render_job.h"
@@ -115,6 +117,7 @@ int runRender(RenderCommand o) {
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
+    refuseOverwritingInputs(o.out, scene->inputFiles);
     applySceneOptions(*scene, o.options.frame);
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);
@@ -175,7 +178,7 @@ void addRenderCommand(CLI::App& app) {
     addRenderOptions(*cmd, o->options);
     cmd->add_option("--time", o->time, "render for this many seconds (stops after the pass that crosses it; "
                                        "without --spp no sample limit)")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     cmd->add_option("-o,--out", o->out,
                     "output image: .exr (linear float RGB, sample count N, and the exact sample sums and range "
                     "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
