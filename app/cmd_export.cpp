@@ -11,6 +11,7 @@
 #include "gltf_writer.h"
 #include "image_io.h"
 #include "output_path.h"
+#include "progress_bar.h"
 #include "scene_camera.h"
 #include "scene_export.h"
 #include "scene_loader.h"
@@ -55,15 +56,25 @@ std::string fileStem(const std::string& name) {
     return s.empty() ? "material" : s;
 }
 
+// A progress line per bake: the texels of a large one take minutes.
+void showBakeProgress(BakeOptions& bake, const std::shared_ptr<ProgressBar>& bar) {
+    bake.progress = [bar](double fraction) {
+        bar->update(fraction, std::to_string(int(fraction * 100.0)) + "% of the texels sampled");
+    };
+}
+
 void runBake(ExportCommand o) {
     namespace fs = std::filesystem;
     o.options.bake.sheen = !o.noSheen;
     o.options.bake.anisotropy = !o.isotropic;
+    const auto bar = std::make_shared<ProgressBar>("bake");
+    showBakeProgress(o.options.bake, bar);
     if (!fs::is_directory(o.out)) throw ExportError(o.out + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
     std::cerr << "bake: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
     bakedScene(scene, o.options, &bakes);
+    bar->finish();
     for (const MaterialBake& b : bakes) {
         const Material& original = scene.materials[size_t(b.material)];
         const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
@@ -96,13 +107,17 @@ void runBake(ExportCommand o) {
 void runExport(ExportCommand o) {
     o.options.bake.sheen = !o.noSheen;
     o.options.bake.anisotropy = !o.isotropic;
+    const auto bar = std::make_shared<ProgressBar>("bake");
+    showBakeProgress(o.options.bake, bar);
     if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
         throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
     refuseOverwritingInputs(o.out, scene.inputFiles);
     std::cerr << "export: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
-    for (const std::string& w : exportScene(scene, o.out, o.options, &bakes)) std::cerr << "warning: " << o.out << ": " << w << "\n";
+    const std::vector<std::string> warnings = exportScene(scene, o.out, o.options, &bakes);
+    bar->finish();
+    for (const std::string& w : warnings) std::cerr << "warning: " << o.out << ": " << w << "\n";
     std::cerr << "wrote " << o.out << "\n";
     if (!o.report) return;
     o.reportOptions.imagePrefix = std::filesystem::path(o.out).stem().string() + "_";

@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +14,7 @@
 #include "lobe_fit.h"
 #include "far_field_fit.h"
 #include "srgb.h"
+#include "system_memory.h"
 #include "texel_fit.h"
 #include "weave.h"
 
@@ -31,12 +34,25 @@ glm::ivec2 repeatThreads(const WovenMaterial& model) {
     return {int(ends), int(picks)};
 }
 
+void checkBakeFitsInMemory(glm::ivec2 size) {
+    const size_t memory = physicalMemoryBytes();
+    const double needed = double(size.x) * double(size.y) * double(kBakeBytesPerTexel);
+    if (memory > 0 && needed > double(memory))
+        throw std::invalid_argument("a " + std::to_string(size.x) + " x " + std::to_string(size.y) + " bake needs about " +
+                                    gibibytes(needed) + " of memory (" + std::to_string(kBakeBytesPerTexel) +
+                                    " bytes per texel), more than this machine's " + gibibytes(double(memory)) +
+                                    ": bake it smaller (--size)");
+}
+
 // Level-0 sums of a W x H texture over `extent` threads (uv = thread coordinate / repeat).
-std::vector<TexelSums> sampleTexels(const WovenMaterial& model, glm::ivec2 size, glm::dvec2 extent, int n) {
+std::vector<TexelSums> sampleTexels(const WovenMaterial& model, glm::ivec2 size, glm::dvec2 extent, int n,
+                                    const std::function<void(double)>& progress) {
     std::vector<TexelSums> sums(size_t(size.x) * size_t(size.y));
     const glm::dvec2 repeat(model.params().repeat);
+    std::atomic<int> rowsDone{0};
+    std::mutex reporting;
     tbb::parallel_for(tbb::blocked_range<int>(0, size.y), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int y = rows.begin(); y < rows.end(); ++y) {
             for (int x = 0; x < size.x; ++x) {
                 TexelSums& s = sums[size_t(y) * size.x + x];
                 for (int j = 0; j < n; ++j)
@@ -47,6 +63,12 @@ std::vector<TexelSums> sampleTexels(const WovenMaterial& model, glm::ivec2 size,
                         s.add(model.shade(in));
                     }
             }
+            const int done = ++rowsDone;
+            if (progress && reporting.try_lock()) {
+                progress(double(done) / size.y);
+                reporting.unlock();
+            }
+        }
     });
     return sums;
 }
@@ -151,8 +173,9 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
                                     " texels that is " + fixed(texelsPerThread, 1) +
                                     " a thread, too few for its yarns (at least 4); bake it larger (--size)");
     baked.uvSize = extent / glm::dvec2(params.repeat);
+    checkBakeFitsInMemory(size);
 
-    const std::vector<TexelSums> sums = sampleTexels(model, size, extent, o.supersamples);
+    const std::vector<TexelSums> sums = sampleTexels(model, size, extent, o.supersamples, o.progress);
     bool gaps = false;
     double rsMin = 1.0, rsMax = 0.0;
     for (const TexelSums& s : sums) {

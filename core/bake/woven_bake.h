@@ -9,6 +9,7 @@
 // KHR_materials_specular, KHR_materials_sheen) and KHR_materials_ior from rs. Every
 // texel is fitted from the model over its footprint (texel_fit.h), and so is every mip level:
 // the levels of a texture are averaged in the model, not in texel space.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,16 @@ struct BakeOptions {
     // KHR_materials_anisotropy; without it one roughness a texel (texel_fit.h's isotropic()), for
     // renderers that ignore the extension and would show the smoother width alone.
     bool anisotropy = true;
+    // Called with the fraction of texels sampled so far (0 to 1), one call at a time: a bake of
+    // 8192^2 texels takes minutes.
+    std::function<void(double)> progress;
 };
+
+// What a bake holds per level-0 texel at its peak, rounded up: the model's sums (104 bytes), the
+// fits of every level (76), one level's sums being downsampled (26), the encoded maps of every
+// level (22) and their PNG or glTF copies on writing (32), with room to spare. A bake larger than
+// the machine's memory is refused before anything is allocated.
+constexpr size_t kBakeBytesPerTexel = 320;
 
 struct BakedMaterial {
     // The glTF material; its textures index `textures`, with KHR_texture_transform's scale set so
@@ -44,8 +54,8 @@ struct BakedMaterial {
     std::vector<std::string> notes;
 };
 
-// Throws std::invalid_argument for invalid parameters or options, or a repeat too long to bake at
-// `size` (fewer than 4 texels a thread).
+// Throws std::invalid_argument for invalid parameters or options, a repeat too long to bake at
+// `size` (fewer than 4 texels a thread), or a bake whose estimate exceeds physical memory.
 BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& options = {});
 
 // `baked` standing in for the woven material `original` of a scene: the baked glTF material with

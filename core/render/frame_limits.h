@@ -4,15 +4,14 @@
 // gigabytes, and any thread count.
 #include <cstddef>
 
+#include "system_memory.h"
+
 namespace woven {
 
 // What a frame holds per pixel while it renders and is written, rounded up: the film's exact
 // sums and count (52 bytes), a pass and its combined estimate (24), the snapshot (64), and the
 // EXR's interleaved channels with OpenImageIO's copy (128), plus room for per-pixel statistics.
 constexpr size_t kFrameBytesPerPixel = 320;
-
-// This machine's physical memory in bytes.
-size_t physicalMemoryBytes();
 
 // Throws std::invalid_argument naming the size, the estimate and the memory when a width x
 // height frame's estimate exceeds this machine's physical memory.
