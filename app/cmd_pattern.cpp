@@ -17,7 +17,6 @@ namespace {
 // What a pattern may ask for: a terminal's worth of text many times over (2048 x 2048 cells),
 // and a PNG of 64 Mpixels (the drawing takes 12 bytes a pixel while it is made, under 1 GiB).
 constexpr int64_t kMaxPrintedCells = int64_t(1) << 22;
-constexpr int64_t kMaxDrawnPixels = int64_t(1) << 26;
 
 // Where neither a draft nor anything else gives colours: a classic drawdown, black where the
 // warp is on top.
@@ -77,16 +76,16 @@ void addPatternCommand(CLI::App& app) {
             throw std::invalid_argument("--size " + std::to_string(w) + "," + std::to_string(h) + ": " +
                                         std::to_string(cells) + " cells, more than the " +
                                         std::to_string(kMaxPrintedCells) + " woven prints (--png draws up to " +
-                                        std::to_string(kMaxDrawnPixels) + " pixels)");
+                                        std::to_string(kMaxDrawdownPixels) + " pixels)");
         const int64_t pixels = cells * opts->cellPixels * opts->cellPixels;
         if (!opts->png.empty() && (int64_t(w) * opts->cellPixels > kMaxImageSide ||
-                                   int64_t(h) * opts->cellPixels > kMaxImageSide || pixels > kMaxDrawnPixels))
+                                   int64_t(h) * opts->cellPixels > kMaxImageSide || pixels > int64_t(kMaxDrawdownPixels)))
             throw std::invalid_argument("--size " + std::to_string(w) + "," + std::to_string(h) + " at --cell-pixels " +
-                                        std::to_string(opts->cellPixels) + ": a PNG of " +
+                                        std::to_string(opts->cellPixels) + ": --png would draw " +
                                         std::to_string(int64_t(w) * opts->cellPixels) + " x " +
                                         std::to_string(int64_t(h) * opts->cellPixels) + " pixels, more than woven draws (" +
                                         std::to_string(kMaxImageSide) + " on a side, " +
-                                        std::to_string(kMaxDrawnPixels) + " pixels)");
+                                        std::to_string(kMaxDrawdownPixels) + " pixels)");
         if (opts->png.empty()) {
             std::cout << weave.pattern.draw(w, h);
             return;

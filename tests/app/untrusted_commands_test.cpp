@@ -62,6 +62,13 @@ TEST_F(UntrustedCommands, APatternTooLargeToPrintOrDrawIsRefused) {
     EXPECT_NE(r.status, 0);
     EXPECT_THAT(r.output, HasSubstr("more than woven draws"));
     EXPECT_FALSE(fs::exists(file("p.png")));
+    // Within a side but past the pixel limit: the command's own message, naming the option, with
+    // the drawdown image's limit (2^24), not the drawing code's.
+    r = run("pattern --pattern 1,1,1 --size 8192,8192 --cell-pixels 1 --png " + file("p.png"));
+    EXPECT_NE(r.status, 0);
+    EXPECT_THAT(r.output, HasSubstr("--size 8192,8192 at --cell-pixels 1"));
+    EXPECT_THAT(r.output, HasSubstr("16777216 pixels"));
+    EXPECT_FALSE(fs::exists(file("p.png")));
 }
 
 TEST_F(UntrustedCommands, AnExposureBeyondAnyDisplayIsRefused) {
