@@ -63,6 +63,8 @@ int WovenEdits::makeWoven(const std::string& target) {
         } catch (const std::invalid_argument&) {
             // No UVs to measure: the default repeat.
         }
+        // A glTF material keeps its colour, as assignWoven() gives it: the orange sofa, woven.
+        if (material >= 0) start.warp_color = start.weft_color = glm::vec3(scene_.materials[size_t(material)].baseColor);
     }
     edits_.push_back({target, start});
     apply();

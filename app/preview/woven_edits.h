@@ -30,7 +30,7 @@ public:
 
     // Makes `target` woven, starting from the parameters the first primitive it names shows now
     // (where it is not woven, the defaults with 2 mm weave elements on that primitive's UV
-    // scale); an existing edit of `target` is kept. Returns the
+    // scale and its glTF base colour as the yarns'); an existing edit of `target` is kept. Returns the
     // edit's index. Throws SceneError for a target that names nothing.
     int makeWoven(const std::string& target);
     // Drops the edit of `target` (the loaded materials show again); false when there is none.

@@ -114,6 +114,23 @@ TEST(WovenEdits, MakeWovenChangesExactlyTheNamedPartAndRevertRestoresIt) {
     EXPECT_THROW(edits.makeWoven("mesh:Nothing"), SceneError);
 }
 
+// The window's "make woven" keeps the glTF colour, as scene files and --woven do: an orange
+// material becomes orange yarns, not woven's red and beige.
+TEST(WovenEdits, MakeWovenStartsFromTheMaterialsBaseColour) {
+    ThreeQuads q;
+    const glm::vec3 orange(0.8f, 0.3f, 0.05f);
+    q.scene.materials[0].baseColor = glm::vec4(orange, 1.0f);
+    WovenEdits edits(q.scene);
+    const int edit = edits.makeWoven("mesh:Middle");
+    EXPECT_EQ(edits.params(edit).warp_color, orange);
+    EXPECT_EQ(edits.params(edit).weft_color, orange);
+    const Material& made = edits.scene().materials[size_t(edits.scene().meshes[size_t(q.mesh("Middle"))].material)];
+    EXPECT_EQ(made.woven->weft_color, orange);
+    // A primitive without a material has no colour to keep: woven's defaults.
+    const int bare = edits.makeWoven("node:Right");
+    EXPECT_EQ(edits.params(bare).weft_color, WovenParams{}.weft_color);
+}
+
 FilmImage render(const SceneDescription& scene) {
     RenderSettings settings;
     settings.width = 24;
