@@ -1,21 +1,36 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages woven needs, only those missing. Safe to run repeatedly.
+#   tools/install-deps.sh          what building woven and rendering need (README's first command)
+#   tools/install-deps.sh --tests  also what the test suite needs (README's second command):
+#                                  GoogleTest, Google Benchmark, Xvfb and xdotool (the window is
+#                                  tested through a real display), gnuplot (converge's plots), clang
+#                                  and its sanitizer runtime (the fuzz and asan presets), slurm-wlm
+#                                  and munge (a real one-node cluster), Khronos's glTF validator (npm)
 set -euo pipefail
+tests=false
+case "${1:-}" in
+  "") ;;
+  --tests) tests=true ;;
+  *) echo "install-deps.sh: unknown option '$1' (--tests adds what the test suite needs)" >&2; exit 2 ;;
+esac
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libopenimageio-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
+)
+test_packages=(
   libgtest-dev libbenchmark-dev xvfb xauth xdotool gnuplot-nox
   clang libclang-rt-14-dev  # the fuzz and asan presets (docs/FUZZING.md): libFuzzer, ASan, UBSan
   slurm-wlm munge
 )
+if $tests; then packages+=("${test_packages[@]}"); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 # npm (for the glTF validator below) may come from Node's own packages, which conflict with Debian's.
-command -v npm >/dev/null || missing+=(npm)
+if $tests; then command -v npm >/dev/null || missing+=(npm); fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}" >&2
   sudo=""
@@ -26,7 +41,7 @@ fi
 # Khronos's glTF validator (through gltf-transform) checks woven export's files in the tests.
 # It is not a Debian package; without it those tests are skipped, saying so, so a failed npm
 # install (no network) is a warning, not a failed build.
-if [ ! -x "$HOME/node_modules/.bin/gltf-transform" ]; then
+if $tests && [ ! -x "$HOME/node_modules/.bin/gltf-transform" ]; then
   echo "installing: @gltf-transform/cli (npm, into ~/node_modules)" >&2
   npm install --prefix "$HOME" --no-audit --no-fund @gltf-transform/cli >&2 \
     || echo "warning: npm could not install @gltf-transform/cli; the glTF validator tests will be skipped" >&2
