@@ -56,6 +56,8 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         }
         default: break;
         }
+        // The scene-file key and its meaning, so what the panel tunes can be written by hand.
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", info.name, info.description);
         ImGui::PopID();
     }
     try {

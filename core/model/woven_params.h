@@ -84,6 +84,9 @@ struct ParamInfo {
     float min, max;     // valid range, per component (per element of a list)
     bool logScale;      // a slider for it should be logarithmic
     const char* label;  // the name the source paper and the GUI use
+    // What it means, for docs/SCENE_FORMAT.md's table (generated from this table, which a test
+    // checks) and the panel's tooltip.
+    const char* description;
     const char* fallback;  // when absent from a file, take this field's value (e.g. warp_ex <- ex)
     // The yarn field this entry is the material's value of, for the threads of `yarnSide`; a
     // yarn type's JSON names its fields by the Weft or Both entries (ex, ey, rs, yarn_width, cy, noise).
