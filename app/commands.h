@@ -5,6 +5,7 @@
 namespace woven {
 
 void addPatternCommand(CLI::App& app);
+void addFabricsCommand(CLI::App& app);  // docs/FABRICS.md
 void addBsdfCommands(CLI::App& app);  // bsdf-eval, bsdf-plot
 void addPreviewCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);

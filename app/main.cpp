@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
     CLI::App app{"woven: a renderer for woven fabric"};
     app.require_subcommand(1);
     woven::addPatternCommand(app);
+    woven::addFabricsCommand(app);
     woven::addBsdfCommands(app);
     woven::addPreviewCommand(app);
     woven::addRenderCommand(app);

@@ -1,20 +1,63 @@
 #include "material_json.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 #include "draft_material.h"
+#include "fabric_library.h"
 #include "wif_reader.h"
 #include "woven_params_json.h"
 
 namespace woven {
 
-MaterialJson materialFromJson(const nlohmann::json& j, const WovenParams& base, const std::string& directory,
+namespace {
+
+// The yarn widths the counts give: diameter / spacing, at most 1 (a jammed side fills its cells,
+// with a warning).
+void setWidthsFromCounts(const TextileKeys& t, const glm::vec2& threadsPerCm, nlohmann::json& rest,
+                         std::vector<std::string>& warnings) {
+    const char* threads[2] = {"ends", "picks"};
+    const std::optional<double> tex[2] = {t.warpTex, t.weftTex};
+    const char* count[2] = {"warp_count", "weft_count"};
+    const char* width[2] = {"warp_width", "yarn_width"};
+    for (int side = 0; side < 2; ++side) {
+        if (!tex[side]) continue;
+        const double fraction = yarnDiameterCm(*tex[side], t.fibreDensity) * threadsPerCm[side];
+        if (fraction > 1.0) {
+            char line[200];
+            std::snprintf(line, sizeof line, "'%s' at %.4g %s per cm: yarns %.2f times their spacing, jammed (%s 1)",
+                          count[side], threadsPerCm[side], threads[side], fraction, width[side]);
+            warnings.push_back(line);
+        }
+        rest[width[side]] = std::max(std::min(fraction, 1.0), 1e-3);
+    }
+}
+
+}  // namespace
+
+MaterialJson materialFromJson(const nlohmann::json& given, const WovenParams& base, const std::string& directory,
                               std::vector<std::string>& warnings) {
-    if (!j.is_object()) throw std::invalid_argument("a woven material must be a JSON object");
+    if (!given.is_object()) throw std::invalid_argument("a woven material must be a JSON object");
     MaterialJson out;
+    nlohmann::json j = given;
+    if (given.contains("preset")) {
+        Fabric fabric;
+        j = withPreset(given, fabric);
+        // The fabric alone first, so that a mistake in its file names the file.
+        try {
+            std::vector<std::string> ignored;
+            materialFromJson(fabric.material, base, "", ignored);
+        } catch (const std::exception& e) {
+            throw std::invalid_argument(fabric.file + ": " + e.what());
+        }
+        out.preset = fabric.file;
+    }
     out.params = base;
+    out.textile = readTextileKeys(j);
     nlohmann::json rest = j;
+    for (const char* key : textileKeyNames()) rest.erase(key);
     std::optional<Draft> draft;
     if (j.contains("wif")) {
         if (!j["wif"].is_string() || j["wif"].get<std::string>().empty())
@@ -24,8 +67,8 @@ MaterialJson materialFromJson(const nlohmann::json& j, const WovenParams& base, 
         draft = readWif(out.wif, warnings);
         DraftWidths widths;
         const bool ownYarns = j.contains("yarns") || j.contains("warp_yarns") || j.contains("weft_yarns");
-        widths.weft = !ownYarns && !j.contains("yarn_width");
-        widths.warp = !ownYarns && !j.contains("warp_width");
+        widths.weft = !ownYarns && !j.contains("yarn_width") && !out.textile.weftTex;
+        widths.warp = !ownYarns && !j.contains("warp_width") && !out.textile.warpTex;
         out.params = applyDraft(*draft, out.wif, base, widths, warnings);
         rest.erase("wif");
         // What the draft set stays unless its own key is given: a fallback (warp_color <-
@@ -39,7 +82,18 @@ MaterialJson materialFromJson(const nlohmann::json& j, const WovenParams& base, 
         if (!draft) throw std::invalid_argument("'scale': \"draft\" needs a draft: give \"wif\"");
         if (j.contains("repeat")) throw std::invalid_argument("'scale': \"draft\" and 'repeat' both set the repeat: give one");
         out.threadsPerCm = draftThreadsPerCm(*draft, out.wif);
+        out.scaleKey = "'scale': \"draft\"";
         rest.erase("scale");
+    } else if (out.textile.threadsPerCm) {
+        out.threadsPerCm = glm::vec2(*out.textile.threadsPerCm);
+        out.scaleKey = j.contains("ends_per_cm") ? "'ends_per_cm'" : "'ends_per_inch'";
+    }
+    if (out.textile.warpTex || out.textile.weftTex) {
+        if (!out.threadsPerCm)
+            throw std::invalid_argument(std::string(out.textile.warpTex ? "'warp_count'" : "'weft_count'") +
+                                        " needs the thread spacing: give 'ends_per_cm' and 'picks_per_cm' (or per "
+                                        "inch), or a draft with \"scale\": \"draft\"");
+        setWidthsFromCounts(out.textile, *out.threadsPerCm, rest, warnings);
     }
     out.params = paramsFromJson(rest, out.params);
     return out;

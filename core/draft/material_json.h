@@ -9,12 +9,17 @@
 //                       warp; own `yarns`, `warp_yarns` or `weft_yarns` off both.
 //   "scale": "draft"    the repeat from the draft's threads per centimetre and the size of the
 //                       mesh, which the caller measures (MaterialJson::threadsPerCm).
+//   textile keys        "ends_per_cm" / "picks_per_cm" (or per inch) set the repeat as "scale"
+//                       does; "warp_count" / "weft_count" set warp_width / yarn_width from the
+//                       yarn's diameter (textile_units.h, docs/FABRICS.md).
+//   "preset": NAME      a fabric of the library (fabric_library.h) under the other keys.
 #include <nlohmann/json.hpp>
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "textile_units.h"
 #include "woven_params.h"
 
 namespace woven {
@@ -22,11 +27,16 @@ namespace woven {
 struct MaterialJson {
     WovenParams params;
     std::string wif;                         // the draft file read, as resolved; empty when none
-    std::optional<glm::vec2> threadsPerCm;   // "scale": "draft": threads per cm along u and v
+    // "scale": "draft" or the thread counts: threads per cm along u and v, which the caller makes
+    // `repeat` on its mesh; `scaleKey` names the key that gave them, for messages.
+    std::optional<glm::vec2> threadsPerCm;
+    std::string scaleKey;
+    TextileKeys textile;  // the yarn counts and fibre, for measureFabric()
+    std::string preset;   // the fabric file read for "preset"; empty when none
 };
 
 // Fields absent from `j` keep their value in `base`. Throws std::invalid_argument naming the key
-// for a bad key or value, DraftError naming the draft file for a draft that cannot be read or
+// for a bad key or value (and the fabric file for a bad preset), DraftError naming the draft file for a draft that cannot be read or
 // used. What the draft reader ignored or approximated is added to `warnings`, one line each,
 // starting with the draft file's name.
 MaterialJson materialFromJson(const nlohmann::json& j, const WovenParams& base, const std::string& directory,

@@ -1,12 +1,15 @@
 #include "uv_scale.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <stdexcept>
 
 namespace woven {
 
-glm::dvec2 worldLengthPerUv(const SceneDescription& scene, const std::vector<size_t>& meshes) {
+UvScale measureUvScale(const SceneDescription& scene, const std::vector<size_t>& meshes) {
+    // Two passes: the area-weighted mean, then the spread about it.
+    std::vector<std::pair<double, glm::dvec2>> triangles;  // area, lengths
     glm::dvec2 sum(0.0);
     double area = 0.0;
     for (size_t m : meshes) {
@@ -24,17 +27,43 @@ glm::dvec2 worldLengthPerUv(const SceneDescription& scene, const std::vector<siz
             if (!std::isfinite(lengths.x) || !std::isfinite(lengths.y)) continue;
             sum += a * lengths;
             area += a;
+            triangles.emplace_back(a, lengths);
         }
     }
     if (!(area > 0.0))
-        throw std::invalid_argument("no triangle with texture coordinates to measure, which \"scale\": \"draft\" needs");
-    return sum / area;
+        throw std::invalid_argument("no triangle with texture coordinates to measure, which \"scale\": \"draft\" and "
+                                    "thread counts need");
+    UvScale scale;
+    scale.metresPerUv = sum / area;
+    glm::dvec2 squares(0.0);
+    for (const auto& [a, lengths] : triangles) {
+        const glm::dvec2 d = lengths / scale.metresPerUv - 1.0;
+        squares += a * d * d;
+    }
+    scale.spread = glm::sqrt(squares / area);
+    return scale;
+}
+
+glm::dvec2 worldLengthPerUv(const SceneDescription& scene, const std::vector<size_t>& meshes) {
+    return measureUvScale(scene, meshes).metresPerUv;
+}
+
+std::string unevenUvWarning(const UvScale& scale) {
+    const double worst = std::max(scale.spread.x, scale.spread.y);
+    if (!(worst > kMaxUvSpread)) return "";
+    return "the mesh's UVs are too uneven for one physical scale (their length per UV unit varies by " +
+           std::to_string(int(std::lround(100.0 * worst))) + " % along " + (scale.spread.x >= scale.spread.y ? "u" : "v") +
+           "): the thread count holds on average, denser and sparser where they stretch";
+}
+
+glm::vec2 repeatForThreadsPerCm(const glm::dvec2& metresPerUv, const glm::vec2& threadsPerCm) {
+    // Threads per UV unit = threads per cm x cm per UV unit (100 x the world length in metres).
+    return glm::vec2(glm::dvec2(threadsPerCm) * 100.0 * metresPerUv);
 }
 
 glm::vec2 repeatForThreadsPerCm(const SceneDescription& scene, const std::vector<size_t>& meshes,
                                 const glm::vec2& threadsPerCm) {
-    // Threads per UV unit = threads per cm x cm per UV unit (100 x the world length in metres).
-    return glm::vec2(glm::dvec2(threadsPerCm) * 100.0 * worldLengthPerUv(scene, meshes));
+    return repeatForThreadsPerCm(worldLengthPerUv(scene, meshes), threadsPerCm);
 }
 
 }  // namespace woven

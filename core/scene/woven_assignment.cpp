@@ -182,26 +182,29 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         bool colorKeys = false;
         std::string names;
         for (size_t a : order) {
-            std::vector<std::string> draftWarnings;
+            std::vector<std::string> warnings;
             try {
                 nlohmann::json layer = assignments[a].params;
                 if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
                 colorKeys |= setsYarnColor(layer);
-                const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, draftWarnings);
+                const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
                 params = read.params;
                 if (read.threadsPerCm) {
-                    params.repeat = repeatForThreadsPerCm(scene, meshes, *read.threadsPerCm);
+                    const UvScale scale = measureUvScale(scene, meshes);
+                    params.repeat = repeatForThreadsPerCm(scale.metresPerUv, *read.threadsPerCm);
+                    if (const std::string uneven = unevenUvWarning(scale); !uneven.empty())
+                        warnings.push_back(read.scaleKey + ": " + uneven);
                     try {
                         validate(params);
                     } catch (const std::invalid_argument& e) {
-                        throw std::invalid_argument(std::string("'scale': \"draft\" gives ") + e.what());
+                        throw std::invalid_argument(read.scaleKey + " gives " + e.what());
                     }
                 }
                 if (!read.wif.empty()) material.draft = read.wif;
             } catch (const std::exception& e) {  // a bad key, a draft that cannot be used, no UVs to scale by
                 fail(assignments[a], e.what());
             }
-            for (const std::string& w : draftWarnings) {
+            for (const std::string& w : warnings) {
                 const std::string line = scene.source + ": " + assignments[a].where + ": " + w;
                 if (std::find(scene.warnings.begin(), scene.warnings.end(), line) != scene.warnings.end()) continue;
                 scene.warnings.push_back(line);

@@ -33,8 +33,9 @@ struct WovenAssignment {
 
 // Throws SceneError "<scene.source>: <where>: <problem>" for a target that matches nothing
 // (listing the scene's materials, meshes and nodes) or parameters that are invalid (a draft
-// that cannot be read included). "scale": "draft" measures each group of primitives it makes.
-// What a draft's reader approximated goes to scene.warnings and stderr, once per line.
+// that cannot be read included). "scale": "draft" and thread counts (ends_per_cm, ...) measure
+// each group of primitives they make. What a draft's reader approximated, jammed yarn counts and
+// UVs too uneven for one physical scale go to scene.warnings and stderr, once per line.
 void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& assignments);
 
 // The command line's "TARGET=JSON" ("wif" paths relative to the working directory). Throws

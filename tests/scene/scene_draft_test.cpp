@@ -147,7 +147,7 @@ TEST_F(SceneDraft, MistakesNameTheSceneFileTheKeyAndTheDraft) {
               scene + ": materials.Cloth: " + dir.file("sub/drafts/none.wif") + ": no such file");
     EXPECT_EQ(error({{"Bare", {{"wif", "drafts/plain.wif"}, {"scale", "draft"}}}}),
               scene + ": materials.Bare: no triangle with texture coordinates to measure, which "
-                      "\"scale\": \"draft\" needs");
+                      "\"scale\": \"draft\" and thread counts need");
     EXPECT_THAT(error({{"Cloth", {{"wif", "drafts/plain.wif"}, {"cy", 2}}}}), HasSubstr(scene + ": materials.Cloth: 'cy' = 2"));
     EXPECT_THAT(error({{"Cloth", {{"scale", "draft"}}}}), HasSubstr(scene + ": materials.Cloth: 'scale': \"draft\" needs a draft"));
     // A draft whose threads per cm put more than 1e6 threads on one UV unit.
