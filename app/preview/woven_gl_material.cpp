@@ -120,10 +120,6 @@ std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     return d;
 }
 
-bool readThroughTextures(const ParamInfo& info) {
-    return !isNumeric(info.type) || std::string(info.name) == "pattern";
-}
-
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p) {
     for (const ParamInfo& info : wovenParamTable()) {
         if (!isNumeric(info.type)) continue;

@@ -24,11 +24,6 @@ std::string wovenParamsGlslStruct();
 // per-thread lists, uneven spacing) and the far-field weave filter when `filterWeave`.
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave);
 
-// Table entries the shader gets through WeaveTextures instead of reading a uniform: the weave
-// (i, j, k) and `tile`, turned into a tile on the CPU by WeavePattern::fromParams, and the
-// per-thread lists.
-bool readThroughTextures(const ParamInfo& info);
-
 // Sets uniform `material.<name>` for every numeric table entry the program uses.
 void uploadWovenParams(const ShaderProgram& program, const WovenParams& p);
 

@@ -77,7 +77,7 @@ float AshikhminShirley::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     const float len2 = glm::dot(H, H);
     if (specularProb_ > 0.0f && len2 > 1e-24f && H.z > 0.0f) {
         const float ok = 0.5f * std::sqrt(len2);  // wo.h, as in eval()
-        p += specularProb_ * shape_.specNorm / (2.0f * kPi) * cosPowN(H, 1.0f / len2) / (4.0f * ok);
+        p += specularProb_ * halfVectorPdf(H) / (4.0f * ok);
     }
     return p;
 }

@@ -15,6 +15,13 @@
 namespace woven::test {
 namespace {
 
+// Table entries the shader gets through WeaveTextures instead of reading a uniform: the weave
+// (i, j, k) and `tile`, turned into a tile on the CPU by WeavePattern::fromParams, and the
+// per-thread lists.
+bool readThroughTextures(const ParamInfo& info) {
+    return !isNumeric(info.type) || std::string(info.name) == "pattern";
+}
+
 Material everyFeature() {
     Material m;
     WovenParams p;
