@@ -20,6 +20,10 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--integrator", o.integrator, "bdpt, path or auto (default: the scene's, else auto)")
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
     command.add_option("--seed", o.seed, "random seed");
+    command.add_option("--sampler", o.sampler,
+                       "sobol (Owen-scrambled Sobol points, converging faster) or independent (PCG numbers, as woven "
+                       "rendered before; default: sobol)")
+        ->check(CLI::IsMember(std::vector<std::string>(std::begin(kSamplerNames), std::end(kSamplerNames))));
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
     std::ostringstream threshold;
     threshold << "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
@@ -97,6 +101,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     if (o.spp > 0) settings.spp = o.spp;
     if (!o.integrator.empty()) settings.integrator = o.integrator;
     settings.seed = o.seed;
+    settings.sampler = samplerKind(o.sampler);
     settings.maxDepth = o.maxDepth;
     if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
     settings.filterWeave = o.filterRender;

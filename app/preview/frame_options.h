@@ -20,6 +20,7 @@ struct FrameOptions {
     int width = 0, height = 0, spp = 0;  // 0: the scene's, else defaultRenderSettings()'
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
+    std::string sampler = "sobol";       // --sampler: kSamplerNames
     int maxDepth = 8;
     std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
     bool noFilter = false;               // the preview point-samples the weave everywhere (preview's --no-filter)
@@ -31,7 +32,7 @@ struct FrameOptions {
     DisplayTransform display;
 };
 
-// Registers --width --height --spp --integrator --seed --max-depth --noise-threshold --filter
+// Registers --width --height --spp --integrator --seed --sampler --max-depth --noise-threshold --filter
 // --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 

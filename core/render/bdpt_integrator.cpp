@@ -161,9 +161,10 @@ glm::vec3 BdptIntegrator::Le(const Vertex& v, const Vertex& towards) const {
     return scene_.emitted(v.hit, directionTo(v, towards));
 }
 
-int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVertices, bool importance, Rng& rng,
+int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVertices, bool importance, Sampler& sampler,
                                SampleSink& sink, Vertex* path) const {
     if (maxVertices <= 0) return 0;
+    const Subpath subpath = importance ? Subpath::Light : Subpath::Camera;
     int count = 0;
     while (true) {
         ++sink.rays;
@@ -198,8 +199,8 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
         v.pdfFwd = convertDensity(prev, pdfFwd, v);
         if (++count >= maxVertices || !v.bsdf) break;
 
-        const glm::vec2 u = rng.uniform2();
-        const auto bs = v.bsdf->sample(v.wo, u, rng.uniform());
+        const glm::vec2 u = sampler.get2D(sampleDimension(subpath, count, SampleUse::BsdfDirection));
+        const auto bs = v.bsdf->sample(v.wo, u, sampler.get1D(sampleDimension(subpath, count, SampleUse::BsdfLobe)));
         if (!bs || !connects(v.hit, *v.bsdf, v.wo, bs->wi)) break;
         beta *= bs->weight;
         if (importance) beta *= shadingNormalCorrection(v, v.wo, bs->wi);
@@ -211,7 +212,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
     return count;
 }
 
-int BdptIntegrator::cameraSubpath(const glm::vec2& pRaster, Rng& rng, SampleSink& sink, Vertex* path) const {
+int BdptIntegrator::cameraSubpath(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink, Vertex* path) const {
     const Ray ray = camera_.generateRay(pRaster);
     path[0] = Vertex{};
     path[0].type = Vertex::Type::Camera;
@@ -219,13 +220,14 @@ int BdptIntegrator::cameraSubpath(const glm::vec2& pRaster, Rng& rng, SampleSink
     path[0].beta = glm::vec3(1.0f);
     float pdfPos, pdfDir;
     camera_.pdfWe(ray, &pdfPos, &pdfDir);
-    return 1 + randomWalk(ray, path[0].beta, pdfDir, maxDepth_ + 1, false, rng, sink, path + 1);
+    return 1 + randomWalk(ray, path[0].beta, pdfDir, maxDepth_ + 1, false, sampler, sink, path + 1);
 }
 
-int BdptIntegrator::lightSubpath(Rng& rng, SampleSink& sink, Vertex* path) const {
+int BdptIntegrator::lightSubpath(Sampler& sampler, SampleSink& sink, Vertex* path) const {
     float pmf = 0.0f;
-    const int index = scene_.sampleLight(rng.uniform(), &pmf);
-    const glm::vec2 u1 = rng.uniform2(), u2 = rng.uniform2();
+    const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Light, 0, SampleUse::LightChoice)), &pmf);
+    const glm::vec2 u1 = sampler.get2D(sampleDimension(Subpath::Light, 0, SampleUse::LightPoint)),
+                    u2 = sampler.get2D(sampleDimension(Subpath::Light, 0, SampleUse::LightDirection));
     if (index < 0 || !(pmf > 0.0f)) return 0;
     const Light& light = scene_.lights()[size_t(index)];
     const auto le = light.sampleLe(u1, u2);
@@ -250,7 +252,7 @@ int BdptIntegrator::lightSubpath(Rng& rng, SampleSink& sink, Vertex* path) const
         origin.ng = v.n;
         ray = scene_.spawnRay(origin, ray.d);
     }
-    const int count = randomWalk(ray, beta, le->pdfDir, maxDepth_, true, rng, sink, path + 1);
+    const int count = randomWalk(ray, beta, le->pdfDir, maxDepth_, true, sampler, sink, path + 1);
 
     if (light.isInfinite()) {
         // The walk converted pdfDir as if from a point; from a disk of parallel rays the first
@@ -300,7 +302,7 @@ float BdptIntegrator::misWeight(const Vertex* light, const Vertex* camera, const
     return std::isfinite(w) ? w : 0.0f;
 }
 
-glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, Rng& rng, SampleSink& sink,
+glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, Sampler& sampler, SampleSink& sink,
                                   glm::vec2* pRaster) const {
     // An escaped camera ray only ends a path by itself (s = 0).
     if (t > 1 && s != 0 && camera[t - 1].type == Vertex::Type::Light) return glm::vec3(0.0f);
@@ -311,7 +313,7 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, R
         if (pt.isLight()) L = Le(pt, camera[t - 2]) * pt.beta;
     } else if (t == 1) {
         const Vertex& qs = light[s - 1];
-        const glm::vec2 u = rng.uniform2();
+        const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Light, s - 1, SampleUse::CameraPoint));
         if (!isConnectible(qs)) return glm::vec3(0.0f);
         const auto ws = camera_.sampleWi(qs.p, u);
         if (!ws || !(ws->pdf > 0.0f) || isBlack(ws->We)) return glm::vec3(0.0f);
@@ -326,8 +328,8 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, R
     } else if (s == 1) {
         const Vertex& pt = camera[t - 1];
         float pmf = 0.0f;
-        const int index = scene_.sampleLight(rng.uniform(), &pmf);
-        const glm::vec2 u = rng.uniform2();
+        const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Camera, t - 1, SampleUse::LightChoice)), &pmf);
+        const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, t - 1, SampleUse::LightPoint));
         if (!isConnectible(pt) || index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
         const Light& lightSource = scene_.lights()[size_t(index)];
         const auto ls = lightSource.sampleLi(pt.p, u);
@@ -363,13 +365,13 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, R
     return L * misWeight(light, camera, sampled, s, t);
 }
 
-glm::vec3 BdptIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const {
+glm::vec3 BdptIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const {
     // Camera subpaths have up to maxDepth + 2 vertices (camera, bounces, a light), light
     // subpaths up to maxDepth + 1; strategies are limited to maxDepth bounces.
     Vertex* camera = scratch(0, size_t(maxDepth_) + 2).data();
     Vertex* light = scratch(1, size_t(maxDepth_) + 1).data();
-    const int nCamera = cameraSubpath(pRaster, rng, sink, camera);
-    const int nLight = lightSubpath(rng, sink, light);
+    const int nCamera = cameraSubpath(pRaster, sampler, sink, camera);
+    const int nLight = lightSubpath(sampler, sink, light);
     glm::vec3 L(0.0f);
     // s = 1 samples a light vertex of its own: it exists even where the light subpath does not
     // (its origin emitted nothing, say on a black texel of a textured emitter), and its MIS
@@ -380,7 +382,7 @@ glm::vec3 BdptIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
             const int depth = s + t - 2;
             if ((s == 1 && t == 1) || depth < 0 || depth > maxDepth_) continue;
             glm::vec2 pSplat(0.0f);
-            const glm::vec3 contribution = connect(light, camera, s, t, rng, sink, &pSplat);
+            const glm::vec3 contribution = connect(light, camera, s, t, sampler, sink, &pSplat);
             if (!std::isfinite(contribution.x + contribution.y + contribution.z)) continue;
             if (t != 1) L += contribution;
             else if (!isBlack(contribution)) sink.splats.push_back({pSplat, contribution});

@@ -13,18 +13,19 @@ public:
     BdptIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave)
         : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
-    glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
+    glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const override;
     const char* name() const override { return "bdpt"; }
 
     struct Vertex;  // a subpath vertex (bdpt_integrator.cpp)
 
 private:
-    int cameraSubpath(const glm::vec2& pRaster, Rng& rng, SampleSink& sink, Vertex* path) const;
-    int lightSubpath(Rng& rng, SampleSink& sink, Vertex* path) const;
-    int randomWalk(Ray ray, glm::vec3 beta, float pdf, int maxVertices, bool importance, Rng& rng,
+    int cameraSubpath(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink, Vertex* path) const;
+    int lightSubpath(Sampler& sampler, SampleSink& sink, Vertex* path) const;
+    // path[0] is the subpath's vertex 1 (sample_dimensions.h); importance: a light subpath.
+    int randomWalk(Ray ray, glm::vec3 beta, float pdf, int maxVertices, bool importance, Sampler& sampler,
                    SampleSink& sink, Vertex* path) const;
     // The contribution of strategy (s, t), MIS-weighted; for t = 1, *pRaster gets its pixel.
-    glm::vec3 connect(Vertex* light, Vertex* camera, int s, int t, Rng& rng, SampleSink& sink,
+    glm::vec3 connect(Vertex* light, Vertex* camera, int s, int t, Sampler& sampler, SampleSink& sink,
                       glm::vec2* pRaster) const;
     float misWeight(const Vertex* light, const Vertex* camera, const Vertex& sampled, int s, int t) const;
 

@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "render_scene.h"
-#include "sampling.h"
+#include "sample_dimensions.h"
+#include "sampler.h"
 
 namespace woven {
 
@@ -26,8 +27,9 @@ struct SampleSink {
 class Integrator {
 public:
     virtual ~Integrator() = default;
-    // The radiance estimate of the camera ray through pRaster; all random numbers from rng.
-    virtual glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const = 0;
+    // The radiance estimate of the camera ray through pRaster; all random numbers from sampler,
+    // at the dimensions sample_dimensions.h gives each use.
+    virtual glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const = 0;
     virtual const char* name() const = 0;
 };
 

@@ -15,11 +15,11 @@ bool isBlack(const glm::vec3& v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0
 
 }  // namespace
 
-glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo,
-                                         Rng& rng, SampleSink& sink) const {
+glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, int vertex, const Bsdf& bsdf, const glm::vec3& wo,
+                                         Sampler& sampler, SampleSink& sink) const {
     float pmf = 0.0f;
-    const int index = scene_.sampleLight(rng.uniform(), &pmf);
-    const glm::vec2 u = rng.uniform2();
+    const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightChoice)), &pmf);
+    const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightPoint));
     if (index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
     const Light& light = scene_.lights()[size_t(index)];
     const auto ls = light.sampleLi(hit.p, u);
@@ -35,7 +35,7 @@ glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, const Bsdf& bsdf
     return f * ls->L * (weight / lightPdf);
 }
 
-glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const {
+glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const {
     glm::vec3 L(0.0f), beta(1.0f);
     Ray ray = camera_.generateRay(pRaster);
     // The previous scattering vertex and the BSDF density of the direction sampled there, for
@@ -75,10 +75,11 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
         const auto bsdf = scene_.materials().bsdf(*hit, wo);
         if (!bsdf) break;
 
-        L += beta * sampleOneLight(*hit, *bsdf, wo, rng, sink);
+        const int vertex = bounces + 1;  // the camera is vertex 0
+        L += beta * sampleOneLight(*hit, vertex, *bsdf, wo, sampler, sink);
 
-        const glm::vec2 u = rng.uniform2();
-        const auto bs = bsdf->sample(wo, u, rng.uniform());
+        const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, vertex, SampleUse::BsdfDirection));
+        const auto bs = bsdf->sample(wo, u, sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::BsdfLobe)));
         if (!bs || !connects(*hit, *bsdf, wo, bs->wi)) break;
         beta *= bs->weight;
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
@@ -88,7 +89,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sin
 
         if (bounces + 1 >= kRouletteDepth) {
             const float survive = std::min(1.0f, maxComponent(beta));
-            if (rng.uniform() >= survive) break;
+            if (sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::Roulette)) >= survive) break;
             beta /= survive;
         }
     }

@@ -11,13 +11,14 @@ public:
     PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave)
         : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
-    glm::vec3 Li(const glm::vec2& pRaster, Rng& rng, SampleSink& sink) const override;
+    glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const override;
     const char* name() const override { return "path"; }
 
 private:
-    // Light sampled at hit, MIS-weighted against the BSDF's density; beta excluded.
-    glm::vec3 sampleOneLight(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo, Rng& rng,
-                             SampleSink& sink) const;
+    // Light sampled at hit, path vertex `vertex`, MIS-weighted against the BSDF's density; beta
+    // excluded.
+    glm::vec3 sampleOneLight(const SurfaceHit& hit, int vertex, const Bsdf& bsdf, const glm::vec3& wo,
+                             Sampler& sampler, SampleSink& sink) const;
 
     const RenderScene& scene_;
     const CameraModel& camera_;

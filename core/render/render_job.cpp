@@ -32,7 +32,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // threads, of the pixels `sampled` marks (empty: all). Every pixel's random numbers come from
 // (seed, pixel, sample index) alone. Returns false, leaving `pass` incomplete, when `cancel`
 // became true.
-bool renderPass(const Integrator& integrator, int width, int height, uint64_t seed, uint64_t sampleIndex,
+bool renderPass(const Integrator& integrator, int width, int height, SamplerKind samplerKind, uint64_t seed, uint64_t sampleIndex,
                 const std::vector<uint8_t>& sampled, size_t sampledCount, tbb::task_arena& arena,
                 const std::atomic<bool>& cancel, uint64_t* rays, PassImage* pass) {
     const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
@@ -54,9 +54,9 @@ bool renderPass(const Integrator& integrator, int width, int height, uint64_t se
                     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                         const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
                         if (!pass->samples(pixel)) continue;
-                        Rng rng(seed, pixel, sampleIndex);
-                        const glm::vec2 pRaster = glm::vec2(float(x), float(y)) + rng.uniform2();
-                        const glm::vec3 L = integrator.Li(pRaster, rng, sink);
+                        Sampler sampler(samplerKind, seed, pixel, sampleIndex);
+                        const glm::vec2 pRaster = glm::vec2(float(x), float(y)) + sampler.get2D(kPixelDimension);
+                        const glm::vec3 L = integrator.Li(pRaster, sampler, sink);
                         // A rare non-finite sample would poison the pixel for good: drop it.
                         pass->radiance[pixel] = std::isfinite(L.x + L.y + L.z) ? L : glm::vec3(0.0f);
                     }
@@ -122,7 +122,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
             PassImage pass;
             // Sample indices far from any final render's, so the pilot never repeats its samples.
             const uint64_t sampleIndex = (uint64_t(1) << 62) + uint64_t(passes);
-            if (!renderPass(*candidate, width, height, settings.seed, sampleIndex, {}, 0, arena, cancel, &rays, &pass))
+            if (!renderPass(*candidate, width, height, settings.sampler, settings.seed, sampleIndex, {}, 0, arena, cancel, &rays, &pass))
                 return "path";
             const std::vector<glm::vec3> image = pass.combined();
             for (size_t i = 0; i < image.size(); ++i) {
@@ -211,7 +211,7 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
         PassImage pass;
         const uint64_t sampleIndex = uint64_t(im.settings.firstSample) + uint64_t(im.film.passes());
         const size_t sampled = adaptive ? adaptive->activeCount() : pixels;
-        if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.seed, sampleIndex,
+        if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.sampler, im.settings.seed, sampleIndex,
                         adaptive ? adaptive->active() : everyPixel, sampled, im.arena, cancel,
                         &progress.rays, &pass))
             return;  // the unfinished pass is dropped: the film holds whole passes only

@@ -12,6 +12,7 @@
 #include "exact_sum.h"
 #include "image_io.h"
 #include "sample_range.h"
+#include "sampler.h"
 #include "scene_description.h"
 
 namespace woven {
@@ -23,6 +24,9 @@ struct RenderSettings {
     double timeLimit = 0.0;    // seconds; > 0 stops after the pass that crosses it
     std::string integrator = "auto";  // "bdpt", "path" or "auto"
     uint64_t seed = 0;
+    // Owen-scrambled Sobol points by default: at equal samples they converge faster than
+    // independent ones (docs/RESULTS.md, "Samplers").
+    SamplerKind sampler = SamplerKind::Sobol;
     int threads = 0;           // 0 = all cores
     int maxDepth = 8;          // bounces: scattering vertices between camera and light (1 = direct light)
     // Adaptive sampling (adaptive_sampling.h): a pixel stops once the estimated relative error

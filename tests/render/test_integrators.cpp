@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <set>
 
 #include "adaptive_sampling.h"
 #include "reference_brdf.h"
@@ -359,8 +360,9 @@ std::shared_ptr<SceneDescription> clothUnderSkyScene() {
 }
 
 FilmImage renderRange(std::shared_ptr<const SceneDescription> scene, const char* integrator, int64_t firstSample, int spp,
-                      int width, int height, int threads = 0) {
+                      int width, int height, int threads = 0, SamplerKind sampler = RenderSettings().sampler) {
     RenderSettings settings;
+    settings.sampler = sampler;
     settings.width = width;
     settings.height = height;
     settings.spp = spp;
@@ -424,17 +426,29 @@ TEST_P(BdptAgainstPathTracer, AgreeRegionByRegion) {
 INSTANTIATE_TEST_SUITE_P(Scenes, BdptAgainstPathTracer, ::testing::Values(&clothInBoxScene, &clothUnderSkyScene),
                          [](const auto& info) { return info.index == 0 ? std::string("ClothInBox") : std::string("ClothUnderSky"); });
 
-class Reproducible : public ::testing::TestWithParam<const char*> {};
+// Each integrator with each sampler.
+struct ReproducibleCase {
+    const char* integrator;
+    SamplerKind sampler;
+};
+class Reproducible : public ::testing::TestWithParam<ReproducibleCase> {
+protected:
+    FilmImage renderSamples(std::shared_ptr<const SceneDescription> scene, int64_t firstSample, int spp, int width,
+                            int height, int threads = 0) const {
+        return renderRange(std::move(scene), GetParam().integrator, firstSample, spp, width, height, threads,
+                                 GetParam().sampler);
+    }
+};
 
 TEST_P(Reproducible, SameSeedGivesTheSameImageWhateverTheThreadCount) {
     const auto scene = clothInBoxScene();
-    const FilmImage a = renderRange(scene, GetParam(), 0, 3, 24, 18, 1);
-    const FilmImage b = renderRange(scene, GetParam(), 0, 3, 24, 18, 2);
-    const FilmImage c = renderRange(scene, GetParam(), 0, 3, 24, 18, 0);
+    const FilmImage a = renderSamples(scene, 0, 3, 24, 18, 1);
+    const FilmImage b = renderSamples(scene, 0, 3, 24, 18, 2);
+    const FilmImage c = renderSamples(scene, 0, 3, 24, 18, 0);
     EXPECT_EQ(a.radiance.pixels, b.radiance.pixels);
     EXPECT_EQ(a.radiance.pixels, c.radiance.pixels);
     EXPECT_EQ(a.sampleCount, std::vector<float>(24 * 18, 3.0f));
-    const FilmImage other = renderRange(scene, GetParam(), 3, 3, 24, 18);
+    const FilmImage other = renderSamples(scene, 3, 3, 24, 18);
     EXPECT_NE(a.radiance.pixels, other.radiance.pixels) << "another sample range must give other samples";
 }
 
@@ -442,9 +456,9 @@ TEST_P(Reproducible, SameSeedGivesTheSameImageWhateverTheThreadCount) {
 // [0, 8), bit for bit, as `woven merge` does it.
 TEST_P(Reproducible, DisjointSampleRangesAddUpToTheUnionExactly) {
     const auto scene = clothInBoxScene();
-    const FilmImage first = renderRange(scene, GetParam(), 0, 3, 24, 18);
-    const FilmImage second = renderRange(scene, GetParam(), 3, 5, 24, 18);
-    const FilmImage all = renderRange(scene, GetParam(), 0, 8, 24, 18);
+    const FilmImage first = renderSamples(scene, 0, 3, 24, 18);
+    const FilmImage second = renderSamples(scene, 3, 5, 24, 18);
+    const FilmImage all = renderSamples(scene, 0, 8, 24, 18);
     EXPECT_EQ(first.samples.first, 0);
     EXPECT_EQ(first.samples.count, 3);
     EXPECT_EQ(second.samples.first, 3);
@@ -469,10 +483,10 @@ TEST_P(Reproducible, DisjointSampleRangesAddUpToTheUnionExactly) {
 TEST_P(Reproducible, SampleIndicesPast32BitsAreTheirOwnAndAddUpExactly) {
     const auto scene = clothInBoxScene();
     const int64_t wrap = int64_t(1) << 32;
-    EXPECT_NE(renderRange(scene, GetParam(), wrap, 2, 12, 9).sampleSums, renderRange(scene, GetParam(), 0, 2, 12, 9).sampleSums);
-    const FilmImage below = renderRange(scene, GetParam(), wrap - 1, 1, 12, 9);
-    const FilmImage across = renderRange(scene, GetParam(), wrap, 2, 12, 9);
-    const FilmImage all = renderRange(scene, GetParam(), wrap - 1, 3, 12, 9);
+    EXPECT_NE(renderSamples(scene, wrap, 2, 12, 9).sampleSums, renderSamples(scene, 0, 2, 12, 9).sampleSums);
+    const FilmImage below = renderSamples(scene, wrap - 1, 1, 12, 9);
+    const FilmImage across = renderSamples(scene, wrap, 2, 12, 9);
+    const FilmImage all = renderSamples(scene, wrap - 1, 3, 12, 9);
     EXPECT_EQ(all.samples.first, wrap - 1);
     EXPECT_EQ(all.samples.end(), wrap + 2);
     for (size_t i = 0; i < all.sampleSums.size(); ++i) {
@@ -483,7 +497,7 @@ TEST_P(Reproducible, SampleIndicesPast32BitsAreTheirOwnAndAddUpExactly) {
     EXPECT_EQ(all.frame.scene, below.frame.scene);
     EXPECT_EQ(all.frame.scene.size(), 16u);
     EXPECT_EQ(all.frame.seed, 11u);
-    EXPECT_EQ(all.frame.integrator, GetParam());
+    EXPECT_EQ(all.frame.integrator, GetParam().integrator);
     EXPECT_EQ(all.frame.maxDepth, RenderSettings().maxDepth);
     EXPECT_FALSE(all.frame.filterWeave);
 
@@ -501,7 +515,8 @@ TEST_P(Reproducible, AdaptiveSamplingDecidesTheSameWhateverTheThreadCount) {
     settings.width = 24;
     settings.height = 18;
     settings.spp = 48;
-    settings.integrator = GetParam();
+    settings.integrator = GetParam().integrator;
+    settings.sampler = GetParam().sampler;
     settings.noiseThreshold = 0.1;
     settings.threads = 1;
     const FilmImage a = render(scene, settings);
@@ -513,7 +528,41 @@ TEST_P(Reproducible, AdaptiveSamplingDecidesTheSameWhateverTheThreadCount) {
     EXPECT_LT(*fewest, *most) << "every pixel took the same samples: nothing was adaptive";
 }
 
-INSTANTIATE_TEST_SUITE_P(BothIntegrators, Reproducible, ::testing::Values("path", "bdpt"));
+INSTANTIATE_TEST_SUITE_P(BothIntegratorsBothSamplers, Reproducible,
+                         ::testing::Values(ReproducibleCase{"path", SamplerKind::Sobol}, ReproducibleCase{"bdpt", SamplerKind::Sobol},
+                                           ReproducibleCase{"path", SamplerKind::Independent},
+                                           ReproducibleCase{"bdpt", SamplerKind::Independent}),
+                         [](const auto& info) {
+                             return std::string(info.param.integrator) + "_" + samplerName(info.param.sampler);
+                         });
+
+// A pixel that stops keeps the prefix of its sequence: with adaptive sampling, each pixel's sum
+// is, bit for bit, that pixel in a uniform render of as many samples, with either sampler. (The
+// path tracer's pixels are their own samples alone; BDPT's also gather other pixels' light paths.)
+TEST(RenderJob, AnAdaptivePixelHoldsTheFirstSamplesOfItsSequence) {
+    const auto scene = clothInBoxScene();
+    for (SamplerKind sampler : {SamplerKind::Sobol, SamplerKind::Independent}) {
+        RenderSettings settings;
+        settings.width = 24;
+        settings.height = 18;
+        settings.spp = 40;
+        settings.integrator = "path";
+        settings.sampler = sampler;
+        settings.seed = 11;
+        settings.noiseThreshold = 0.1;
+        const FilmImage adaptive = render(scene, settings);
+        const std::set<float> counts(adaptive.sampleCount.begin(), adaptive.sampleCount.end());
+        ASSERT_GT(counts.size(), 1u) << "every pixel took the same samples: nothing was adaptive";
+        for (float count : counts) {
+            const FilmImage uniform = renderRange(scene, "path", 0, int(count), 24, 18, 0, sampler);
+            for (size_t i = 0; i < adaptive.sampleCount.size(); ++i)
+                if (adaptive.sampleCount[i] == count)
+                    for (size_t c = 0; c < 3; ++c)
+                        ASSERT_EQ(adaptive.sampleSums[3 * i + c], uniform.sampleSums[3 * i + c])
+                            << samplerName(sampler) << ", pixel " << i << ", " << count << " samples";
+        }
+    }
+}
 
 TEST(RenderJob, CancelKeepsWholePassesOnly) {
     RenderSettings settings;

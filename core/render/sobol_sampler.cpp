@@ -1,0 +1,77 @@
+#include "sobol_sampler.h"
+
+#include <array>
+
+#include "sampling.h"
+
+namespace woven {
+
+namespace {
+
+uint32_t reverseBits(uint32_t v) {
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+    return (v >> 16) | (v << 16);
+}
+
+// Sobol's second dimension (primitive polynomial x + 1, m_1 = 1 in Joe and Kuo's table): its
+// direction numbers follow v_k = v_{k-1} ^ (v_{k-1} >> 1), the Pascal matrix mod 2. The first
+// dimension is the van der Corput sequence, reverseBits().
+constexpr std::array<uint32_t, 32> secondDimensionMatrix() {
+    std::array<uint32_t, 32> v{};
+    v[0] = 0x80000000u;
+    for (int k = 1; k < 32; ++k) v[size_t(k)] = v[size_t(k) - 1] ^ (v[size_t(k) - 1] >> 1);
+    return v;
+}
+constexpr std::array<uint32_t, 32> kSecondDimension = secondDimensionMatrix();
+
+uint32_t sobolSecondDimension(uint32_t index) {
+    uint32_t x = 0;
+    for (int k = 0; index != 0; index >>= 1, ++k)
+        if (index & 1u) x ^= kSecondDimension[size_t(k)];
+    return x;
+}
+
+float toUnit(uint32_t x) { return float(x >> 8) * 0x1p-24f; }  // [0, 1), as Rng::uniform()
+
+}  // namespace
+
+uint32_t owenScramble(uint32_t v, uint32_t seed) {
+    // Laine and Karras's permutation with Vegard Nossum's constants, as pbrt-v4's
+    // FastOwenScrambler: on the reversed bits, additions and multiplications by even constants
+    // only carry upwards, so each original bit depends on the bits above it alone.
+    v = reverseBits(v);
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return reverseBits(v);
+}
+
+SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel, uint64_t sampleIndex)
+    : key_(mix64(seed ^ mix64(pixel * 0x9e3779b97f4a7c15ULL ^ mix64((sampleIndex >> 32) + 0x2545f4914f6cdd1dULL)))),
+      index_(uint32_t(sampleIndex)) {}
+
+uint64_t SobolSampler::dimensionKey(uint32_t dimension) const { return mix64(key_ ^ mix64(uint64_t(dimension) + 1)); }
+
+// Every dimension shuffles the sample index its own way. Without that, the scrambled points'
+// coarsest bit would be the index's lowest bit flipped by a constant in every dimension: two
+// dimensions would fall in the same (or opposite) halves for all samples.
+float SobolSampler::get1D(uint32_t dimension) const {
+    const uint64_t key = dimensionKey(dimension);
+    const uint32_t index = owenScramble(index_, uint32_t(key));
+    return toUnit(owenScramble(reverseBits(index), uint32_t(key >> 32)));
+}
+
+glm::vec2 SobolSampler::get2D(uint32_t dimension) const {
+    const uint64_t key = dimensionKey(dimension);
+    const uint32_t index = owenScramble(index_, uint32_t(key >> 32));  // not get1D's shuffle
+    const uint64_t valueKey = mix64(key);
+    return {toUnit(owenScramble(reverseBits(index), uint32_t(valueKey))),
+            toUnit(owenScramble(sobolSecondDimension(index), uint32_t(valueKey >> 32)))};
+}
+
+}  // namespace woven
