@@ -1,6 +1,7 @@
 #include "weave.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace woven {
 
@@ -19,13 +20,24 @@ ThreadLayout Weave::threads(const WovenParams& p, YarnSide side) {
                : ThreadLayout(p.weft_colors, p.weft_yarns, p.weft_spacing, p.weft_color, 1, yarnOfType(0, side, types));
 }
 
+namespace {
+// lcm(tile side, thread period) 2^k for the largest k that keeps it within 2^62: lcm <= 2^14 x
+// 2^16 (woven_params.h), so k >= 32.
+double wrapPeriod(int tileSide, int threadPeriod) {
+    double period = std::ldexp(double(std::lcm(int64_t(tileSide), int64_t(threadPeriod))), 32);
+    while (2.0 * period <= 0x1p62) period *= 2.0;
+    return period;
+}
+}  // namespace
+
 Weave::Weave(const WovenParams& p)
     : front_(WeavePattern::fromParams(p)),
       back_(front_.reversed()),
       floats_(p.crimp > 0.0f ? std::make_unique<const WeaveFloats>(front_) : nullptr),
       yarns_(resolvedYarns(p)),
       warp_(threads(p, YarnSide::Warp)),
-      weft_(threads(p, YarnSide::Weft)) {
+      weft_(threads(p, YarnSide::Weft)),
+      wrap_(wrapPeriod(front_.width(), warp_.period()), wrapPeriod(front_.height(), weft_.period())) {
     for (const Yarn& y : yarns_) shapes_.emplace_back(y.ex(), y.ey(), y.rs());
 }
 

@@ -3,6 +3,7 @@
 // the tile of each face, the floats (only when the crimp needs them), the threads of each side
 // (ThreadLayout) and the yarns they name. A material with no per-thread lists has one thread a
 // side, carrying the material's colours and its two default yarns.
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -35,12 +36,24 @@ public:
     static std::vector<Yarn> resolvedYarns(const WovenParams& p);
     static ThreadLayout threads(const WovenParams& p, YarnSide side);  // Warp or Weft
 
+    // A position e (weave elements, uv x repeat) moved by whole repeats of everything a lookup
+    // reads into (-R, R): R in [2^61, 2^62] is a multiple of the tile, the thread layout and
+    // 2^32 threads along each axis (the noise seeds wrap to 32 bits). Huge uvs then keep 64-bit
+    // thread indices from overflowing, while fmod's exact remainder leaves the point's place in
+    // its thread and every seed as they were; positions inside (-R, R) are returned as given.
+    glm::dvec2 wrapped(glm::dvec2 e) const {
+        if (std::fabs(e.x) >= wrap_.x) e.x = std::fmod(e.x, wrap_.x);
+        if (std::fabs(e.y) >= wrap_.y) e.y = std::fmod(e.y, wrap_.y);
+        return e;
+    }
+
 private:
     WeavePattern front_, back_;
     std::unique_ptr<const WeaveFloats> floats_;
     std::vector<Yarn> yarns_;
     std::vector<LobeShape> shapes_;
     ThreadLayout warp_, weft_;
+    glm::dvec2 wrap_;  // R along u and v
 };
 
 // The distinct yarns the threads of `side` (Warp or Weft) use: the side's own yarn, or the

@@ -20,6 +20,10 @@ struct ShadingInput {
     // How uv changes from this pixel to the next along x and y at this point (the pixel's
     // footprint, from ray differentials): what the filtered BSDF averages over. Zero: a point.
     glm::dvec2 duvdx{0.0}, duvdy{0.0};
+    // How far apart the values of the type uv was held in lie near it (uvSpacing(), a mesh's
+    // float uv at large |uv|): the point is only known to within it, and shadeFiltered() covers
+    // at least that as its footprint. Zero: exact.
+    glm::dvec2 uvSpacing{0.0};
     // Multiplies the yarns' diffuse colour R_d (not the backing's): a glTF base colour texture
     // printed on the cloth. 1 leaves the model's colours exactly as they are.
     glm::vec3 print{1.0f};
@@ -40,9 +44,9 @@ public:
 
     // nullopt where the point is a see-through gap: the ray passes on as through an alpha cut-out.
     std::optional<WovenShading> shade(const ShadingInput& in) const;
-    // The BSDF filtered over the footprint (in.duvdx, in.duvdy; MODEL.md section 7) where it
-    // covers a quarter of a weave element or more, in the tangent frame; nullopt where it is
-    // smaller (shade() is the model there) or the point is a see-through gap.
+    // The BSDF filtered over the footprint (in.duvdx, in.duvdy, at least in.uvSpacing; MODEL.md
+    // section 7) where it covers a quarter of a weave element or more, in the tangent frame;
+    // nullopt where it is smaller (shade() is the model there) or the point is a see-through gap.
     std::optional<FramedLobe<FilteredWeaveLobe>> shadeFiltered(const ShadingInput& in) const;
     // The far field of a face, for the filtered BSDF and the preview's twin.
     const WeaveFarField& farField(bool backSide) const { return farField_[backSide ? 1 : 0]; }

@@ -41,9 +41,9 @@ glm::vec3 yarnNormal(int alongAxis, float cy, float x, float slope) {
 }
 
 YarnPoint yarnAt(const Weave& weave, const WovenParams& p, bool backSide, glm::dvec2 uv) {
-    // Double precision and 64-bit thread indices keep |u|, |v| up to 1e6 (and repeat counts
-    // far beyond) free of overflow; the position across a thread's cell stays in [0, 1).
-    const glm::dvec2 e = uv * glm::dvec2(p.repeat);
+    // Double precision and 64-bit thread indices within one wrapped repeat keep any finite uv
+    // free of overflow; the position across a thread's cell stays in [0, 1).
+    const glm::dvec2 e = weave.wrapped(uv * glm::dvec2(p.repeat));
     const ThreadLayout::Cell end = weave.warp().locate(e.x), pick = weave.weft().locate(e.y);
     const YarnType top = weave.pattern(backSide).top(end.thread, pick.thread);
     const int warpYarn = weave.warp().yarn(end.slot), weftYarn = weave.weft().yarn(pick.slot);
