@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <tuple>
 
 #include "draft_material.h"
 #include "fabric_library.h"
@@ -46,12 +47,18 @@ MaterialJson materialFromJson(const nlohmann::json& given, const WovenParams& ba
         Fabric fabric;
         j = withPreset(given, fabric);
         // The fabric alone first, so that a mistake in its file names the file.
+        MaterialJson alone;
         try {
             std::vector<std::string> ignored;
-            materialFromJson(fabric.material, base, "", ignored);
+            alone = materialFromJson(fabric.material, base, "", ignored);
         } catch (const std::exception& e) {
             throw std::invalid_argument(fabric.file + ": " + e.what());
         }
+        // A repeat in place of the fabric's thread counts keeps the widths its counts gave.
+        if (!readTextileKeys(j).threadsPerCm && !j.contains("scale"))
+            for (const auto& [count, width, value] : {std::tuple{"warp_count", "warp_width", alone.params.warp_width},
+                                                      std::tuple{"weft_count", "yarn_width", alone.params.yarn_width}})
+                if (j.contains(count) && !given.contains(count)) j.erase(count), j[width] = value;
         out.preset = fabric.file;
     }
     out.params = base;

@@ -17,6 +17,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "frame.h"
+#include "decoded_limits.h"
+#include "draco_decoding.h"
 #include "gltf_accessor.h"
 #include "file_reading.h"
 #include "gltf_material_reader.h"
@@ -24,6 +26,7 @@
 #include "image_io.h"
 #include "light_limits.h"
 #include "mesh_attributes.h"
+#include "meshopt_decoding.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
 
@@ -36,15 +39,15 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
     {"KHR_materials_volume", "rendered thin-walled: the attenuation applies, refraction does not"},
 };
-// Mesh compression we do not decode: named so the message can say what to do.
-const std::set<std::string> kCompressionExtensions = {
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
-};
+// Mesh compression we do not decode: named so the message can say what to do. (The KHR
+// successor of EXT_meshopt_compression has a codec version Debian's meshoptimizer lacks.)
+const std::set<std::string> kCompressionExtensions = {"KHR_meshopt_compression"};
 
 // Where keepEncodedImage keeps the bytes, and the model tinygltf is filling, whose buffers it
 // checks an image's buffer view against: tinygltf hands over &buffer[byteOffset] and byteLength
@@ -164,6 +167,8 @@ private:
         scene_.inputFiles.push_back(path_);
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
         document_ = jsonPart(file);
+        // Compressed files hold what tinygltf refuses: stand-ins (replaced when decoding) first.
+        if (stubMeshoptFallbackBuffers(document_) | standInDracoIndexViews(document_)) file = withJson(file, document_);
         const nlohmann::json& document = document_;
         if (document.is_object() && document.contains("extensionsRequired") && document["extensionsRequired"].is_array())
             for (const auto& name : document["extensionsRequired"])
@@ -185,7 +190,33 @@ private:
             fail(std::string("cannot read ") + (binary ? "glTF binary" : "glTF") + ": " +
                  (err.empty() ? "unknown error" : jsonProblem(err)));
         }
+        try {
+            size_t decodedBytes = 0;
+            decodeMeshoptViews(model_, decodedBytes);
+            decodeDracoPrimitives(model_, decodedBytes);
+        } catch (const DecodingError& e) {
+            fail(e.what());
+        }
     }
+
+    // The file with its JSON replaced by `document`: a .glb keeps its binary chunk.
+    static std::vector<unsigned char> withJson(const std::vector<unsigned char>& file, const nlohmann::json& document) {
+        std::string json = document.dump();
+        if (file.size() < 20 || std::memcmp(file.data(), "glTF", 4) != 0) return {json.begin(), json.end()};
+        uint32_t jsonLength = 0;
+        std::memcpy(&jsonLength, file.data() + 12, 4);
+        const size_t rest = std::min<size_t>(size_t(20) + jsonLength, file.size());
+        json.resize((json.size() + 3) / 4 * 4, ' ');  // chunks are 4-byte aligned, JSON padded with spaces
+        std::vector<unsigned char> out(file.begin(), file.begin() + 12);
+        const uint32_t length = uint32_t(json.size()), total = uint32_t(12 + 8 + json.size() + (file.size() - rest));
+        std::memcpy(out.data() + 8, &total, 4);
+        out.insert(out.end(), reinterpret_cast<const unsigned char*>(&length), reinterpret_cast<const unsigned char*>(&length) + 4);
+        out.insert(out.end(), file.begin() + 16, file.begin() + 20);  // the chunk type, "JSON"
+        out.insert(out.end(), json.begin(), json.end());
+        out.insert(out.end(), file.begin() + rest, file.end());
+        return out;
+    }
+
 
     // tinygltf's file access, for the buffers and images a file names: only regular files, of a
     // bounded size, inside the glTF file's folder (unless LoadOptions::anyPath).
