@@ -16,7 +16,7 @@ esac
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
-  libembree-dev libtinygltf-dev libopenimageio-dev
+  libembree-dev libtinygltf-dev libopenimageio-dev libdraco-dev libmeshoptimizer-dev libwebp-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
 )
 test_packages=(

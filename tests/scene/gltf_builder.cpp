@@ -102,6 +102,15 @@ void GltfBuilder::useExtension(const std::string& name, bool required) {
     if (required) doc_["extensionsRequired"].push_back(name);
 }
 
+int GltfBuilder::addFallbackBuffer(size_t bytes) {
+    fallbackBuffers_.push_back({{"byteLength", bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+    return int(fallbackBuffers_.size());
+}
+
+void GltfBuilder::appendFallbackBuffers(nlohmann::json& doc) const {
+    for (const nlohmann::json& buffer : fallbackBuffers_) doc["buffers"].push_back(buffer);
+}
+
 void GltfBuilder::writeGltf(const std::string& path, Storage storage) const {
     nlohmann::json doc = doc_;
     if (bin_.empty()) {
@@ -114,12 +123,14 @@ void GltfBuilder::writeGltf(const std::string& path, Storage storage) const {
         std::ofstream(binPath, std::ios::binary).write(reinterpret_cast<const char*>(bin_.data()), bin_.size());
         doc["buffers"] = {{{"byteLength", bin_.size()}, {"uri", binName}}};
     }
+    appendFallbackBuffers(doc);
     std::ofstream(path) << doc.dump(1);
 }
 
 void GltfBuilder::writeGlb(const std::string& path) const {
     nlohmann::json doc = doc_;
     doc["buffers"] = {{{"byteLength", bin_.size()}}};
+    appendFallbackBuffers(doc);
     std::string text = doc.dump();
     while (text.size() % 4) text += ' ';
     std::vector<unsigned char> bin = bin_;

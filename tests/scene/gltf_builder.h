@@ -41,13 +41,19 @@ public:
     void setScene(const std::vector<int>& roots);
     int addMaterial(const nlohmann::json& material);
     void useExtension(const std::string& name, bool required = false);
+    // A buffer with a byteLength and no bytes, after the binary one: what EXT_meshopt_compression's
+    // views decode into. Returns its index.
+    int addFallbackBuffer(size_t bytes);
 
     enum class Storage { ExternalBin, DataUri };
     void writeGltf(const std::string& path, Storage storage = Storage::ExternalBin) const;
     void writeGlb(const std::string& path) const;
 
 private:
+    void appendFallbackBuffers(nlohmann::json& doc) const;
+
     nlohmann::json doc_;
+    nlohmann::json fallbackBuffers_ = nlohmann::json::array();
     std::vector<unsigned char> bin_;
 };
 
