@@ -6,8 +6,11 @@
 // time each adaptive render took; the table's last column is the ratio of the two, uniform's
 // over adaptive's: above 1, adaptive sampling wins. The reference (many samples, uniformly) is
 // cached in --out-dir, and the relMSE its own noise adds is taken off every measurement.
+// With --samplers and a list of --spp, it also measures the samplers against each other: every
+// row's last column is then against the first sampler's uniform render at the first spp.
 //
-//   bench_adaptive [SCENE...] [--width 160] [--height 120] [--spp 64] [--max-spp 256]
+//   bench_adaptive [SCENE...] [--width 160] [--height 120] [--spp 64[,256...]] [--max-spp 256]
+//                  [--samplers sobol[,independent]] [--max-depth 8]
 //                  [--thresholds 0.02,0.05,0.1] [--integrators path,bdpt,auto]
 //                  [--reference-spp 4096] [--reference-integrator path] [--threads 0] [--out-dir DIR]
 #include <sys/resource.h>
@@ -34,7 +37,9 @@ namespace {
 
 struct Options {
     std::vector<std::string> scenes;
-    int width = 160, height = 120, spp = 64, maxSpp = 256, referenceSpp = 4096, threads = 0;
+    int width = 160, height = 120, maxSpp = 256, referenceSpp = 4096, threads = 0, maxDepth = RenderSettings().maxDepth;
+    std::vector<int> spps{64};
+    std::vector<std::string> samplers{"sobol"};
     std::string referenceIntegrator = "path";
     std::vector<double> thresholds{0.02, 0.05, 0.1};
     std::vector<std::string> integrators{"path", "bdpt", "auto"};
@@ -53,9 +58,12 @@ struct Run {
     std::string integrator;
 };
 
+// The reference is sampled independently, so that its halves' difference tells its noise.
 Run render(const std::shared_ptr<const SceneDescription>& scene, const Options& o, const std::string& integrator, int spp,
-           double threshold, uint64_t seed, int firstSample = 0) {
+           double threshold, uint64_t seed, int firstSample = 0, SamplerKind sampler = SamplerKind::Independent) {
     RenderSettings s = defaultRenderSettings(*scene);
+    s.sampler = sampler;
+    s.maxDepth = o.maxDepth;
     s.width = o.width;
     s.height = o.height;
     s.spp = spp;
@@ -102,7 +110,7 @@ Reference reference(const std::shared_ptr<const SceneDescription>& scene, const 
     for (int h = 0; h < 2; ++h) {
         std::ostringstream name;
         name << stem << "_" << o.width << "x" << o.height << "_" << o.referenceIntegrator << "_" << o.referenceSpp
-             << "spp_reference_" << h << ".exr";
+             << "spp_d" << o.maxDepth << "_reference_" << h << ".exr";
         const fs::path path = fs::path(o.outDir) / name.str();
         if (fs::exists(path)) {
             const ExrImage exr = readExr(path.string());
@@ -160,8 +168,10 @@ int main(int argc, char** argv) {
         const std::string a = argv[i];
         const bool hasValue = i + 1 < argc;
         if (a == "--width" && hasValue) o.width = std::atoi(argv[++i]);
+        else if (a == "--samplers" && hasValue) o.samplers = parseList<std::string>(argv[++i]);
+        else if (a == "--max-depth" && hasValue) o.maxDepth = std::atoi(argv[++i]);
         else if (a == "--height" && hasValue) o.height = std::atoi(argv[++i]);
-        else if (a == "--spp" && hasValue) o.spp = std::atoi(argv[++i]);
+        else if (a == "--spp" && hasValue) o.spps = parseList<int>(argv[++i]);
         else if (a == "--max-spp" && hasValue) o.maxSpp = std::atoi(argv[++i]);
         else if (a == "--reference-spp" && hasValue) o.referenceSpp = std::atoi(argv[++i]);
         else if (a == "--reference-integrator" && hasValue) o.referenceIntegrator = argv[++i];
@@ -171,7 +181,8 @@ int main(int argc, char** argv) {
         else if (a == "--out-dir" && hasValue) o.outDir = argv[++i];
         else if (!a.empty() && a[0] != '-') o.scenes.push_back(a);
         else {
-            std::cerr << "usage: bench_adaptive [SCENE...] [--width N] [--height N] [--spp N] [--max-spp N] "
+            std::cerr << "usage: bench_adaptive [SCENE...] [--width N] [--height N] [--spp N,N] [--max-spp N] "
+                         "[--samplers sobol,independent] [--max-depth N] "
                          "[--thresholds T,T] [--integrators path,bdpt,auto] [--reference-spp N] [--reference-integrator path|bdpt] "
                          "[--threads N] "
                          "[--out-dir DIR]\n";
@@ -181,11 +192,12 @@ int main(int argc, char** argv) {
     if (o.scenes.empty())
         o.scenes = {std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json", std::string(WOVEN_ASSETS_DIR) + "/default_scene.json"};
 
-    std::printf("%dx%d; uniform: %d spp; adaptive: at most %d spp; reference: %s, %d spp; time: CPU seconds of "
-                "the render (all threads)\n\n",
-                o.width, o.height, o.spp, o.maxSpp, o.referenceIntegrator.c_str(), o.referenceSpp);
-    std::printf("| scene | integrator | sampling | mean spp | CPU s | wall s | relMSE | relMSE at equal time, uniform / this |\n"
-                "|---|---|---|---:|---:|---:|---:|---:|\n");
+    std::printf("%dx%d, max depth %d; adaptive: at most %d spp; reference: %s, %d spp, independent samples; time: CPU "
+                "seconds of the render (all threads)\n\n",
+                o.width, o.height, o.maxDepth, o.maxSpp, o.referenceIntegrator.c_str(), o.referenceSpp);
+    std::printf("| scene | integrator | sampler | sampling | mean spp | CPU s | wall s | relMSE | relMSE at equal time, %s "
+                "uniform at %d spp / this |\n"
+                "|---|---|---|---|---:|---:|---:|---:|---:|\n", o.samplers.front().c_str(), o.spps.front());
     for (const std::string& file : o.scenes) {
         std::shared_ptr<const SceneDescription> scene;
         try {
@@ -196,28 +208,35 @@ int main(int argc, char** argv) {
         }
         const std::string stem = std::filesystem::path(file).stem().string();
         const Reference ref = reference(scene, o, stem);
-        std::printf("| %s | reference | %s, %d spp | | | | %.3e (its noise, taken off the others) | |\n", stem.c_str(),
+        std::printf("| %s | reference | independent | %s, %d spp | | | | %.3e (its noise, taken off the others) | |\n", stem.c_str(),
                     o.referenceIntegrator.c_str(), o.referenceSpp, ref.noise);
         for (const std::string& integrator : o.integrators) {
             uint64_t seed = 1;
             // What a render costs whatever its samples (auto's pilot), which the 1 / time law
             // of uniform sampling's relMSE leaves out.
             const double fixed = render(scene, o, integrator, 0, 0.0, seed).cpu;
-            const Run uniform = render(scene, o, integrator, o.spp, 0.0, seed);
+            const SamplerKind first = samplerKind(o.samplers.front());
+            const Run uniform = render(scene, o, integrator, o.spps.front(), 0.0, seed, 0, first);
             const double uniformMse = relativeMse(uniform.film.radiance, ref.image) - ref.noise;
-            const auto row = [&](const Run& r, const std::string& sampling) {
+            const auto row = [&](const Run& r, SamplerKind sampler, const std::string& sampling) {
                 const double mse = relativeMse(r.film.radiance, ref.image) - ref.noise;
                 const std::string name = integrator == r.integrator ? integrator : integrator + " (" + r.integrator + ")";
-                std::printf("| %s | %s | %s | %.1f | %.2f | %.2f | %.3e | %.2f |\n", stem.c_str(), name.c_str(),
-                            sampling.c_str(), meanSamples(r.film), r.cpu, r.wall, mse,
+                std::printf("| %s | %s | %s | %s | %.1f | %.2f | %.2f | %.3e | %.2f |\n", stem.c_str(), name.c_str(),
+                            samplerName(sampler), sampling.c_str(), meanSamples(r.film), r.cpu, r.wall, mse,
                             uniformMse * (uniform.cpu - fixed) / (r.cpu - fixed) / mse);
                 std::fflush(stdout);
             };
-            row(uniform, "uniform");
-            for (double t : o.thresholds) {
-                char label[64];
-                std::snprintf(label, sizeof label, "T = %g", t);
-                row(render(scene, o, integrator, o.maxSpp, t, seed), label);
+            for (const std::string& samplerText : o.samplers) {
+                const SamplerKind sampler = samplerKind(samplerText);
+                for (int spp : o.spps)
+                    row(sampler == first && spp == o.spps.front() ? uniform
+                                                                  : render(scene, o, integrator, spp, 0.0, seed, 0, sampler),
+                        sampler, "uniform");
+                for (double t : o.thresholds) {
+                    char label[64];
+                    std::snprintf(label, sizeof label, "T = %g", t);
+                    row(render(scene, o, integrator, o.maxSpp, t, seed, 0, sampler), sampler, label);
+                }
             }
         }
     }
