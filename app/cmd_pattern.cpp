@@ -1,12 +1,16 @@
 // `woven pattern`: print the top-yarn map of a weave as MODEL.md draws it, or draw it in thread
-// colours as a PNG; the weave is an (i, j, k) pattern or a WIF draft.
+// colours as a PNG; the weave is an (i, j, k) pattern, a WIF draft or a woven material (a
+// library fabric's "preset" included), whose thread counts also give its cover, weight and repeat.
 #include <iostream>
 #include <stdexcept>
 
 #include "commands.h"
 #include "draft_tile.h"
 #include "drawdown_image.h"
+#include "fabric_measures.h"
 #include "image_io.h"
+#include "material_json.h"
+#include "untrusted_json.h"
 #include "weave_pattern.h"
 #include "wif_reader.h"
 
@@ -25,6 +29,7 @@ const glm::vec3 kPlainWarpColor{0.0f}, kPlainWeftColor{1.0f};
 struct Weave {
     WeavePattern pattern;
     std::vector<glm::vec3> warpColors{kPlainWarpColor}, weftColors{kPlainWeftColor};
+    std::optional<FabricMeasures> measures;  // a material with thread counts
 };
 
 Weave weaveFromDraft(const std::string& path) {
@@ -38,12 +43,30 @@ Weave weaveFromDraft(const std::string& path) {
     return weave;
 }
 
+// "wif" paths relative to the working directory, as for --woven.
+Weave weaveFromMaterial(const std::string& text) {
+    std::vector<std::string> warnings;
+    MaterialJson read;
+    try {
+        read = materialFromJson(parseUntrustedJson(text), WovenParams{}, "", warnings);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--material: ") + e.what());
+    }
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    const WovenParams& p = read.params;
+    Weave weave{WeavePattern::fromParams(p)};
+    weave.warpColors = p.warp_colors.empty() ? std::vector<glm::vec3>{p.warp_color} : p.warp_colors;
+    weave.weftColors = p.weft_colors.empty() ? std::vector<glm::vec3>{p.weft_color} : p.weft_colors;
+    weave.measures = measureMaterial(read);
+    return weave;
+}
+
 }  // namespace
 
 void addPatternCommand(CLI::App& app) {
     struct Options {
         std::vector<int> pattern{1, 1, 1};
-        std::string wif, png;
+        std::string wif, png, material;
         std::vector<int> size;
         int cellPixels = 8;
     };
@@ -51,7 +74,11 @@ void addPatternCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("pattern", "Print the top-yarn map of a weave ('-' weft, '|' warp), or draw it as a PNG");
     CLI::Option* pattern = cmd->add_option("--pattern", opts->pattern, "I,J,K: I weft, J warp elements per row, shift K per row")
         ->delimiter(',')->expected(3);
-    cmd->add_option("--wif", opts->wif, "a weaving draft (WIF file) instead of --pattern")->excludes(pattern);
+    CLI::Option* wif = cmd->add_option("--wif", opts->wif, "a weaving draft (WIF file) instead of --pattern")->excludes(pattern);
+    cmd->add_option("--material", opts->material,
+                    "a woven material's JSON instead (e.g. '{\"preset\": \"denim\"}'); with thread counts its cover, "
+                    "weight and repeat size are printed after the map")
+        ->excludes(pattern)->excludes(wif);
     cmd->add_option("--size", opts->size, "W,H: columns and rows (default: one repeat)")
         ->delimiter(',')->expected(2);
     cmd->add_option("--png", opts->png, "draw the weave in thread colours to this PNG instead of printing it "
@@ -60,6 +87,7 @@ void addPatternCommand(CLI::App& app) {
     cmd->callback([opts] {
         Weave weave = [&] {
             if (!opts->wif.empty()) return weaveFromDraft(opts->wif);
+            if (!opts->material.empty()) return weaveFromMaterial(opts->material);
             const auto& p = opts->pattern;
             if (p[0] < 0 || p[1] < 0 || p[0] + p[1] < 1 || p[0] + p[1] > 1024)
                 throw std::invalid_argument("--pattern: need I, J >= 0 and 1 <= I + J <= 1024");
@@ -88,8 +116,10 @@ void addPatternCommand(CLI::App& app) {
                                         std::to_string(kMaxDrawdownPixels) + " pixels)");
         if (opts->png.empty()) {
             std::cout << weave.pattern.draw(w, h);
+            if (weave.measures) std::cout << describe(*weave.measures) << "\n";
             return;
         }
+        if (weave.measures) std::cout << describe(*weave.measures) << "\n";
         // Clamp: the PNG holds the thread colours exactly, with no tone curve.
         writePng(opts->png, drawdownImage(weave.pattern, weave.warpColors, weave.weftColors, w, h, opts->cellPixels),
                  DisplayTransform{0.0f, ToneMap::Clamp});

@@ -183,5 +183,16 @@ TEST(FabricsCommand, JsonListsEveryFabricWithItsCountsAndSource) {
     EXPECT_THAT(text.out, HasSubstr("denim                25 x 16"));
 }
 
+TEST(FabricsCommand, PatternOfAMaterialPrintsItsMeasures) {
+    const test::RunResult r = test::runWoven("pattern --material '{\"preset\": \"denim\"}'");
+    ASSERT_EQ(r.exitCode, 0);
+    // The draft's 3/1 twill, then 4 threads at 25 ends and 16 picks per cm.
+    EXPECT_THAT(r.out, HasSubstr("|||-\n-|||\n|-||\n||-|\n25 x 16 threads/cm (63.5 x 40.64 per inch), repeat 4 x 4 threads = "
+                                 "0.16 x 0.25 cm"));
+    const test::RunResult bad = test::runWovenCommand("pattern --material '{\"ends_per_cm\": -2, \"picks_per_cm\": 2}'");
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_THAT(bad.out, HasSubstr("--material: 'ends_per_cm' = -2"));
+}
+
 }  // namespace
 }  // namespace woven
