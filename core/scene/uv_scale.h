@@ -22,7 +22,7 @@ UvScale measureUvScale(const SceneDescription& scene, const std::vector<size_t>&
 glm::dvec2 worldLengthPerUv(const SceneDescription& scene, const std::vector<size_t>& meshes);  // the mean
 
 // Beyond this spread a real thread count holds only on average: the caller warns
-// (unevenUvWarning()). The bundled drapes, whose UVs a cloth simulation stretched, are near 0.03.
+// (unevenUvWarning()). The bundled drapes, whose UVs a cloth simulation stretched, stay under it.
 constexpr double kMaxUvSpread = 0.15;
 // "the mesh's UVs are uneven (their scale varies by 23 % along u): ..." where the spread is
 // beyond kMaxUvSpread, else empty.
