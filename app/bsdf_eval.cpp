@@ -57,8 +57,17 @@ public:
         if (it != cache_.end()) return *it->second;
         // "wif" is read from the working directory, as for --woven.
         std::vector<std::string> warnings;
-        const MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
-        if (read.threadsPerCm) throw std::invalid_argument("'scale': \"draft\" needs a mesh to measure; bsdf-eval has none");
+        MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
+        // The flat surface's UV unit is a metre (dp/du = +x, in glTF's unit), so thread counts
+        // and "scale": "draft" put threads per cm x 100 on it.
+        if (read.threadsPerCm) {
+            read.params.repeat = *read.threadsPerCm * 100.0f;
+            try {
+                validate(read.params);
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument(read.scaleKey + " gives " + e.what());
+            }
+        }
         for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
         auto material = std::make_unique<WovenMaterial>(read.params);
         // A stream of ever new materials must not grow without bound: start over when full.
