@@ -39,7 +39,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
@@ -216,7 +216,6 @@ private:
         out.insert(out.end(), file.begin() + rest, file.end());
         return out;
     }
-
 
     // tinygltf's file access, for the buffers and images a file names: only regular files, of a
     // bounded size, inside the glTF file's folder (unless LoadOptions::anyPath).

@@ -227,11 +227,13 @@ TextureRef GltfMaterialReader::readTexture(const json& info, bool srgb, const st
     if (!textures.is_array() || index.get<size_t>() >= textures.size())
         fail(where, "texture " + std::to_string(index.get<long long>()) + " does not exist");
     const json& texture = textures[index.get<size_t>()];
-    const json& source = member(texture, "source");
+    // EXT_texture_webp names the WebP image; "source", if any, is the fallback for viewers without it.
+    const json& webp = member(member(member(texture, "extensions"), "EXT_texture_webp"), "source");
+    const json& source = webp.is_null() ? member(texture, "source") : webp;
     if (source.is_null()) {
-        // Only an extension's image (KTX2, WebP, DDS) and no PNG/JPEG fallback.
+        // Only an extension's image (KTX2, DDS) and no PNG/JPEG fallback.
         warn_(where + ": texture " + std::to_string(index.get<long long>()) +
-              " has no PNG or JPEG image woven can read; the texture is ignored");
+              " has no PNG, JPEG or WebP image woven can read; the texture is ignored");
         return ref;
     }
     if (!source.is_number_integer() || source.get<long long>() < 0) fail(where, "texture source must be an integer >= 0");

@@ -4,6 +4,7 @@
 #include <OpenImageIO/half.h>
 #include <OpenImageIO/imageio.h>
 #include <stb_image_write.h>
+#include <webp/decode.h>
 
 #include <algorithm>
 #include <array>
@@ -25,9 +26,10 @@ namespace {
     throw ImageError(path + ": " + problem);
 }
 
-// The formats woven reads, by their first bytes: glTF textures are PNG or JPEG, environment
-// maps Radiance HDR or OpenEXR. Anything else is refused by name before a decoder sees it.
-enum class ImageFormat { Png, Jpeg, Hdr, Exr };
+// The formats woven reads, by their first bytes: glTF textures are PNG, JPEG or WebP
+// (EXT_texture_webp), environment maps Radiance HDR or OpenEXR. Anything else is refused by
+// name before a decoder sees it.
+enum class ImageFormat { Png, Jpeg, Webp, Hdr, Exr };
 
 ImageFormat detectFormat(const unsigned char* data, size_t size, const std::string& name) {
     const auto startsWith = [&](std::initializer_list<unsigned char> magic) {
@@ -39,24 +41,25 @@ ImageFormat detectFormat(const unsigned char* data, size_t size, const std::stri
     };
     if (startsWith({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
     if (startsWith({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
+    if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0) return ImageFormat::Webp;
     if (startsWithText("#?RADIANCE") || startsWithText("#?RGBE")) return ImageFormat::Hdr;
     if (startsWith({0x76, 0x2f, 0x31, 0x01})) return ImageFormat::Exr;
     std::string what = "an unknown format";
     if (startsWithText("GIF8")) what = "GIF";
     else if (startsWithText("BM")) what = "BMP";
     else if (startsWith({'I', 'I', 42, 0}) || startsWith({'M', 'M', 0, 42})) what = "TIFF";
-    else if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0) what = "WebP";
     else if (startsWith({0xab, 'K', 'T', 'X'})) what = "KTX";
     else if (startsWithText("DDS ")) what = "DDS";
     else if (size >= 2 && data[0] == 'P' && data[1] >= '1' && data[1] <= '7') what = "PNM";
     else if (size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3 || data[2] >= 9)) what = "TGA or an unknown format";
-    fail(name, "the image is " + what + ": woven reads PNG, JPEG, Radiance HDR (.hdr) and OpenEXR (.exr)");
+    fail(name, "the image is " + what + ": woven reads PNG, JPEG, WebP, Radiance HDR (.hdr) and OpenEXR (.exr)");
 }
 
 const char* formatExtension(ImageFormat f) {
     switch (f) {
         case ImageFormat::Png: return ".png";
         case ImageFormat::Jpeg: return ".jpg";
+        case ImageFormat::Webp: return ".webp";
         case ImageFormat::Hdr: return ".hdr";
         case ImageFormat::Exr: return ".exr";
     }
@@ -89,6 +92,25 @@ std::string oiioError(const OIIO::ImageInput* input) {
     return message.empty() ? "unknown error" : message;
 }
 
+// The limits, before any pixel is decoded.
+void checkImageSize(int width, int height, int channels, const std::string& name) {
+    if (width <= 0 || height <= 0)
+        fail(name, "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")");
+    if (width > kMaxImageSide || height > kMaxImageSide ||
+        int64_t(width) * height > kMaxImagePixels)
+        fail(name, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                       ", more than woven reads (" + std::to_string(kMaxImageSide) + " on a side, " +
+                       std::to_string(kMaxImagePixels / (1 << 20)) + " Mpixels)");
+    if (channels <= 0 || channels > kMaxImageChannels)
+        fail(name, "the image has " + std::to_string(channels) + " channels (woven reads 1 to " +
+                       std::to_string(kMaxImageChannels) + ")");
+    const int64_t decodedBytes = int64_t(width) * height * channels * 4;
+    if (decodedBytes > kMaxImageDecodedBytes)
+        fail(name, "the image's " + std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
+                       std::to_string(channels) + " channels decode to " + std::to_string(decodedBytes >> 20) +
+                       " MiB, more than woven's limit of " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
+}
+
 OpenedImage openImage(const unsigned char* data, size_t size, const std::string& name) {
     OpenedImage image;
     image.format = detectFormat(data, size, name);
@@ -108,22 +130,25 @@ OpenedImage openImage(const unsigned char* data, size_t size, const std::string&
     if (!image.input) fail(name, "cannot decode the image: " + oiioError(nullptr));
     const OIIO::ImageSpec& spec = image.input->spec();
     if (spec.deep) fail(name, "deep OpenEXR images are not supported");
-    if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1)
-        fail(name, "the image is empty (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ")");
-    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
-        int64_t(spec.width) * spec.height > kMaxImagePixels)
-        fail(name, "the image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                       ", more than woven reads (" + std::to_string(kMaxImageSide) + " on a side, " +
-                       std::to_string(kMaxImagePixels / (1 << 20)) + " Mpixels)");
-    if (spec.nchannels <= 0 || spec.nchannels > kMaxImageChannels)
-        fail(name, "the image has " + std::to_string(spec.nchannels) + " channels (woven reads 1 to " +
-                       std::to_string(kMaxImageChannels) + ")");
-    const int64_t decodedBytes = int64_t(spec.width) * spec.height * spec.nchannels * 4;
-    if (decodedBytes > kMaxImageDecodedBytes)
-        fail(name, "the image's " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels of " +
-                       std::to_string(spec.nchannels) + " channels decode to " + std::to_string(decodedBytes >> 20) +
-                       " MiB, more than woven's limit of " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
+    if (spec.depth != 1) fail(name, "the image is empty (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ")");
+    checkImageSize(spec.width, spec.height, spec.nchannels, name);
     return image;
+}
+
+
+// OpenImageIO 2.4 premultiplies WebP's alpha whatever it is asked: libwebp decodes it as stored.
+TextureImage decodeWebpTexture(const unsigned char* data, size_t size, const std::string& name) {
+    int width = 0, height = 0;
+    if (!WebPGetInfo(data, size, &width, &height)) fail(name, "cannot decode the WebP image: its header is corrupt");
+    checkImageSize(width, height, 4, name);
+    TextureImage texture;
+    texture.name = name;
+    texture.width = width;
+    texture.height = height;
+    texture.bytes.resize(size_t(width) * size_t(height));
+    if (!WebPDecodeRGBAInto(data, size, &texture.bytes[0].x, texture.bytes.size() * 4, width * 4))
+        fail(name, "cannot decode the WebP image: its data is corrupt");
+    return texture;
 }
 
 // All channels of the first subimage as `type`, interleaved.
@@ -255,6 +280,7 @@ Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encodi
 }
 
 TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name) {
+    if (detectFormat(data, size, name) == ImageFormat::Webp) return decodeWebpTexture(data, size, name);
     OpenedImage opened = openImage(data, size, name);
     const OIIO::ImageSpec& spec = opened.spec();
     TextureImage texture;

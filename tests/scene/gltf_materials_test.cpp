@@ -4,8 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
+#include <webp/encode.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "gltf_builder.h"
 #include "scene_loader.h"
@@ -211,10 +213,42 @@ TEST(GltfExtensions, UnsupportedOnesAreNamedRequiredOnesRefused) {
 
 TEST(GltfExtensions, ATextureOnlyAnExtensionCanDecodeIsIgnoredWithAWarning) {
     TexturedFile f;
-    f.b.json()["textures"].push_back({{"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}});
+    f.b.json()["textures"].push_back({{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}});
     const SceneDescription s = f.load({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}});
     EXPECT_FALSE(s.materials[0].baseColorTexture);
-    EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("has no PNG or JPEG image woven can read")));
+    EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("has no PNG, JPEG or WebP image woven can read")));
+}
+
+TEST(GltfExtensions, AWebPTextureDecodesAsItsPngTwin) {
+    TexturedFile f;
+    // The PNG's pixels, written by libwebp's lossless encoder.
+    const unsigned char pixels[8] = {255, 0, 0, 255, 0, 128, 255, 64};
+    uint8_t* webp = nullptr;
+    const size_t size = WebPEncodeLosslessRGBA(pixels, 2, 1, 8, &webp);
+    ASSERT_GT(size, 0u);
+    std::ofstream(f.dir.file("t.webp"), std::ios::binary).write(reinterpret_cast<const char*>(webp), std::streamsize(size));
+    WebPFree(webp);
+    f.b.json()["images"].push_back({{"uri", "t.webp"}});
+    // Its "source" is the fallback for viewers without WebP, which woven is not.
+    f.b.json()["textures"].push_back({{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}});
+    f.b.useExtension("EXT_texture_webp", true);
+    const SceneDescription s = f.load({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}},
+                                       {"emissiveTexture", {{"index", 0}}}});
+    const Material& m = s.materials.at(0);
+    ASSERT_TRUE(m.baseColorTexture && m.emissiveTexture);
+    ASSERT_NE(m.baseColorTexture.image, m.emissiveTexture.image);  // two images, one from each file
+    const TextureImage &fromWebp = s.textures.at(size_t(m.baseColorTexture.image)), &fromPng = s.textures.at(size_t(m.emissiveTexture.image));
+    EXPECT_EQ(fromWebp.width, 2);
+    EXPECT_EQ(fromWebp.bytes, fromPng.bytes);
+}
+
+TEST(GltfExtensions, ACorruptWebPTextureIsRefusedNamingIt) {
+    TexturedFile f;
+    std::ofstream(f.dir.file("bad.webp"), std::ios::binary) << std::string("RIFF\x20\0\0\0WEBPVP8 \x14\0\0\0garbage garbage!!", 36);
+    f.b.json()["images"].push_back({{"uri", "bad.webp"}});
+    f.b.json()["textures"].push_back({{"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}});
+    EXPECT_THAT(f.error({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}}),
+                AllOf(HasSubstr("bad.webp"), HasSubstr("cannot decode the WebP image")));
 }
 
 // Skins and morph targets: the default pose, with the default weights.

@@ -144,7 +144,7 @@ TEST(UntrustedImages, FormatsWovenDoesNotReadAreRefusedByName) {
     EXPECT_THAT(imageError("GIF89a....."), HasSubstr("is GIF"));
     EXPECT_THAT(imageError(std::string("\0\0\2\0\0\0\0\0\0\0\0\0\x40\0\x40\0\x20\0", 18) + std::string(40, 'x')),
                 HasSubstr("TGA"));
-    EXPECT_THAT(imageError("hello"), HasSubstr("woven reads PNG, JPEG, Radiance HDR (.hdr) and OpenEXR (.exr)"));
+    EXPECT_THAT(imageError("hello"), HasSubstr("woven reads PNG, JPEG, WebP, Radiance HDR (.hdr) and OpenEXR (.exr)"));
 }
 
 TEST(UntrustedImages, EmptyTruncatedAndOversizedImagesAreRefused) {
