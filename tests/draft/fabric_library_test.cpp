@@ -194,5 +194,18 @@ TEST(FabricsCommand, PatternOfAMaterialPrintsItsMeasures) {
     EXPECT_THAT(bad.out, HasSubstr("--material: 'ends_per_cm' = -2"));
 }
 
+TEST(FabricsCommand, BsdfEvalTakesAUvUnitAsAMetre) {
+    // Voile's 28 ends and 26 picks per cm: 0.1 mm from the origin is in the gap of its first
+    // cell (0.28 and 0.26 of a thread), 0.18 mm across its middle (0.50 and 0.47), on a yarn.
+    test::TempDir dir;
+    std::ofstream(dir.file("q.jsonl")) << R"({"material": {"preset": "voile"}, "uv": [0.0001, 0.0001], "wi": [0, 0, 1], "wo": [0, 0.3, 1]}
+{"material": {"preset": "voile"}, "uv": [0.00018, 0.00018], "wi": [0, 0, 1], "wo": [0, 0.3, 1]}
+)";
+    const test::RunResult r = test::runWoven("bsdf-eval < '" + dir.file("q.jsonl") + "'");
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_THAT(r.out, HasSubstr("\"yarn\":\"gap\"}\n{"));
+    EXPECT_THAT(r.out, ::testing::EndsWith("\"yarn\":\"weft\"}\n"));
+}
+
 }  // namespace
 }  // namespace woven
