@@ -157,6 +157,8 @@ void writeSeedCorpora(const std::string& dir) {
     copyInto(companions.path() / "tri.gltf", root / "gltf");
     copyInto(companions.path() / "tri.glb", root / "gltf");
     triangle(true).writeGltf((root / "gltf" / "tri_embedded.gltf").string(), test::GltfBuilder::Storage::DataUri);
+    // EXT_meshopt_compression's decoder: gltf-transform's meshopt cloth (the tests' file).
+    copyInto(fs::path(WOVEN_TEST_DATA_DIR) / "cloth_meshopt.glb", root / "gltf");
 
     // Scene files naming the companion files, with every key.
     const json everyKey = {
