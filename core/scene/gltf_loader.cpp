@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "frame.h"
+#include "coordinate_limits.h"
 #include "decoded_limits.h"
 #include "draco_decoding.h"
 #include "gltf_accessor.h"
@@ -128,7 +129,8 @@ public:
             .read(scene_);
         computeNodeMatrices();
         for (int root : rootNodes()) visit(root, {});
-        warnDegenerateTriangles();
+        warnDropped(degenerate_, "degenerate");
+        warnDropped(duplicate_, "duplicate");
         return std::move(scene_);
     }
 
@@ -393,6 +395,8 @@ private:
             fail("node '" + nodeName + "': the camera's transform is degenerate (a zero scale, parallel axes or a "
                  "non-finite value): it has no view to render");
         NamedCamera named{nameOr(camera.name, "camera", node.camera), nodeName, {}};
+        if (const std::string problem = coordinateProblem(glm::vec3(cameraToWorld[3])); !problem.empty())
+            fail("node '" + nodeName + "': camera '" + named.name + "' at " + problem);
         named.camera.cameraToWorld = cameraToWorld;
         named.camera.yfov = float(camera.perspective.yfov);
         named.camera.aspect = float(aspect);
@@ -428,6 +432,10 @@ private:
         }
         if (!allFinite(light.direction) || !allFinite(light.position))
             fail("node '" + nodeName + "': " + lightName + " has a degenerate transform (a zero scale or a non-finite value)");
+        // A directional light has no position that rays start from.
+        if (light.type != PunctualLight::Type::Directional)
+            if (const std::string problem = coordinateProblem(light.position); !problem.empty())
+                fail("node '" + nodeName + "': " + lightName + " at " + problem);
         scene_.lights.push_back(light);
     }
 
@@ -626,8 +634,8 @@ private:
         mesh.positions.resize(n);
         for (size_t v = 0; v < n; ++v) {
             mesh.positions[v] = glm::vec3(transformOf(v) * glm::vec4(object.positions[v], 1.0f));
-            if (!allFinite(mesh.positions[v]))
-                fail("mesh '" + name + "': vertex " + std::to_string(v) + " has a non-finite world position");
+            if (const std::string problem = coordinateProblem(mesh.positions[v]); !problem.empty())
+                fail("mesh '" + name + "': vertex " + std::to_string(v) + "'s world position " + problem);
         }
         if (uvs.count) {
             mesh.uvs.resize(n);
@@ -645,10 +653,8 @@ private:
         if (handedness < 0.0f)
             for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
 
-        if (const size_t dropped = removeDegenerateTriangles(mesh)) {
-            degenerate_.triangles += dropped;
-            degenerate_.primitives.push_back(name);
-        }
+        degenerate_.add(removeDegenerateTriangles(mesh), name);
+        duplicate_.add(removeDuplicateTriangles(mesh), name);
         if (mesh.triangles.empty()) {
             warn("mesh '" + name + "': no triangles left, skipped");
             return;
@@ -685,15 +691,24 @@ private:
 
     // One warning for the file: exporters leave a degenerate triangle at the poles of every UV
     // sphere, and a line per primitive buried every other warning.
-    void warnDegenerateTriangles() {
-        const std::vector<std::string>& in = degenerate_.primitives;
+    struct DroppedTriangles {
+        size_t triangles = 0;
+        std::vector<std::string> primitives;
+        void add(size_t dropped, const std::string& primitive) {
+            if (dropped == 0) return;
+            triangles += dropped;
+            primitives.push_back(primitive);
+        }
+    };
+    void warnDropped(const DroppedTriangles& dropped, const std::string& kind) {
+        const std::vector<std::string>& in = dropped.primitives;
         if (in.empty()) return;
         constexpr size_t kNamed = 3;
         std::string names;
         for (size_t i = 0; i < std::min(in.size(), kNamed); ++i) names += (i ? ", '" : "'") + in[i] + "'";
         if (in.size() > kNamed) names += ", ...";
-        const size_t n = degenerate_.triangles;
-        warn("dropped " + std::to_string(n) + " degenerate triangle" + (n == 1 ? "" : "s") + " in " +
+        const size_t n = dropped.triangles;
+        warn("dropped " + std::to_string(n) + " " + kind + " triangle" + (n == 1 ? "" : "s") + " in " +
              std::to_string(in.size()) + " primitive" + (in.size() == 1 ? "" : "s") + " (" + names + ")");
     }
 
@@ -710,10 +725,7 @@ private:
     EncodedImages encodedImages_;
     ImageSink imageSink_{&encodedImages_, &model_};
     std::vector<glm::mat4> nodeWorld_;
-    struct DroppedTriangles {
-        size_t triangles = 0;
-        std::vector<std::string> primitives;
-    } degenerate_;
+    DroppedTriangles degenerate_, duplicate_;
     SceneDescription scene_;
 };
 

@@ -10,6 +10,11 @@ namespace woven {
 // Drops triangles with a repeated index or zero (or non-finite) area; returns how many.
 size_t removeDegenerateTriangles(Mesh& mesh);
 
+// Drops every triangle whose corners, in any rotation of their order, are those of an earlier
+// one (a reflected order is the other face, and stays); returns how many. Coincident copies
+// render as one but cost each ray through them a test of every copy, which no BVH avoids.
+size_t removeDuplicateTriangles(Mesh& mesh);
+
 // Fills mesh.normals with area-weighted averages of the face normals (counter-clockwise front).
 // A vertex no triangle uses gets +z.
 void computeVertexNormals(Mesh& mesh);

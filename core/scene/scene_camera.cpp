@@ -21,12 +21,14 @@ SceneBox sceneBounds(const SceneDescription& scene) {
 }
 
 Camera lookAt(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float yfov) {
-    // +z points from the target back to the eye.
-    const glm::vec3 z = glm::normalize(position - target);
-    const glm::vec3 x = glm::normalize(glm::cross(up, z));
-    const glm::vec3 y = glm::cross(z, x);
+    // +z points from the target back to the eye. In double: a float's squared length overflows
+    // for a view of about 1e19 and underflows for one of 1e-19, which left NaN axes.
+    const glm::dvec3 z = glm::normalize(glm::dvec3(position) - glm::dvec3(target));
+    const glm::dvec3 x = glm::normalize(glm::cross(glm::dvec3(up), z));
+    const glm::dvec3 y = glm::cross(z, x);
     Camera camera;
-    camera.cameraToWorld = glm::mat4(glm::vec4(x, 0.0f), glm::vec4(y, 0.0f), glm::vec4(z, 0.0f), glm::vec4(position, 1.0f));
+    camera.cameraToWorld = glm::mat4(glm::vec4(glm::vec3(x), 0.0f), glm::vec4(glm::vec3(y), 0.0f),
+                                     glm::vec4(glm::vec3(z), 0.0f), glm::vec4(position, 1.0f));
     camera.yfov = yfov;
     return camera;
 }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "coordinate_limits.h"
 #include "file_reading.h"
 #include "gltf_loader.h"
 #include "untrusted_json.h"
@@ -115,6 +116,13 @@ private:
         return {number(v[0], where), number(v[1], where), number(v[2], where)};
     }
 
+    // A point in the scene, within woven's coordinate limit.
+    glm::vec3 point(const json& v, const std::string& where) const {
+        const glm::vec3 p = vec3(v, where);
+        if (const std::string problem = coordinateProblem(p); !problem.empty()) fail(where, problem);
+        return p;
+    }
+
     // A colour: [r, g, b] or one number for grey, each >= 0.
     glm::vec3 color(const json& v, const std::string& where) const {
         const glm::vec3 c = v.is_number() ? glm::vec3(number(v, where)) : vec3(v, where);
@@ -169,7 +177,7 @@ private:
             if (aimed && !l.contains("direction")) fail(where, "a " + type + " light needs \"direction\"");
             if (!positioned && l.contains("position")) fail(where + ".position", "a directional light has no position");
             if (!aimed && l.contains("direction")) fail(where + ".direction", "a point light has no direction");
-            if (positioned) light.position = vec3(l["position"], where + ".position");
+            if (positioned) light.position = point(l["position"], where + ".position");
             if (aimed) {
                 const glm::vec3 d = vec3(l["direction"], where + ".direction");
                 if (!(glm::length(d) > 0.0f)) fail(where + ".direction", "must not be zero");
@@ -197,12 +205,15 @@ private:
     void readCamera(const json& cam, SceneDescription& scene) const {
         requireKeys(cam, "camera", {"position", "target", "up", "yfov_degrees"});
         if (!cam.contains("position") || !cam.contains("target")) fail("camera", "needs \"position\" and \"target\"");
-        const glm::vec3 position = vec3(cam["position"], "camera.position");
-        const glm::vec3 target = vec3(cam["target"], "camera.target");
+        const glm::vec3 position = point(cam["position"], "camera.position");
+        const glm::vec3 target = point(cam["target"], "camera.target");
         const glm::vec3 up = cam.contains("up") ? vec3(cam["up"], "camera.up") : glm::vec3(0, 1, 0);
-        const glm::vec3 back = position - target;
-        if (!(glm::length(back) > 0.0f)) fail("camera.target", "must differ from camera.position");
-        if (!(glm::length(glm::cross(up, glm::normalize(back))) > 1e-6f * glm::length(up)))
+        // In double, as lookAt() works: in float the squared length of a long view overflows (and
+        // of a very short one underflows), and any up then looked parallel to it.
+        const glm::dvec3 back = glm::dvec3(position) - glm::dvec3(target);
+        if (!(glm::length(back) > 0.0)) fail("camera.target", "must differ from camera.position");
+        if (!(glm::length(glm::dvec3(up)) > 0.0)) fail("camera.up", "must not be zero");
+        if (!(glm::length(glm::cross(glm::normalize(glm::dvec3(up)), glm::normalize(back))) > 1e-6))
             fail("camera.up", "must not be parallel to the view direction");
         float yfov = scene.camera.yfov;
         if (cam.contains("yfov_degrees")) {

@@ -1,15 +1,9 @@
 #include "scene_validation.h"
 
-#include <cmath>
-#include <sstream>
-
+#include "coordinate_limits.h"
 #include "scene_loader.h"
 
 namespace woven {
-
-namespace {
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-}  // namespace
 
 void validateScene(const SceneDescription& s) {
     const auto fail = [&](const std::string& what) { throw SceneError(s.source + ": " + what); };
@@ -17,14 +11,9 @@ void validateScene(const SceneDescription& s) {
     for (const Mesh& mesh : s.meshes) {
         const std::string name = "mesh '" + mesh.name + "': ";
         const size_t n = mesh.positions.size();
-        for (size_t v = 0; v < n; ++v) {
-            if (!finite(mesh.positions[v])) {
-                std::ostringstream msg;
-                msg << name << "vertex " << v << " is not finite (" << mesh.positions[v].x << ", "
-                    << mesh.positions[v].y << ", " << mesh.positions[v].z << ")";
-                fail(msg.str());
-            }
-        }
+        for (size_t v = 0; v < n; ++v)
+            if (const std::string problem = coordinateProblem(mesh.positions[v]); !problem.empty())
+                fail(name + "vertex " + std::to_string(v) + " at " + problem);
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t];
             if (tri.x >= n || tri.y >= n || tri.z >= n)
