@@ -1,12 +1,17 @@
 #include "woven_surface_material.h"
 
 #include "normal_map.h"
+#include "uv_precision.h"
+#include "woven_uv_check.h"
 
 namespace woven {
 
-WovenSurfaceMaterial::WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures)
+WovenSurfaceMaterial::WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures,
+                                           std::vector<bool> flatMeshes)
     : SurfaceMaterial(material, textures),
       model_(*material.woven),
+      resolvedUvLimit_(resolvedUvLimit<float>(material.woven->repeat)),
+      flatMeshes_(std::move(flatMeshes)),
       kept_(material.keptSurface.has_value()),
       print_(kept_ && material.keptSurface->print),
       baseColor_(material, textures),
@@ -14,12 +19,14 @@ WovenSurfaceMaterial::WovenSurfaceMaterial(const Material& material, const std::
 
 ShadingInput WovenSurfaceMaterial::shadingInput(const SurfaceHit& hit, const glm::vec3& wo) const {
     ShadingInput in;
-    in.uv = hit.tex.hasUv ? glm::dvec2(hit.tex.uv[0]) : glm::dvec2(0.5) / glm::dvec2(model_.params().repeat);
+    const bool hasUv = hit.tex.hasUv && !(hit.mesh >= 0 && size_t(hit.mesh) < flatMeshes_.size() && flatMeshes_[size_t(hit.mesh)]);
+    in.uv = hasUv ? glm::dvec2(hit.tex.uv[0]) : glm::dvec2(0.5) / glm::dvec2(model_.params().repeat);
+    if (!resolvesThreads(in.uv, resolvedUvLimit_)) in.uvSpacing = uvSpacing<float>(in.uv);
     in.ns = normalTexture_ ? normalMapped(normalTexture_, hit) : hit.ns;
     in.dpdu = hit.dpdu;
     in.dpdv = hit.dpdv;
     in.backSide = glm::dot(wo, hit.ng) < 0.0f;
-    if (hit.tex.hasUv && (hit.duvdx != glm::vec2(0.0f) || hit.duvdy != glm::vec2(0.0f))) {
+    if (hasUv && (hit.duvdx != glm::vec2(0.0f) || hit.duvdy != glm::vec2(0.0f))) {
         in.duvdx = glm::dvec2(hit.duvdx);
         in.duvdy = glm::dvec2(hit.duvdy);
     }
@@ -29,7 +36,7 @@ ShadingInput WovenSurfaceMaterial::shadingInput(const SurfaceHit& hit, const glm
 
 std::optional<Bsdf> WovenSurfaceMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
     const ShadingInput in = shadingInput(hit, wo);
-    if (in.duvdx != glm::dvec2(0.0) || in.duvdy != glm::dvec2(0.0))
+    if (in.duvdx != glm::dvec2(0.0) || in.duvdy != glm::dvec2(0.0) || in.uvSpacing != glm::dvec2(0.0))
         if (const auto filtered = model_.shadeFiltered(in)) return toBsdf(*filtered);
     const auto shading = model_.shade(in);
     if (!shading) return std::nullopt;
@@ -38,11 +45,13 @@ std::optional<Bsdf> WovenSurfaceMaterial::bsdf(const SurfaceHit& hit, const glm:
 
 bool WovenSurfaceMaterial::mayPassThrough(const Mesh& mesh) const {
     // Gaps are found by uv: a mesh without UVs is solid cloth.
-    return (model_.hasSeeThroughGaps() && !mesh.uvs.empty()) || (kept_ && baseColor_.mayPassThrough(mesh));
+    return (model_.hasSeeThroughGaps() && !mesh.uvs.empty() && !uvsAllEqual(mesh)) || (kept_ && baseColor_.mayPassThrough(mesh));
 }
 
 bool WovenSurfaceMaterial::passesThrough(const TexCoords& tc, float u) const {
-    return (tc.hasUv && model_.isSeeThrough(glm::dvec2(tc.uv[0]))) || (kept_ && baseColor_.passesThrough(tc, u));
+    // Where the uv cannot resolve a thread the far field shades the opaque part (WeaveFarField).
+    const glm::dvec2 uv(tc.uv[0]);
+    return (tc.hasUv && resolvesThreads(uv, resolvedUvLimit_) && model_.isSeeThrough(uv)) || (kept_ && baseColor_.passesThrough(tc, u));
 }
 
 }  // namespace woven

@@ -4,7 +4,9 @@
 // solid cloth: every point takes the middle of the first weave element, which is on a yarn.
 // A glTF material made woven (Material::keptSurface) keeps its normal map, which the weave's
 // bump tilts further, its alpha cut-out (a ray passes where the weave has a gap or alpha says
-// so) and its base colour texture and vertex colour as a print on the yarns.
+// so) and its base colour texture and vertex colour as a print on the yarns. Where a hit's float uv
+// cannot resolve a thread (uv_precision.h) the weave's far field shades it, and a mesh whose UVs
+// are all equal is solid cloth as a mesh without them (woven_uv_check.h warns of both).
 #include "base_color.h"
 #include "surface_material.h"
 #include "woven_material.h"
@@ -13,8 +15,10 @@ namespace woven {
 
 class WovenSurfaceMaterial final : public SurfaceMaterial {
 public:
-    // Throws std::invalid_argument for parameters the model rejects.
-    WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures);
+    // Throws std::invalid_argument for parameters the model rejects. `flatMeshes`: per mesh index,
+    // whether its UVs are all equal (checkWovenUvs()); none where it is shorter.
+    WovenSurfaceMaterial(const Material& material, const std::vector<TextureImage>& textures,
+                         std::vector<bool> flatMeshes = {});
 
     // The weave filtered over the hit's footprint where it has one (WovenMaterial::shadeFiltered).
     std::optional<Bsdf> bsdf(const SurfaceHit& hit, const glm::vec3& wo) const override;
@@ -30,6 +34,8 @@ private:
     ShadingInput shadingInput(const SurfaceHit& hit, const glm::vec3& wo) const;
 
     WovenMaterial model_;
+    glm::dvec2 resolvedUvLimit_;  // resolvedUvLimit<float>() at the material's repeat
+    std::vector<bool> flatMeshes_;
     bool kept_, print_;  // Material::keptSurface, and its print
     BaseColor baseColor_;
     TextureSampler normalTexture_;
