@@ -249,6 +249,53 @@ TEST(RenderCommand, NanVertexIsAnErrorNamingTheFile) {
     expectFailure(r, "nan.gltf", "NaN", dir);
 }
 
+// Embree aborted woven (exit 134) on rays from a camera or light about 1e19 m out, and the
+// previewer drew black (issue 21): render and preview, final or not, refuse it with a message.
+TEST(RenderCommand, FarAwayCameraOrLightIsAnErrorNotASignal) {
+    test::TempDir dir;
+    writeScene(dir.file("scene.gltf"), true);
+    nlohmann::json doc = nlohmann::json::parse(readText(dir.file("scene.gltf")));
+    for (nlohmann::json& node : doc["nodes"])
+        if (node.contains("camera")) node["translation"] = {0, 0, 1e19};
+    const std::string camera = dir.file("camera.gltf");
+    std::ofstream(camera) << doc.dump();
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"render", camera, "--spp", "1", "--width", "16", "--height", "16", "--out", dir.file("out.png")},
+          {"preview", camera, "--headless", "--final", "--spp", "1", "--width", "16", "--height", "16", "--screenshot", dir.file("out.png")},
+          {"preview", camera, "--headless", "--width", "16", "--height", "16", "--screenshot", dir.file("out.png")}}) {
+        const Result r = runWoven(command, dir);
+        EXPECT_EQ(r.exitCode, 1) << command[0] << ": no signal";
+        expectFailure(r, "camera.gltf", "node 'node2': camera 'camera0' at (0, 0, 1e+19) lies beyond woven's limit", dir);
+    }
+    // Shadow rays towards a lamp 1e25 m out were as invalid.
+    std::ofstream(dir.file("lamp.json"))
+        << R"({"gltf": "scene.gltf", "lights": [{"type": "point", "position": [0, 0, 1e25], "intensity": 1}]})";
+    const Result lamp = runWoven({"render", dir.file("lamp.json"), "--spp", "1", "--out", dir.file("out.png")}, dir);
+    EXPECT_EQ(lamp.exitCode, 1);
+    expectFailure(lamp, "lamp.json", "lights[0].position: (0, 0, 1e+25) lies beyond woven's limit", dir);
+}
+
+// A million coincident triangles took minutes for a few pixels (issue 21); copies are dropped at
+// load, said in one line, and the frame takes what one triangle's would.
+TEST(RenderCommand, CoincidentCopiesOfATriangleRenderAsOne) {
+    test::TempDir dir;
+    test::GltfBuilder b;
+    std::vector<uint32_t> indices;
+    for (int i = 0; i < 200000; ++i) indices.insert(indices.end(), {0, 1, 2});
+    const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}})}}},
+                                {"indices", b.addIndices(indices)}});
+    b.json()["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}};
+    b.setScene({b.addNode({{"mesh", mesh}}), b.addNode({{"camera", 0}, {"translation", {0, 0, 3}}})});
+    b.writeGlb(dir.file("pile.glb"));
+    const Result r = runWoven({"render", dir.file("pile.glb"), "--spp", "4", "--width", "16", "--height", "16",
+                               "--out", dir.file("pile.exr")}, dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("pile.glb: dropped 199999 duplicate triangles in 1 primitive"), std::string::npos) << r.err;
+    double sum = 0.0;
+    for (const glm::vec3& p : readExr(dir.file("pile.exr")).image.pixels) sum += p.r + p.g + p.b;
+    EXPECT_GT(sum, 0.0) << "the triangle must show";
+}
+
 // UVs a float cannot resolve a thread at (1e6: its values lie 1/16 apart, 6 threads; 1e10 + 4
 // reads as 1e10 at each corner) and UVs all equal (they map no weave) still show the cloth: the
 // far field and solid cloth, each with one warning. They used to render black or see-through. The frame's mean must stay within a factor of 1.6 of
