@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "parse_errors.h"
-#include "woven_command.h"
+#include "../common/run_woven.h"
 
 namespace woven {
 namespace {
@@ -19,40 +19,40 @@ const std::string kScene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json"
 
 TEST(CommandLineMessages, MistypedCommandSuggestsTheCommand) {
     const auto r = runWovenCommand("rendr x.glb");
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("'rendr' is not a woven command; did you mean 'render'?"), std::string::npos) << r.output;
-    EXPECT_EQ(r.output.find("A subcommand is required"), std::string::npos) << r.output;
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("'rendr' is not a woven command; did you mean 'render'?"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("A subcommand is required"), std::string::npos) << r.out;
     // Nothing close: the commands are listed instead of a guess.
     const auto far = runWovenCommand("frobnicate");
-    EXPECT_NE(far.status, 0);
-    EXPECT_NE(far.output.find("the commands are"), std::string::npos) << far.output;
-    EXPECT_NE(far.output.find("render"), std::string::npos) << far.output;
-    EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << far.output;
+    EXPECT_NE(far.exitCode, 0);
+    EXPECT_NE(far.out.find("the commands are"), std::string::npos) << far.out;
+    EXPECT_NE(far.out.find("render"), std::string::npos) << far.out;
+    EXPECT_EQ(far.out.find("did you mean"), std::string::npos) << far.out;
 }
 
 TEST(CommandLineMessages, MistypedOptionSuggestsTheOption) {
     const auto r = runWovenCommand("render " + kScene + " --sppp 3 -o /nonexistent/x.png");
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("woven render: error: unknown option '--sppp'; did you mean '--spp'?"), std::string::npos)
-        << r.output;
-    EXPECT_EQ(r.output.find("not expected"), std::string::npos) << r.output;
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("woven render: error: unknown option '--sppp'; did you mean '--spp'?"), std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find("not expected"), std::string::npos) << r.out;
 }
 
 TEST(CommandLineMessages, BadToneMapListsTheCurvesWithoutParserInternals) {
     const auto r = runWovenCommand("render " + kScene + " --tone-map filmic -o /nonexistent/x.png");
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.output.find("--tone-map: 'filmic' is not a tone curve woven has: aces, clamp or reinhard"), std::string::npos)
-        << r.output;
-    EXPECT_EQ(r.output.find("FAILED"), std::string::npos) << r.output;
-    EXPECT_EQ(r.output.find("->"), std::string::npos) << r.output;
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("--tone-map: 'filmic' is not a tone curve woven has: aces, clamp or reinhard"), std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find("FAILED"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("->"), std::string::npos) << r.out;
 }
 
 TEST(CommandLineMessages, RenderHelpHasNoPreviewOnlyOption) {
     const auto render = runWovenCommand("render --help");
-    EXPECT_EQ(render.status, 0);
-    EXPECT_EQ(render.output.find("--no-filter"), std::string::npos) << render.output;
+    EXPECT_EQ(render.exitCode, 0);
+    EXPECT_EQ(render.out.find("--no-filter"), std::string::npos) << render.out;
     const auto preview = runWovenCommand("preview --help");
-    EXPECT_NE(preview.output.find("--no-filter"), std::string::npos) << preview.output;
+    EXPECT_NE(preview.out.find("--no-filter"), std::string::npos) << preview.out;
 }
 
 // CLI11's checks let NaN through (every comparison with it is false): --exposure nan gave a black
@@ -69,9 +69,9 @@ TEST_F(NumberOptions, NonFiniteAndOutOfRangeNumbersAreRefusedNamingTheOption) {
              {"--noise-threshold", "nan", "--noise-threshold: 'nan' is not a finite number"},
              {"--noise-threshold", "-0.5", "--noise-threshold: '-0.5' is outside the range: it must be at least 0"}}) {
         const auto r = runWovenCommand("render " + kScene + " " + option + " " + value + " -o " + file("out.png"));
-        EXPECT_NE(r.status, 0) << option << " " << value;
-        EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
-        EXPECT_EQ(r.output.find("179769"), std::string::npos) << "the largest double in full: " << r.output;
+        EXPECT_NE(r.exitCode, 0) << option << " " << value;
+        EXPECT_NE(r.out.find(says), std::string::npos) << r.out;
+        EXPECT_EQ(r.out.find("179769"), std::string::npos) << "the largest double in full: " << r.out;
         EXPECT_FALSE(std::filesystem::exists(file("out.png")));
     }
 }
@@ -80,23 +80,23 @@ TEST_F(NumberOptions, NonFiniteAndOutOfRangeNumbersAreRefusedNamingTheOption) {
 TEST_F(NumberOptions, JsonProblemsAreSaidWithoutTheParsersTags) {
     std::ofstream(file("huge.json")) << R"({"gltf": "cloth_drape.glb", "render": {"width": 1e400}})";
     const auto scene = runWovenCommand("render " + file("huge.json") + " -o " + file("out.png"));
-    EXPECT_NE(scene.status, 0);
-    EXPECT_NE(scene.output.find("huge.json: not valid JSON: the number 1e400 is beyond the range of a double"),
-              std::string::npos) << scene.output;
-    EXPECT_EQ(scene.output.find("json.exception"), std::string::npos) << scene.output;
+    EXPECT_NE(scene.exitCode, 0);
+    EXPECT_NE(scene.out.find("huge.json: not valid JSON: the number 1e400 is beyond the range of a double"),
+              std::string::npos) << scene.out;
+    EXPECT_EQ(scene.out.find("json.exception"), std::string::npos) << scene.out;
     const auto woven = runWovenCommand("render " + kScene + " --woven 'Cloth={\"ex\": 1e400' -o " + file("out.png"));
-    EXPECT_NE(woven.status, 0);
-    EXPECT_NE(woven.output.find("--woven Cloth: not valid JSON"), std::string::npos) << woven.output;
-    EXPECT_EQ(woven.output.find("json.exception"), std::string::npos) << woven.output;
+    EXPECT_NE(woven.exitCode, 0);
+    EXPECT_NE(woven.out.find("--woven Cloth: not valid JSON"), std::string::npos) << woven.out;
+    EXPECT_EQ(woven.out.find("json.exception"), std::string::npos) << woven.out;
     std::ofstream(file("broken.gltf")) << R"({"asset": {"version": "2.0"},)";
     const auto gltf = runWovenCommand("render " + file("broken.gltf") + " -o " + file("out.png"));
-    EXPECT_NE(gltf.status, 0);
-    EXPECT_NE(gltf.output.find("broken.gltf: cannot read glTF"), std::string::npos) << gltf.output;
-    EXPECT_EQ(gltf.output.find("json.exception"), std::string::npos) << gltf.output;
+    EXPECT_NE(gltf.exitCode, 0);
+    EXPECT_NE(gltf.out.find("broken.gltf: cannot read glTF"), std::string::npos) << gltf.out;
+    EXPECT_EQ(gltf.out.find("json.exception"), std::string::npos) << gltf.out;
     std::ofstream(file("query.jsonl")) << R"({"material": {"ex": 1e400}})" << "\n";
     const auto eval = runWovenCommand("bsdf-eval < " + file("query.jsonl"));
-    EXPECT_NE(eval.output.find("not valid JSON: the number 1e400"), std::string::npos) << eval.output;
-    EXPECT_EQ(eval.output.find("json.exception"), std::string::npos) << eval.output;
+    EXPECT_NE(eval.out.find("not valid JSON: the number 1e400"), std::string::npos) << eval.out;
+    EXPECT_EQ(eval.out.find("json.exception"), std::string::npos) << eval.out;
 }
 
 TEST(CommandLineMessages, ClosestNameTakesOnlyTyposOfTheWord) {

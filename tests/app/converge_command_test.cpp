@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "woven_command.h"
+#include "../common/run_woven.h"
 
 namespace {
 
@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-using Result = woven::test::CommandResult;
+using Result = woven::test::RunResult;
 Result run(const std::string& args) { return woven::test::runWovenCommand(args); }
 
 class ConvergeCommand : public woven::test::CommandTest {
@@ -52,8 +52,8 @@ TEST_F(ConvergeCommand, TimesThatSetNoLimitAreRefusedByName) {
     };
     for (const auto& [options, message] : refused) {
         const Result r = converge(s, options);
-        EXPECT_NE(r.status, 0) << options;
-        EXPECT_THAT(r.output, HasSubstr(message)) << options;
+        EXPECT_NE(r.exitCode, 0) << options;
+        EXPECT_THAT(r.out, HasSubstr(message)) << options;
     }
     EXPECT_FALSE(fs::exists(file("out")));
 }
@@ -61,20 +61,20 @@ TEST_F(ConvergeCommand, TimesThatSetNoLimitAreRefusedByName) {
 TEST_F(ConvergeCommand, AnotherSceneOfTheSameNameGetsItsOwnReference) {
     const std::string dim = scene("dim", 0.1f), bright = scene("bright", 2.0f);
     Result r = converge(dim);
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, HasSubstr("converge: rendering reference"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("converge: rendering reference"));
 
     r = converge(bright);
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, HasSubstr("converge: rendering reference"));
-    EXPECT_THAT(r.output, Not(HasSubstr("reusing")));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("converge: rendering reference"));
+    EXPECT_THAT(r.out, Not(HasSubstr("reusing")));
 
     // The same content again, and only that, reuses its own.
     r = converge(dim);
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, HasSubstr("converge: reusing reference"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("converge: reusing reference"));
     r = converge(dim, "--reference-time 0.25");
-    EXPECT_THAT(r.output, Not(HasSubstr("reusing")));
+    EXPECT_THAT(r.out, Not(HasSubstr("reusing")));
 }
 
 }  // namespace

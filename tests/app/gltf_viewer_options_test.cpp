@@ -10,7 +10,7 @@
 
 #include "../scene/gltf_builder.h"
 #include "image_io.h"
-#include "woven_command.h"
+#include "../common/run_woven.h"
 
 namespace {
 
@@ -20,7 +20,7 @@ using ::testing::Not;
 using json = nlohmann::json;
 using woven::test::GltfBuilder;
 
-using Result = woven::test::CommandResult;
+using Result = woven::test::RunResult;
 Result run(const std::string& args) { return woven::test::runWovenCommand(args); }
 
 constexpr const char* kFrame = " --width 16 --height 12 --spp 2 --integrator path --environment 0";
@@ -79,8 +79,8 @@ protected:
         const std::string out = file("out.exr");
         fs::remove(out);
         const Result r = run("render " + scene + kFrame + " " + options + " -o " + out);
-        EXPECT_EQ(r.status, 0) << r.output;
-        return r.status == 0 ? meanLuminance(out) : -1.0;
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return r.exitCode == 0 ? meanLuminance(out) : -1.0;
     }
 };
 
@@ -92,8 +92,8 @@ TEST_F(GltfViewerOptions, CameraChoosesByIndexNameOrNodeOrFramesTheScene) {
     EXPECT_EQ(frame(file("two.gltf"), "--camera Away"), 0.0);
 
     const Result bad = run("render " + file("two.gltf") + kFrame + " --camera 5 -o " + file("bad.exr"));
-    EXPECT_NE(bad.status, 0);
-    EXPECT_THAT(bad.output, HasSubstr(file("two.gltf") + ": --camera 5: no such camera; its cameras are 0 'Away' (node "
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_THAT(bad.out, HasSubstr(file("two.gltf") + ": --camera 5: no such camera; its cameras are 0 'Away' (node "
                                       "'AwayNode'), 1 'Front' (node 'FrontNode'), or auto"));
     EXPECT_FALSE(fs::exists(file("bad.exr")));
 }
@@ -101,14 +101,14 @@ TEST_F(GltfViewerOptions, CameraChoosesByIndexNameOrNodeOrFramesTheScene) {
 TEST_F(GltfViewerOptions, ListPrintsCamerasMaterialsMeshesAndLightsAndRendersNothing) {
     writeScene(file("two.gltf"), Card{});
     const Result r = run("render " + file("two.gltf") + " --list");
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, HasSubstr("cameras:\n  0  'Away'  node 'AwayNode'\n  1  'Front'  node 'FrontNode'\n"));
-    EXPECT_THAT(r.output, HasSubstr("materials:\n  'Lamp'  glTF\n  'Black'  glTF\n"));
-    EXPECT_THAT(r.output, HasSubstr("meshes:\n  'node3/LampQuad/0'  2 triangles  material 'Lamp'\n"
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("cameras:\n  0  'Away'  node 'AwayNode'\n  1  'Front'  node 'FrontNode'\n"));
+    EXPECT_THAT(r.out, HasSubstr("materials:\n  'Lamp'  glTF\n  'Black'  glTF\n"));
+    EXPECT_THAT(r.out, HasSubstr("meshes:\n  'node3/LampQuad/0'  2 triangles  material 'Lamp'\n"
                                     "  'node4/CardQuad/0'  2 triangles  material 'Black'\n"));
-    EXPECT_THAT(r.output, HasSubstr("lights:\n  point  'Bulb'  intensity 1 1 1 W/sr\n"));
+    EXPECT_THAT(r.out, HasSubstr("lights:\n  point  'Bulb'  intensity 1 1 1 W/sr\n"));
     EXPECT_FALSE(fs::exists("two.exr"));  // no frame, not even under the default name
-    EXPECT_THAT(r.output, Not(HasSubstr("wrote")));
+    EXPECT_THAT(r.out, Not(HasSubstr("wrote")));
 }
 
 // glTF viewers cull the back of a single-sided surface: the camera sees the lamp through it.
@@ -142,21 +142,21 @@ TEST_F(GltfViewerOptions, MissingTextureFileIsAWarningUnlessStrictAndBrokenOnesS
     const std::string missing = write("missing.gltf", "gone.png");
     const std::string out = file("out.exr");
     const Result warned = run("render " + missing + kFrame + " -o " + out);
-    ASSERT_EQ(warned.status, 0) << warned.output;
-    EXPECT_THAT(warned.output, HasSubstr("warning: " + missing + ": material 'Lamp'.emissiveTexture: texture file "
+    ASSERT_EQ(warned.exitCode, 0) << warned.out;
+    EXPECT_THAT(warned.out, HasSubstr("warning: " + missing + ": material 'Lamp'.emissiveTexture: texture file "
                                          "'gone.png' does not exist (looked in '" + dir_.string() +
                                          "'); drawn without it (--strict makes this an error)\n"));
     EXPECT_GT(meanLuminance(out), 0.05);  // the emissive factor alone, as under a white texture
 
     const Result strict = run("render " + missing + kFrame + " --strict -o " + file("strict.exr"));
-    EXPECT_NE(strict.status, 0);
-    EXPECT_THAT(strict.output, HasSubstr(missing + ": material 'Lamp'.emissiveTexture: texture file 'gone.png' does not exist"));
+    EXPECT_NE(strict.exitCode, 0);
+    EXPECT_THAT(strict.out, HasSubstr(missing + ": material 'Lamp'.emissiveTexture: texture file 'gone.png' does not exist"));
     EXPECT_FALSE(fs::exists(file("strict.exr")));
 
     std::ofstream(file("junk.png")) << "not a png at all";
     const Result corrupt = run("render " + write("corrupt.gltf", "junk.png") + kFrame + " -o " + file("corrupt.exr"));
-    EXPECT_NE(corrupt.status, 0);
-    EXPECT_THAT(corrupt.output, HasSubstr("junk.png': the image is an unknown format"));
+    EXPECT_NE(corrupt.exitCode, 0);
+    EXPECT_THAT(corrupt.out, HasSubstr("junk.png': the image is an unknown format"));
     EXPECT_FALSE(fs::exists(file("corrupt.exr")));
 }
 

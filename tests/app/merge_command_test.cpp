@@ -11,13 +11,13 @@
 #include <string>
 
 #include "image_io.h"
-#include "woven_command.h"
+#include "../common/run_woven.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-using Result = woven::test::CommandResult;
+using Result = woven::test::RunResult;
 Result run(const std::string& args) { return woven::test::runWovenCommand(args); }
 
 class MergeCommand : public woven::test::CommandTest {
@@ -30,7 +30,7 @@ protected:
         const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
         EXPECT_EQ(run("render " + scene + " " + options + " --first-sample " + std::to_string(first) + " --spp " +
                       std::to_string(spp) + " -o " + path)
-                      .status,
+                      .exitCode,
                   0);
         return path;
     }
@@ -39,7 +39,7 @@ protected:
 TEST_F(MergeCommand, DisjointRangesMergeToTheUnionBitForBit) {
     const std::string a = render("a.exr", 0, 2), b = render("b.exr", 2, 3), c = render("c.exr", 5, 1);
     const std::string all = render("all.exr", 0, 6);
-    ASSERT_EQ(run("merge " + c + " " + a + " " + b + " --expect-samples 6 -o " + file("merged.exr")).status, 0);
+    ASSERT_EQ(run("merge " + c + " " + a + " " + b + " --expect-samples 6 -o " + file("merged.exr")).exitCode, 0);
 
     const woven::ExrImage m = woven::readExr(file("merged.exr")), u = woven::readExr(all);
     ASSERT_EQ(m.image.pixels.size(), u.image.pixels.size());
@@ -57,16 +57,16 @@ TEST_F(MergeCommand, DisjointRangesMergeToTheUnionBitForBit) {
 
     // A merged frame merges again, exactly: ranges of ranges.
     const std::string d = render("d.exr", 6, 2);
-    ASSERT_EQ(run("merge " + file("merged.exr") + " " + d + " -o " + file("again.exr")).status, 0);
+    ASSERT_EQ(run("merge " + file("merged.exr") + " " + d + " -o " + file("again.exr")).exitCode, 0);
     EXPECT_EQ(woven::readExr(file("again.exr")).sampleSums, woven::readExr(render("all8.exr", 0, 8)).sampleSums);
 }
 
 TEST_F(MergeCommand, MissingSamplesAreNamedAndGoToThePartialFrame) {
     const std::string a = render("a.exr", 0, 2), c = render("c.exr", 5, 1);
     const Result r = run("merge " + a + " " + c + " --expect-samples 8 -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("frame.exr not written: samples 2-4, 6-7 missing"));
-    EXPECT_THAT(r.output, testing::HasSubstr("frame.partial.exr from samples 0-1, 5"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("frame.exr not written: samples 2-4, 6-7 missing"));
+    EXPECT_THAT(r.out, testing::HasSubstr("frame.partial.exr from samples 0-1, 5"));
     EXPECT_FALSE(fs::exists(file("frame.exr")));
     const woven::ExrImage partial = woven::readExr(file("frame.partial.exr"));
     EXPECT_EQ(partial.sampleCount.front(), 3.0f);
@@ -74,7 +74,7 @@ TEST_F(MergeCommand, MissingSamplesAreNamedAndGoToThePartialFrame) {
 
     // Once the rest is there, the frame is written and the stale partial frame goes.
     const std::string b = render("b.exr", 2, 3), d = render("d.exr", 6, 2);
-    ASSERT_EQ(run("merge " + a + " " + b + " " + c + " " + d + " --expect-samples 8 -o " + file("frame.exr")).status, 0);
+    ASSERT_EQ(run("merge " + a + " " + b + " " + c + " " + d + " --expect-samples 8 -o " + file("frame.exr")).exitCode, 0);
     EXPECT_TRUE(fs::exists(file("frame.exr")));
     EXPECT_FALSE(fs::exists(file("frame.partial.exr")));
 }
@@ -82,23 +82,23 @@ TEST_F(MergeCommand, MissingSamplesAreNamedAndGoToThePartialFrame) {
 TEST_F(MergeCommand, OverlapsAndStrangersAreRefusedAndWriteNothing) {
     const std::string a = render("a.exr", 0, 3), b = render("b.exr", 2, 2);
     Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("(samples 0-2) and " + b + " (samples 2-3) overlap"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("(samples 0-2) and " + b + " (samples 2-3) overlap"));
 
     r = run("merge " + a + " --expect-samples 2 -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("holds samples 0-2, beyond the 2 expected"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("holds samples 0-2, beyond the 2 expected"));
 
     // A file without sample sums (a PNG, or an EXR of another tool) cannot be merged.
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
-    ASSERT_EQ(run("render " + scene + " --width 48 --height 36 --spp 1 -o " + file("c.png")).status, 0);
+    ASSERT_EQ(run("render " + scene + " --width 48 --height 36 --spp 1 -o " + file("c.png")).exitCode, 0);
     r = run("merge " + a + " " + file("c.png") + " -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("c.png"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("c.png"));
 
     r = run("merge --expect-samples 4 -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("no part files, samples 0-3 missing"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("no part files, samples 0-3 missing"));
     EXPECT_FALSE(fs::exists(file("frame.exr")));
     EXPECT_FALSE(fs::exists(file("frame.partial.exr")));
 }
@@ -112,13 +112,13 @@ TEST_F(MergeCommand, RangesPast32BitsAreCheckedAndMergeBitForBit) {
     const std::string a = render("a.exr", base, 2, kSmall);
     const std::string b = render("b.exr", base + 1, 2, kSmall);
     Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("(samples 2147483646-2147483647) and " + b +
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("(samples 2147483646-2147483647) and " + b +
                                              " (samples 2147483647-2147483648) overlap"));
     EXPECT_FALSE(fs::exists(file("frame.exr")));
 
     const std::string c = render("c.exr", base + 2, 1, kSmall);
-    ASSERT_EQ(run("merge " + a + " " + c + " -o " + file("frame.exr")).status, 0);
+    ASSERT_EQ(run("merge " + a + " " + c + " -o " + file("frame.exr")).exitCode, 0);
     const woven::ExrImage m = woven::readExr(file("frame.exr"));
     const woven::ExrImage u = woven::readExr(render("all.exr", base, 3, kSmall));
     ASSERT_TRUE(m.samples);
@@ -133,11 +133,11 @@ TEST_F(MergeCommand, RangesPast32BitsAreCheckedAndMergeBitForBit) {
     EXPECT_EQ(far.samples->first, 4294967295);
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
     r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387904 -o " + file("x.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("--first-sample: '4611686018427387904' is not a whole number from 0 to"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("--first-sample: '4611686018427387904' is not a whole number from 0 to"));
     r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387900 --spp 5 -o " + file("x.exr"));
-    EXPECT_NE(r.status, 0);
-    EXPECT_THAT(r.output, testing::HasSubstr("--first-sample 4611686018427387900 with --spp 5 ends past sample index 2^62"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr("--first-sample 4611686018427387900 with --spp 5 ends past sample index 2^62"));
     EXPECT_FALSE(fs::exists(file("x.exr")));
 }
 
@@ -156,8 +156,8 @@ TEST_F(MergeCommand, PartsOfDifferentFramesAreRefusedNamingWhatDiffers) {
     for (const auto& [options, difference] : others) {
         const std::string b = render("b.exr", 1, 1, options);
         const Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
-        EXPECT_NE(r.status, 0) << options;
-        EXPECT_THAT(r.output, testing::HasSubstr(a + " and " + b + " are parts of different frames: " + difference))
+        EXPECT_NE(r.exitCode, 0) << options;
+        EXPECT_THAT(r.out, testing::HasSubstr(a + " and " + b + " are parts of different frames: " + difference))
             << options;
         EXPECT_FALSE(fs::exists(file("frame.exr"))) << options;
     }
@@ -165,7 +165,7 @@ TEST_F(MergeCommand, PartsOfDifferentFramesAreRefusedNamingWhatDiffers) {
     // its own noise threshold).
     const std::string b = render("b.exr", 1, 2, kSmall + " --noise-threshold 0.3");
     const Result r = run("merge " + a + " " + b + " -o " + file("frame.exr"));
-    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.exitCode, 0) << r.out;
     ASSERT_TRUE(woven::readExr(file("frame.exr")).frame);
     EXPECT_EQ(woven::readExr(file("frame.exr")).frame->seed, 11u);
 }
@@ -180,9 +180,9 @@ TEST_F(MergeCommand, PartsWithoutAnIdentityMergeWithOneWarning) {
         woven::writeExr(path, old, woven::ExrPrecision::Float);
     }
     Result r = run("merge " + a + " " + b + " " + c + " -o " + file("frame.exr"));
-    EXPECT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, testing::HasSubstr("warning: " + b + " and 1 more record no scene, seed or integrator"));
-    EXPECT_EQ(r.output.find("warning:"), r.output.rfind("warning:")) << r.output;
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, testing::HasSubstr("warning: " + b + " and 1 more record no scene, seed or integrator"));
+    EXPECT_EQ(r.out.find("warning:"), r.out.rfind("warning:")) << r.out;
     EXPECT_FALSE(woven::readExr(file("frame.exr")).frame);
 
     const std::string picks[] = {"auto: path", "auto: bdpt"};
@@ -193,8 +193,8 @@ TEST_F(MergeCommand, PartsWithoutAnIdentityMergeWithOneWarning) {
         woven::writeExr(i == 0 ? a : b, part, woven::ExrPrecision::Float);
     }
     r = run("merge " + a + " " + b + " -o " + file("auto.exr"));
-    EXPECT_EQ(r.status, 0) << r.output;
-    EXPECT_THAT(r.output, testing::HasSubstr("note: --integrator auto chose differently"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, testing::HasSubstr("note: --integrator auto chose differently"));
     ASSERT_TRUE(woven::readExr(file("auto.exr")).frame);
     EXPECT_EQ(woven::readExr(file("auto.exr")).frame->integrator, "auto");
 }

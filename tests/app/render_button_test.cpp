@@ -26,7 +26,7 @@ using test::TempDir;
 int run(const std::string& args, std::string* errors = nullptr) {
     // One file per test process: CTest runs this suite's tests side by side.
     const std::string errorFile = testing::TempDir() + "woven_render_button_stderr_" + std::to_string(::getpid()) + ".txt";
-    const std::string cmd = std::string(WOVEN_BINARY) + " " + args + " 2>" + errorFile + " >/dev/null";
+    const std::string cmd = std::string(WOVEN_EXECUTABLE) + " " + args + " 2>" + errorFile + " >/dev/null";
     const int status = std::system(cmd.c_str());
     if (errors) {
         std::ifstream in(errorFile);

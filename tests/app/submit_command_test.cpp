@@ -38,7 +38,7 @@ Result shell(const std::string& command) {
 }
 
 Result woven(const std::vector<std::string>& args) {
-    std::vector<std::string> words = {WOVEN_BINARY};
+    std::vector<std::string> words = {WOVEN_EXECUTABLE};
     words.insert(words.end(), args.begin(), args.end());
     return shell(shellCommand(words));
 }
@@ -210,7 +210,7 @@ TEST(SubmitCommand, BadRequestsFailBeforeAnythingIsSubmitted) {
     fails({"submit", scene, "--tasks", "2", "--woven", "Nope={}", "-o", out}, "'Nope' names nothing");
     fails({"submit", scene, "--tasks", "2", "--first-sample", "3", "-o", out}, "--first-sample");
     // Without sbatch on PATH, nothing to submit with: a clear error.
-    const Result noSlurm = shell("PATH=/nonexistent " + shellCommand({WOVEN_BINARY, "submit", scene, "--tasks", "2", "-o", out}));
+    const Result noSlurm = shell("PATH=/nonexistent " + shellCommand({WOVEN_EXECUTABLE, "submit", scene, "--tasks", "2", "-o", out}));
     EXPECT_NE(noSlurm.status, 0);
     EXPECT_THAT(noSlurm.output, testing::HasSubstr("sbatch: cannot run it"));
     EXPECT_FALSE(fs::exists(out));
