@@ -8,6 +8,7 @@
 
 #include "material_json.h"
 #include "untrusted_json.h"
+#include "uv_precision.h"
 #include "woven_material.h"
 #include "woven_params_json.h"
 
@@ -91,10 +92,26 @@ ShadingInput flatSurface(const glm::dvec2& uv, const glm::vec3& wo) {
     return in;
 }
 
-nlohmann::json evalQuery(const WovenMaterial& material, const nlohmann::json& query) {
+nlohmann::json evalQuery(const WovenMaterial& material, const nlohmann::json& query, bool& warnedFarUv) {
     const glm::vec3 wi = readDirection(query, "wi"), wo = readDirection(query, "wo");
-    const auto shading = material.shade(flatSurface(readUv(query), wo));
+    ShadingInput in = flatSurface(readUv(query), wo);
     nlohmann::json out;
+    // A uv too large for a double to resolve a thread (uv_precision.h) is answered by the far field.
+    if (!resolvesThreads(in.uv, resolvedUvLimit<double>(material.params().repeat))) {
+        in.uvSpacing = uvSpacing<double>(in.uv);
+        if (const auto filtered = material.shadeFiltered(in)) {
+            if (!warnedFarUv)
+                std::cerr << "warning: uv (" << in.uv.x << ", " << in.uv.y
+                          << ") and larger cannot resolve the material's threads in double precision; answered with the weave's far field\n";
+            warnedFarUv = true;
+            const glm::vec3 f = filtered->eval(wo, wi);
+            out["f"] = {f.r, f.g, f.b};
+            out["pdf"] = filtered->pdf(wo, wi);
+            out["yarn"] = "far";
+            return out;
+        }
+    }
+    const auto shading = material.shade(in);
     if (!shading) {
         out["f"] = {0.0, 0.0, 0.0};
         out["pdf"] = 0.0;
@@ -120,7 +137,7 @@ std::string BsdfEval::answer(std::string_view line) {
     const nlohmann::json query = parseUntrustedJson(line);
     if (!query.is_object()) throw std::invalid_argument("each line must be a JSON object");
     if (!query.contains("material")) throw std::invalid_argument("missing 'material'");
-    return evalQuery(materials_->get(query.at("material")), query).dump();
+    return evalQuery(materials_->get(query.at("material")), query, warnedFarUv_).dump();
 }
 
 }  // namespace woven

@@ -1,9 +1,10 @@
 #pragma once
 // `woven bsdf-eval`'s answer to one line of its input: a JSON query
 //   {"material": {...}, "uv": [u, v], "wi": [x, y, z], "wo": [x, y, z]}
-// in, {"f": [r, g, b], "pdf": p, "yarn": "weft|warp|gap"} out. The lines come from anyone's
-// program, so each is bounded (length, JSON depth) and every problem is an exception with a
-// message, never a crash.
+// in, {"f": [r, g, b], "pdf": p, "yarn": "weft|warp|gap|far"} out ("far": a uv too large for a
+// double to place within a quarter thread, answered toward the weave's far field, one warning a
+// run). The lines come from anyone's program, so each is bounded (length, JSON depth) and every
+// problem is an exception with a message, never a crash.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -26,6 +27,7 @@ public:
 private:
     class MaterialCache;
     std::unique_ptr<MaterialCache> materials_;
+    bool warnedFarUv_ = false;
 };
 
 }  // namespace woven

@@ -136,6 +136,30 @@ TEST(Cli, BsdfEvalReportsTrueGap) {
 
 // Every bad line gets an {"error": ...} line naming the problem, good lines still get answers,
 // and the exit status reports the failure.
+// Issue 21: f was 0 at uv 1e20 for every direction. Uv 1e7 + 0.3037 (a double resolves it) is
+// the point 0.3037 shows, to rounding in uv x repeat (1e-3 relative); 1e20 and -1e300 (a double's
+// values 1.6e4 and more apart) are the far field, one answer for both.
+TEST(Cli, BsdfEvalAnswersHugeUvsWithTheWrappedPointOrTheFarField) {
+    const nlohmann::json material = {{"pattern", {1, 3, 1}}, {"repeat", {100, 100}}, {"yarn_width", 0.8}};
+    auto line = [&](double uv) {
+        return nlohmann::json{{"material", material}, {"uv", {uv, uv}}, {"wo", {-0.2, 0.1, 0.95}}, {"wi", {0.3, 0.2, 0.9}}};
+    };
+    int exitCode = -1;
+    const auto out = bsdfEval({line(0.3037), line(1e7 + 0.3037), line(1e20), line(-1e300)}, exitCode);
+    EXPECT_EQ(exitCode, 0);
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_EQ(out[1]["yarn"], out[0]["yarn"]);
+    for (int c = 0; c < 3; ++c) {
+        const double f0 = out[0]["f"][c].get<double>();
+        ASSERT_GT(f0, 0.0);
+        EXPECT_NEAR(out[1]["f"][c].get<double>(), f0, 1e-3 * f0);
+        EXPECT_GT(out[2]["f"][c].get<double>(), 0.0);
+        EXPECT_EQ(out[3]["f"][c], out[2]["f"][c]);
+    }
+    EXPECT_EQ(out[2]["yarn"], "far");
+    EXPECT_GT(out[2]["pdf"].get<double>(), 0.0);
+}
+
 TEST(Cli, BsdfEvalErrorLines) {
     const nlohmann::json good = {{"material", {{"cy", 0.2}}}, {"uv", {0.5, 0.5}}, {"wo", {0, 0, 1}}, {"wi", {0, 0.2, 1}}};
     nlohmann::json outOfRange = good;
