@@ -15,9 +15,12 @@
 #include "gltf_builder.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
+#include "../common/load_error.h"
 
 namespace woven {
 namespace {
+
+using test::loadError;
 
 using ::testing::HasSubstr;
 using json = nlohmann::json;
@@ -45,15 +48,6 @@ struct Grid {
             }
     }
 };
-
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 std::string uncompressed(const TempDir& dir, const Grid& grid) {
     GltfBuilder g;

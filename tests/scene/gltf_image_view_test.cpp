@@ -7,9 +7,12 @@
 #include "gltf_builder.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
+#include "../common/load_error.h"
 
 namespace woven {
 namespace {
+
+using test::loadError;
 
 using ::testing::HasSubstr;
 
@@ -27,15 +30,6 @@ test::GltfBuilder texturedTriangle(int* view) {
     const int mesh = b.addMesh({{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv}}}, {"material", 0}});
     b.setScene({b.addNode({{"mesh", mesh}})});
     return b;
-}
-
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(loaded)";
 }
 
 TEST(GltfImageView, AViewPastItsBufferIsRefusedInGlbAndGltf) {

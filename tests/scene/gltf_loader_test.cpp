@@ -12,9 +12,12 @@
 #include "scene_camera.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
+#include "../common/load_error.h"
 
 namespace woven {
 namespace {
+
+using test::loadError;
 
 using test::GltfBuilder;
 using test::TempDir;
@@ -37,15 +40,6 @@ int triangleMesh(GltfBuilder& b, json extraAttributes = json::object(), int mate
     primitive["attributes"].update(extraAttributes);
     if (material >= 0) primitive["material"] = material;
     return b.addMesh(primitive, "Tri");
-}
-
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 json quaternion(const glm::vec3& axis, float degrees) {
@@ -190,6 +184,87 @@ TEST(GltfMeshes, TriangleStripAndFan) {
     for (const auto& n : scene.meshes[0].normals) expectNear(n, {0, 0, -1});  // a wrong swap would cancel
     EXPECT_EQ(scene.meshes[1].triangles, (std::vector<glm::uvec3>{{1, 2, 0}, {2, 3, 0}}));
     for (const auto& n : scene.meshes[1].normals) expectNear(n, {0, 0, 1});
+}
+
+// EXT_mesh_gpu_instancing: a unit quad placed 9 times in a 3 x 3 grid, 2 m apart, by per-instance
+// TRANSLATION; instance 4 (the centre) also turned 90 degrees about z and scaled by 0.5.
+int instancedQuads(GltfBuilder& b, const std::vector<glm::vec3>& translations, const std::vector<glm::vec4>& rotations,
+                   const std::vector<glm::vec3>& scales) {
+    const std::vector<glm::vec3> quad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(quad)}}},
+                                {"indices", b.addIndices({0, 1, 2, 0, 2, 3})}}, "Quad");
+    json attributes = {{"TRANSLATION", b.addVec3(translations)}};
+    if (!rotations.empty()) attributes["ROTATION"] = b.addVec4(rotations);
+    if (!scales.empty()) attributes["SCALE"] = b.addVec3(scales);
+    b.useExtension("EXT_mesh_gpu_instancing", true);
+    return b.addNode({{"mesh", mesh}, {"translation", {0, 0, -5}},
+                      {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", attributes}}}}}});
+}
+
+TEST(GltfMeshes, GpuInstancingPlacesEveryInstanceInTheNodesSpace) {
+    TempDir dir;
+    GltfBuilder b;
+    std::vector<glm::vec3> translations, scales(9, glm::vec3(1.0f));
+    std::vector<glm::vec4> rotations(9, glm::vec4(0, 0, 0, 1));
+    for (int i = 0; i < 9; ++i) translations.emplace_back(2.0f * float(i % 3), 2.0f * float(i / 3), 0.0f);
+    const json q = quaternion({0, 0, 1}, 90);
+    rotations[4] = glm::vec4(q[0].get<float>(), q[1].get<float>(), q[2].get<float>(), q[3].get<float>());
+    scales[4] = glm::vec3(0.5f);
+    b.setScene({instancedQuads(b, translations, rotations, scales)});
+    b.writeGltf(dir.file("instanced.gltf"));
+    const SceneDescription scene = loadScene(dir.file("instanced.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 9u);  // one copy per instance, as many triangles as 9 quads
+    for (int i = 0; i < 9; ++i) {
+        const Mesh& m = scene.meshes[size_t(i)];
+        ASSERT_EQ(m.triangles.size(), 2u);
+        EXPECT_EQ(m.name, "node0/Quad/0 instance " + std::to_string(i));
+        EXPECT_EQ(m.nodePath, std::vector<std::string>{"node0"});  // woven by the node's name, every instance
+        if (i == 4) continue;
+        // Corner (1,1,0) of instance i: its translation, then the node's (0,0,-5).
+        expectNear(m.positions[2], translations[size_t(i)] + glm::vec3(1, 1, -5));
+    }
+    // The centre: (1,0,0) scaled to (0.5,0,0), turned to (0,0.5,0), moved to (2,2.5,-5).
+    expectNear(scene.meshes[4].positions[1], {2, 2.5f, -5});
+    expectNear(scene.meshes[4].positions[2], {1.5f, 2.5f, -5});  // (1,1,0) -> (0.5,0.5) -> (-0.5,0.5)
+    for (const glm::vec3& n : scene.meshes[4].normals) expectNear(n, {0, 0, 1});
+    // The 9 quads do not overlap: each instance's bounds are apart from every other's.
+    for (int i = 0; i < 9; ++i)
+        for (int j = i + 1; j < 9; ++j) {
+            const glm::vec3 a = scene.meshes[size_t(i)].positions[0] + scene.meshes[size_t(i)].positions[2];
+            const glm::vec3 c = scene.meshes[size_t(j)].positions[0] + scene.meshes[size_t(j)].positions[2];
+            EXPECT_GT(glm::length(a - c) / 2, 1.0f) << i << " and " << j;
+        }
+}
+
+TEST(GltfMeshes, GpuInstancingMistakesAndTheLimitNameTheNode) {
+    TempDir dir;
+    {
+        GltfBuilder b;
+        b.setScene({instancedQuads(b, std::vector<glm::vec3>(3), std::vector<glm::vec4>(2, glm::vec4(0, 0, 0, 1)), {})});
+        b.writeGltf(dir.file("counts.gltf"));
+        EXPECT_THAT(loadError(dir.file("counts.gltf")),
+                    HasSubstr("node 'node0': EXT_mesh_gpu_instancing: TRANSLATION, ROTATION and SCALE must have one element per instance"));
+    }
+    {
+        GltfBuilder b;
+        b.setScene({instancedQuads(b, std::vector<glm::vec3>(2), std::vector<glm::vec4>(2, glm::vec4(0)), {})});
+        b.writeGltf(dir.file("zero.gltf"));
+        EXPECT_THAT(loadError(dir.file("zero.gltf")), HasSubstr("ROTATION 0 is a zero quaternion"));
+    }
+    {
+        // 4096 triangles (12288 one-byte indices) times 4097 instances: just past 2^24, refused
+        // from the counts before a triangle is read.
+        GltfBuilder b;
+        const std::vector<uint8_t> indices(12288, 0);
+        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(kTriangle)}}},
+                                    {"indices", b.addAccessor(indices.data(), indices.size(), test::kUnsignedByte, "SCALAR", indices.size())}});
+        b.useExtension("EXT_mesh_gpu_instancing", true);
+        const int t = b.addVec3(std::vector<glm::vec3>(4097));
+        b.setScene({b.addNode({{"mesh", mesh}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t}}}}}}}})});
+        b.writeGltf(dir.file("many.gltf"));
+        EXPECT_THAT(loadError(dir.file("many.gltf")),
+                    HasSubstr("4097 instances of up to 4096 triangles bring the file's instanced triangles past woven's limit of 16777216"));
+    }
 }
 
 TEST(GltfMeshes, QuantizedAttributes) {

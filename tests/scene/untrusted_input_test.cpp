@@ -15,23 +15,17 @@
 #include "scene_loader.h"
 #include "temp_dir.h"
 #include "untrusted_json.h"
+#include "../common/load_error.h"
 
 namespace woven {
 namespace {
+
+using test::loadError;
 
 using test::GltfBuilder;
 using test::TempDir;
 using ::testing::HasSubstr;
 using json = nlohmann::json;
-
-std::string loadError(const std::string& path, const LoadOptions& options = {}) {
-    try {
-        loadScene(path, options);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 std::string nested(size_t depth) { return std::string(depth, '[') + std::string(depth, ']'); }
 

@@ -14,24 +14,18 @@
 #include "scene_lighting.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
+#include "../common/load_error.h"
 
 namespace woven {
 namespace {
+
+using test::loadError;
 
 using test::GltfBuilder;
 using test::TempDir;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using json = nlohmann::json;
-
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 // A triangle seen by a camera on node `cameraNode`, and lit by `lights` (KHR_lights_punctual) on
 // a node at `lightPosition`.
