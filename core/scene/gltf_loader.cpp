@@ -11,8 +11,10 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -40,7 +42,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_mesh_quantization", "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform",
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp", "EXT_mesh_gpu_instancing",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
@@ -113,6 +115,12 @@ constexpr float kLumensPerWatt = 683.0f;
 // A camera's aspectRatio (width / height) outside [kMinCameraAspect, 1 / kMinCameraAspect] is
 // no picture anyone means: a line of pixels.
 constexpr double kMinCameraAspect = 1.0 / 64.0;
+
+// EXT_mesh_gpu_instancing is expanded into one world-space mesh per instance (Mesh is world
+// space for every consumer: Embree, lights, the preview, export), so the instances' triangles
+// cost what as many copies do. A file's instances x triangles beyond this (16 M: about 3 GiB of
+// vertices and BVH) is refused before anything is expanded.
+constexpr size_t kMaxInstancedTriangles = size_t(1) << 24;
 
 bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -448,19 +456,89 @@ private:
         const size_t first = scene_.meshes.size();
         // A node's weights override its mesh's; missing ones are 0.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
-        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            const std::string name = nodeName + "/" + nameOr(mesh.name, "mesh", node.mesh) + "/" + std::to_string(p);
-            try {
-                addPrimitive(mesh.primitives[p], node.skin >= 0 ? skinMatrices(node.skin, nodeName) : std::vector<glm::mat4>{},
-                             world, weights, name);
-            } catch (const AccessorError& e) {
-                fail("mesh '" + name + "': " + e.what());
+        const std::vector<glm::mat4> joints = node.skin >= 0 ? skinMatrices(node.skin, nodeName) : std::vector<glm::mat4>{};
+        const std::optional<std::vector<glm::mat4>> instances = instanceMatrices(node, mesh, nodeName);
+        for (size_t k = 0; k < (instances ? instances->size() : 1); ++k) {
+            // An instance's TRS applies in the node's space; a skin, which ignores the node, is placed by it alone.
+            const glm::mat4 placement = instances ? (*instances)[k] : glm::mat4(1.0f);
+            std::vector<glm::mat4> placedJoints = joints;
+            for (glm::mat4& j : placedJoints) j = placement * j;
+            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+                const std::string name = nodeName + "/" + nameOr(mesh.name, "mesh", node.mesh) + "/" + std::to_string(p) +
+                                         (instances ? " instance " + std::to_string(k) : "");
+                try {
+                    addPrimitive(mesh.primitives[p], placedJoints, world * placement, weights, name);
+                } catch (const AccessorError& e) {
+                    fail("mesh '" + name + "': " + e.what());
+                }
             }
         }
         for (size_t m = first; m < scene_.meshes.size(); ++m) {
             scene_.meshes[m].meshName = nameOr(mesh.name, "mesh", node.mesh);
             scene_.meshes[m].nodePath = nodePath;
         }
+    }
+
+    // EXT_mesh_gpu_instancing's per-instance TRANSLATION, ROTATION (a quaternion, perhaps normalized
+    // integers) and SCALE as matrices, or none when the node is not instanced.
+    std::optional<std::vector<glm::mat4>> instanceMatrices(const tinygltf::Node& node, const tinygltf::Mesh& mesh,
+                                                           const std::string& nodeName) {
+        const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (it == node.extensions.end()) return std::nullopt;
+        const std::string where = "node '" + nodeName + "': EXT_mesh_gpu_instancing";
+        const tinygltf::Value& attributes = it->second.Get("attributes");
+        if (!attributes.IsObject()) fail(where + " has no attributes object");
+        AccessorData trs[3];
+        const char* semantics[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+        size_t count = size_t(-1);
+        for (int a = 0; a < 3; ++a) {
+            const tinygltf::Value& index = attributes.Get(semantics[a]);
+            if (!index.IsInt() && !index.IsNumber()) continue;  // absent: identity
+            const int accessor = index.IsInt() ? index.Get<int>() : int(index.GetNumberAsDouble());
+            try {
+                trs[a] = readAccessor(model_, accessor);
+            } catch (const AccessorError& e) {
+                fail(where + " " + semantics[a] + ": " + e.what());
+            }
+            if (trs[a].components != (a == 1 ? 4 : 3))
+                fail(where + " " + semantics[a] + " must be a " + (a == 1 ? "VEC4" : "VEC3") + " accessor");
+            if (count != size_t(-1) && trs[a].count != count)
+                fail(where + ": TRANSLATION, ROTATION and SCALE must have one element per instance each (" +
+                     std::to_string(count) + " and " + std::to_string(trs[a].count) + ")");
+            count = trs[a].count;
+            for (double v : trs[a].values)
+                if (!std::isfinite(v)) fail(where + " " + semantics[a] + " holds a NaN or infinite value");
+        }
+        if (count == size_t(-1)) fail(where + " names none of TRANSLATION, ROTATION and SCALE");
+        // Each primitive's triangles as its index (or vertex) count gives them, before any is read.
+        size_t triangles = 0;
+        for (const tinygltf::Primitive& primitive : mesh.primitives) {
+            const auto position = primitive.attributes.find("POSITION");
+            const int elements = primitive.indices >= 0 ? primitive.indices
+                                 : position != primitive.attributes.end() ? position->second : -1;
+            if (elements < 0 || size_t(elements) >= model_.accessors.size()) continue;
+            const size_t n = model_.accessors[size_t(elements)].count;
+            triangles += primitive.mode < 0 || primitive.mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : n;
+        }
+        if (triangles && count > (kMaxInstancedTriangles - instancedTriangles_) / triangles)
+            fail(where + ": " + std::to_string(count) + " instances of up to " + std::to_string(triangles) +
+                 " triangles bring the file's instanced triangles past woven's limit of " +
+                 std::to_string(kMaxInstancedTriangles) + " (instances are expanded into copies; docs/LIMITS.md)");
+        instancedTriangles_ += count * triangles;
+        std::vector<glm::mat4> matrices(count);
+        for (size_t i = 0; i < count; ++i) {
+            glm::vec3 t(0.0f), s(1.0f);
+            glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+            if (trs[0].count) t = glm::vec3(trs[0].at(i, 0), trs[0].at(i, 1), trs[0].at(i, 2));
+            if (trs[1].count) {
+                r = glm::quat(float(trs[1].at(i, 3)), float(trs[1].at(i, 0)), float(trs[1].at(i, 1)), float(trs[1].at(i, 2)));
+                if (!(glm::length(r) > 0.0f)) fail(where + " ROTATION " + std::to_string(i) + " is a zero quaternion");
+                r = glm::normalize(r);
+            }
+            if (trs[2].count) s = glm::vec3(trs[2].at(i, 0), trs[2].at(i, 1), trs[2].at(i, 2));
+            matrices[i] = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+        }
+        return matrices;
     }
 
     // Each joint's matrix in the default pose: its node's world matrix times its inverse bind
@@ -725,6 +803,7 @@ private:
     EncodedImages encodedImages_;
     ImageSink imageSink_{&encodedImages_, &model_};
     std::vector<glm::mat4> nodeWorld_;
+    size_t instancedTriangles_ = 0;  // so far, against kMaxInstancedTriangles
     DroppedTriangles degenerate_, duplicate_;
     SceneDescription scene_;
 };
