@@ -191,8 +191,15 @@ void main() {
 #ifdef WOVEN_FILTER
     // Elements per pixel: from a quarter element on, fade to the averaged reflectance, so no
     // moire appears where the weave is finer than the pixels.
+    // A float uv is only known to |uv| 2^-23 (core/model/uv_precision.h): the footprint covers at
+    // least that, so a uv too large to resolve a quarter thread shows the far field, as in core.
     vec2 e = vUv * material.repeat, dedx = dux * material.repeat, dedy = duy * material.repeat;
-    float farWeight = smoothstep(0.25, 1.0, max(fwidth(e.x), fwidth(e.y)));
+    vec2 spacing = abs(e) * 1.1920929e-7;
+    float pixel = max(fwidth(e.x), fwidth(e.y)), unknown = max(spacing.x, spacing.y);
+    float farWeight = smoothstep(0.25, 1.0, max(pixel, unknown));
+    // Where the spacing passes the pixel's footprint the point is anywhere in it: the mean colour
+    // of whole periods (the coarsest mip level), as core's shadeFiltered().
+    if (unknown > pixel) dedx = vec2(1e30);
 #else
     const float farWeight = 0.0;
 #endif
@@ -220,7 +227,9 @@ void main() {
     vec3 near = vec3(0.0);
     float nearOpacity = 1.0;
     if (farWeight < 1.0) {
-        YarnPoint y = yarnAt(vUv, face);
+        // UVs that do not change across the pixel (a mesh without UVs, or with all of them equal)
+        // map no weave: solid cloth, the middle of the first element, as core shades them.
+        YarnPoint y = yarnAt(det != 0.0 ? vUv : 0.5 / material.repeat, face);
 #ifdef WOVEN_GAPS
         if (y.type == GAP && material.backing == 0) nearOpacity = 0.0;
         else

@@ -68,7 +68,8 @@ std::optional<FramedLobe<FilteredWeaveLobe>> WovenMaterial::shadeFiltered(const 
     // The footprint in weave elements: |de/dx| + |de/dy| along u and along v, as GLSL's fwidth.
     const glm::dvec2 repeat(params_.repeat);
     const glm::dvec2 dedx = kFootprintScale * in.duvdx * repeat, dedy = kFootprintScale * in.duvdy * repeat;
-    const glm::dvec2 extent = glm::max(glm::abs(dedx) + glm::abs(dedy), in.uvSpacing * repeat);
+    const glm::dvec2 pixel = glm::abs(dedx) + glm::abs(dedy), spacing = in.uvSpacing * repeat;
+    const glm::dvec2 extent = glm::max(pixel, spacing);
     const float farWeight = farFieldWeight(float(std::max(extent.x, extent.y)));
     if (!(farWeight > 0.0f)) return std::nullopt;
     const Frame tangent = faceTangentFrame(in);
@@ -84,7 +85,12 @@ std::optional<FramedLobe<FilteredWeaveLobe>> WovenMaterial::shadeFiltered(const 
     // Each side's mean colour over the footprint's extent along its threads' axis.
     // A footprint of 2^40 elements averages any thread layout (periods of up to 2^16) to within
     // 2^-24; capped there, a huge uv's spacing keeps the means' thread indices within 64 bits.
-    const glm::dvec2 e = weave_.wrapped(in.uv * repeat), half = glm::min(0.5 * extent, glm::dvec2(0x1p40));
+    // Where the uv's spacing is the larger the point is anywhere in it: whole repeats' shares and
+    // colours, not those of a box around where it rounded to (woven.frag does the same).
+    constexpr double kWholeRepeats = 0x1p40;
+    const bool unresolved = std::max(spacing.x, spacing.y) > std::max(pixel.x, pixel.y);
+    const glm::dvec2 e = weave_.wrapped(in.uv * repeat),
+                     half = unresolved ? glm::dvec2(kWholeRepeats) : glm::min(0.5 * extent, glm::dvec2(kWholeRepeats));
     const glm::vec3 colors[3] = {weave_.warp().meanColor(e.x - half.x, e.x + half.x) * in.print,
                                  weave_.weft().meanColor(e.y - half.y, e.y + half.y) * in.print, params_.backing_color};
     const WeaveFarField& far = farField(in.backSide);
