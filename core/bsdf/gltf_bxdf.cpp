@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sampling.h"
+#include "thin_film.h"
 
 namespace woven {
 
@@ -31,7 +32,25 @@ GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
       transmission_(clamp01(in.transmission)),
       transmittance_(clamp01(in.transmittance)),
       sheen_(in.sheenColor, in.sheenRoughness),
-      clearcoat_(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal) {}
+      clearcoat_(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal),
+      iridescence_(clamp01(in.iridescence)),
+      iridescenceIor_(std::max(in.iridescenceIor, 1.0f)),
+      iridescenceThickness_(std::max(in.iridescenceThickness, 0.0f)),
+      outsideIor_(1.0f + 0.5f * clamp01(in.clearcoat)) {}
+
+GltfBxdf::Fresnel GltfBxdf::fresnel(float cosTheta) const {
+    const float weight = schlickWeight(cosTheta);
+    Fresnel f{f0_ + (glm::vec3(f90_) - f0_) * weight, baseColor_ + (1.0f - baseColor_) * weight};
+    if (iridescence_ > 0.0f) {
+        // The extension's F = mix(F_schlick, F_iridescence, iridescence), the film over each base.
+        const auto film = [&](const glm::vec3& baseF0) {
+            return thinFilmFresnel(outsideIor_, iridescenceIor_, cosTheta, iridescenceThickness_, baseF0);
+        };
+        f.dielectric = glm::mix(f.dielectric, film(f0_), iridescence_);
+        f.metal = glm::mix(f.metal, film(baseColor_), iridescence_);
+    }
+    return f;
+}
 
 glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z == 0.0f) return glm::vec3(0.0f);
@@ -43,15 +62,15 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     const float len = glm::length(H);
     if (!(len > 1e-12f)) return glm::vec3(0.0f);
     const glm::vec3 h = H / len;
-    const float fresnel = schlickWeight(0.5f * len);  // wo.h = |wo + w| / 2 for unit vectors
+    const Fresnel F = fresnel(0.5f * len);  // wo.h = |wo + w| / 2 for unit vectors
     const float specular = ggx_.D(h) * ggx_.visibility(wo, w);
-    const glm::vec3 dielectricF = f0_ + (glm::vec3(f90_) - f0_) * fresnel;
+    const glm::vec3& dielectricF = F.dielectric;
 
     glm::vec3 f;
     if (reflection) {
         const glm::vec3 dielectric = (1.0f - dielectricF) * (1.0f - transmission_) * baseColor_ * kInvPi +
                                      dielectricF * specular;
-        const glm::vec3 metal = (baseColor_ + (1.0f - baseColor_) * fresnel) * specular;
+        const glm::vec3 metal = F.metal * specular;
         f = (1.0f - metallic_) * dielectric + metallic_ * metal;
     } else {
         f = (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * baseColor_ * transmittance_ * specular;
@@ -71,9 +90,9 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
 }
 
 GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
-    const float fresnel = schlickWeight(wo.z);
-    const float dielectricF = luminance(f0_ + (glm::vec3(f90_) - f0_) * fresnel);
-    const float metalF = luminance(baseColor_ + (1.0f - baseColor_) * fresnel);
+    const Fresnel F = fresnel(wo.z);
+    const float dielectricF = luminance(F.dielectric);
+    const float metalF = luminance(F.metal);
     const float below = sheen_.baseScale(wo.z) * (1.0f - clearcoat_.reflectance(wo));
     const float base = luminance(baseColor_);
     LobeChoice c;

@@ -6,7 +6,8 @@
 //   dielectric = fresnel_mix(F0, F90; (1 - T) Lambert(baseColor) + T thinBtdf, GGX)
 //   metal = conductor_fresnel(baseColor; GGX)
 //   f = clearcoat over (sheen over base), each layer scaling the one below by what it reflects.
-// F0 and F90 come from KHR_materials_ior and KHR_materials_specular. KHR_materials_anisotropy
+// F0 and F90 come from KHR_materials_ior and KHR_materials_specular; KHR_materials_iridescence
+// mixes both Fresnel terms towards a thin film's (thin_film.h). KHR_materials_anisotropy
 // makes the GGX lobe (of the base, not of the coat) rougher along x: alpha_x =
 // mix(roughness^2, 1, strength^2), alpha_y = roughness^2. Transmission is thin-walled
 // (KHR_materials_transmission without refraction): the GGX lobe mirrored through the surface,
@@ -37,6 +38,9 @@ struct GltfBxdfInputs {
     float sheenRoughness = 0.0f;
     float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
     glm::vec3 clearcoatNormal{0.0f, 0.0f, 1.0f};  // in the local frame
+    float iridescence = 0.0f;  // KHR_materials_iridescence's strength
+    float iridescenceIor = 1.3f;
+    float iridescenceThickness = 0.0f;  // nm
 };
 
 class GltfBxdf {
@@ -54,6 +58,11 @@ private:
         float specular = 1.0f, diffuse = 0.0f, transmission = 0.0f, sheen = 0.0f, clearcoat = 0.0f;
     };
     LobeChoice choose(const glm::vec3& wo) const;
+    // The dielectric's and the metal's Fresnel reflectance at cosTheta to the microfacet normal.
+    struct Fresnel {
+        glm::vec3 dielectric, metal;
+    };
+    Fresnel fresnel(float cosTheta) const;
 
     glm::vec3 baseColor_;
     float metallic_;
@@ -64,6 +73,8 @@ private:
     glm::vec3 transmittance_;
     SheenLobe sheen_;
     ClearcoatLobe clearcoat_;
+    float iridescence_, iridescenceIor_, iridescenceThickness_;
+    float outsideIor_;  // over the film: air, or the clearcoat's 1.5 as far as it covers it
 };
 
 }  // namespace woven

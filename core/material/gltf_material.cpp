@@ -54,7 +54,9 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
       clearcoatRoughnessTexture_(material.clearcoat.roughnessTexture, textures),
       clearcoatNormalTexture_(material.clearcoat.normalTexture, textures),
       transmissionTexture_(material.transmission.texture, textures),
-      thicknessTexture_(material.transmission.thicknessTexture, textures) {
+      thicknessTexture_(material.transmission.thicknessTexture, textures),
+      iridescenceTexture_(material.iridescence.texture, textures),
+      iridescenceThicknessTexture_(material.iridescence.thicknessTexture, textures) {
     // KHR_materials_ior: an IOR of 0 stands for an infinite one (a perfect mirror's F0 of 1).
     const float ior = material.ior;
     dielectricF0_ = ior == 0.0f ? 1.0f : ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
@@ -83,6 +85,13 @@ GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     if (m_.clearcoat.factor > 0.0f) {
         in.clearcoat = m_.clearcoat.factor * clearcoatTexture_.eval(tc).r;
         in.clearcoatRoughness = m_.clearcoat.roughness * clearcoatRoughnessTexture_.eval(tc).g;
+    }
+    if (const IridescenceParams& i = m_.iridescence; i.factor > 0.0f) {
+        in.iridescence = i.factor * iridescenceTexture_.eval(tc).r;
+        in.iridescenceIor = i.ior;
+        in.iridescenceThickness = iridescenceThicknessTexture_
+                                      ? glm::mix(i.thicknessMin, i.thicknessMax, iridescenceThicknessTexture_.eval(tc).g)
+                                      : i.thicknessMax;
     }
     return in;
 }

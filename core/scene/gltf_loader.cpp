@@ -43,10 +43,14 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
     "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp", "EXT_mesh_gpu_instancing",
+    "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_dispersion",
 };
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
     {"KHR_materials_volume", "rendered thin-walled: the attenuation applies, refraction does not"},
+    {"KHR_materials_pbrSpecularGlossiness", "approximated by metallic-roughness as glTF-Transform converts it "
+                                            "(F0 = specular, roughness = 1 - glossiness)"},
+    {"KHR_materials_dispersion", "rendered without dispersion (one IOR for every wavelength)"},
 };
 // Mesh compression we do not decode: named so the message can say what to do. (The KHR
 // successor of EXT_meshopt_compression has a codec version Debian's meshoptimizer lacks.)

@@ -65,6 +65,20 @@ float GltfMaterialReader::number(const json& object, const char* key, float fall
     return std::clamp(float(x), lo, hi);
 }
 
+glm::vec4 GltfMaterialReader::unitColor4(const json& object, const char* key, const std::string& where) const {
+    const json& factor = member(object, key);
+    glm::vec4 c(1.0f);
+    if (factor.is_null()) return c;
+    if (!factor.is_array() || factor.size() != 4) fail(where + "." + key, "must be an array of 4 numbers");
+    for (int i = 0; i < 4; ++i) {
+        const json& v = factor[size_t(i)];
+        if (!v.is_number() || !(v.get<double>() >= -kRangeSlack && v.get<double>() <= 1.0 + kRangeSlack))
+            fail(where + "." + key, "must hold numbers in [0, 1]");
+        c[i] = std::clamp(v.get<float>(), 0.0f, 1.0f);
+    }
+    return c;
+}
+
 glm::vec3 GltfMaterialReader::color3(const json& object, const char* key, glm::vec3 fallback, const std::string& where) const {
     const json& v = member(object, key);
     if (v.is_null()) return fallback;
@@ -104,16 +118,7 @@ Material GltfMaterialReader::readMaterial(const json& source, const std::string&
     const json& pbr = member(source, "pbrMetallicRoughness");
     if (!pbr.is_null()) {
         const std::string at = where + ".pbrMetallicRoughness";
-        const json& factor = member(pbr, "baseColorFactor");
-        if (!factor.is_null()) {
-            if (!factor.is_array() || factor.size() != 4) fail(at + ".baseColorFactor", "must be an array of 4 numbers");
-            for (int c = 0; c < 4; ++c) {
-                const json& v = factor[size_t(c)];
-                if (!v.is_number() || !(v.get<double>() >= -kRangeSlack && v.get<double>() <= 1.0 + kRangeSlack))
-                    fail(at + ".baseColorFactor", "must hold numbers in [0, 1]");
-                m.baseColor[c] = std::clamp(v.get<float>(), 0.0f, 1.0f);
-            }
-        }
+        m.baseColor = unitColor4(pbr, "baseColorFactor", at);
         m.metallic = number(pbr, "metallicFactor", 1.0f, 0.0f, 1.0f, at);
         m.roughness = number(pbr, "roughnessFactor", 1.0f, 0.0f, 1.0f, at);
         m.baseColorTexture = readTexture(member(pbr, "baseColorTexture"), true, at + ".baseColorTexture", scene);
@@ -214,7 +219,56 @@ void GltfMaterialReader::readExtensions(const json& extensions, Material& m, con
             m.transmission.attenuationDistance = distance.get<float>();
         }
     }
+    if (const json& e = member(extensions, "KHR_materials_iridescence"); !e.is_null()) {
+        const std::string at = where + ".KHR_materials_iridescence";
+        const float infinity = std::numeric_limits<float>::infinity();
+        m.iridescence.factor = number(e, "iridescenceFactor", 0.0f, 0.0f, 1.0f, at);
+        m.iridescence.texture = readTexture(member(e, "iridescenceTexture"), false, at + ".iridescenceTexture", scene);
+        m.iridescence.ior = number(e, "iridescenceIor", 1.3f, 1.0f, infinity, at);
+        m.iridescence.thicknessMin = number(e, "iridescenceThicknessMinimum", 100.0f, 0.0f, infinity, at);
+        m.iridescence.thicknessMax = number(e, "iridescenceThicknessMaximum", 400.0f, 0.0f, infinity, at);
+        m.iridescence.thicknessTexture =
+            readTexture(member(e, "iridescenceThicknessTexture"), false, at + ".iridescenceThicknessTexture", scene);
+    }
+    // Read for its value's sake: woven renders one IOR for every wavelength (a warning says so).
+    if (const json& e = member(extensions, "KHR_materials_dispersion"); !e.is_null())
+        number(e, "dispersion", 0.0f, 0.0f, std::numeric_limits<float>::infinity(), where + ".KHR_materials_dispersion");
+    if (const json& e = member(extensions, "KHR_materials_pbrSpecularGlossiness"); !e.is_null())
+        readSpecularGlossiness(e, m, where + ".KHR_materials_pbrSpecularGlossiness", scene);
     if (!member(extensions, "KHR_materials_unlit").is_null()) m.unlit = true;
+}
+
+// As glTF-Transform's metalRough() converts it: diffuse becomes the base colour of a dielectric
+// whose F0 is the specular colour (an infinite IOR under KHR_materials_specular's colour) and
+// whose roughness is 1 - glossiness, from a texture whose G is 1 - glossiness x A where the
+// specular-glossiness texture is given. The specular-glossiness model's diffuse, scaled by
+// 1 - max(specular), becomes woven's, scaled by 1 - F per channel: an approximation.
+void GltfMaterialReader::readSpecularGlossiness(const json& e, Material& m, const std::string& at, SceneDescription& scene) {
+    m.baseColor = unitColor4(e, "diffuseFactor", at);
+    m.baseColorTexture = readTexture(member(e, "diffuseTexture"), true, at + ".diffuseTexture", scene);
+    m.metallic = 0.0f;
+    m.ior = 0.0f;
+    m.specular = 1.0f;
+    m.specularTexture = {};
+    m.specularColor = glm::min(color3(e, "specularFactor", glm::vec3(1.0f), at), glm::vec3(1.0f));
+    const float glossiness = number(e, "glossinessFactor", 1.0f, 0.0f, 1.0f, at);
+    const TextureRef texture = readTexture(member(e, "specularGlossinessTexture"), true, at + ".specularGlossinessTexture", scene);
+    m.specularColorTexture = texture;
+    m.roughness = texture ? 1.0f : 1.0f - glossiness;
+    m.metallicRoughnessTexture = {};
+    if (!texture) return;
+    const TextureImage& source = scene.textures[size_t(texture.image)];
+    TextureImage rough{source.name + " (roughness from glossiness)", source.width, source.height, {}, {}};
+    if (source.isFloat()) {
+        for (const glm::vec4& t : source.floats) rough.floats.emplace_back(0.0f, 1.0f - glossiness * t.a, 0.0f, 1.0f);
+    } else {
+        for (const glm::u8vec4& t : source.bytes)
+            rough.bytes.emplace_back(0, uint8_t(std::lround(255.0f - glossiness * float(t.a))), 0, 255);
+    }
+    scene.textures.push_back(std::move(rough));
+    m.metallicRoughnessTexture = texture;
+    m.metallicRoughnessTexture.image = int(scene.textures.size()) - 1;
+    m.metallicRoughnessTexture.srgb = false;
 }
 
 TextureRef GltfMaterialReader::readTexture(const json& info, bool srgb, const std::string& where, SceneDescription& scene) {

@@ -32,11 +32,13 @@ private:
     [[noreturn]] void fail(const std::string& where, const std::string& problem) const;
     Material readMaterial(const nlohmann::json& source, const std::string& name, SceneDescription& scene);
     void readExtensions(const nlohmann::json& extensions, Material& m, const std::string& name, SceneDescription& scene);
+    void readSpecularGlossiness(const nlohmann::json& extension, Material& m, const std::string& where, SceneDescription& scene);
     TextureRef readTexture(const nlohmann::json& info, bool srgb, const std::string& where, SceneDescription& scene);
     int imageTexture(int image, const std::string& where, SceneDescription& scene);
 
     float number(const nlohmann::json& object, const char* key, float fallback, float lo, float hi,
                  const std::string& where) const;
+    glm::vec4 unitColor4(const nlohmann::json& object, const char* key, const std::string& where) const;  // RGBA in [0, 1], white if absent
     glm::vec3 color3(const nlohmann::json& object, const char* key, glm::vec3 fallback, const std::string& where) const;
 
     std::string path_;

@@ -91,6 +91,15 @@ struct TransmissionParams {
     float attenuationDistance = std::numeric_limits<float>::infinity();
 };
 
+// KHR_materials_iridescence: a thin dielectric film over the specular reflection (thin_film.h).
+struct IridescenceParams {
+    float factor = 0.0f;
+    TextureRef texture;  // R
+    float ior = 1.3f;
+    float thicknessMin = 100.0f, thicknessMax = 400.0f;  // nm
+    TextureRef thicknessTexture;  // G: mix(thicknessMin, thicknessMax, G); thicknessMax without it
+};
+
 // What a glTF material made woven by a scene file, --woven or the previewer keeps of itself
 // (docs/SCENE_FORMAT.md): its normal map and alpha cut-out always, its base colour unless
 // "keep_base_color": false (woven_assignment.cpp).
@@ -131,6 +140,7 @@ struct Material {
     AnisotropyParams anisotropy;
     ClearcoatParams clearcoat;
     TransmissionParams transmission;
+    IridescenceParams iridescence;
 };
 
 // One primitive in world space. Per-vertex arrays are either empty (missing in the file and not

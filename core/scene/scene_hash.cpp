@@ -97,6 +97,15 @@ void add(Hasher& h, const Material& m) {
     add(h, m.transmission.thicknessTexture);
     h.add(m.transmission.attenuationColor);
     h.add(m.transmission.attenuationDistance);
+    // Only where it shows, so that the frames of scenes without it keep the hashes they had.
+    if (const IridescenceParams& i = m.iridescence; i.factor > 0.0f) {
+        h.add(i.factor);
+        add(h, i.texture);
+        h.add(i.ior);
+        h.add(i.thicknessMin);
+        h.add(i.thicknessMax);
+        add(h, i.thicknessTexture);
+    }
 }
 
 void add(Hasher& h, const Mesh& m) {

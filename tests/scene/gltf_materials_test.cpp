@@ -126,6 +126,83 @@ TEST(GltfMaterialInputs, ExtensionsAreRead) {
     expectNear(m.emission, {1.5f, 1.5f, 1.5f});
 }
 
+TEST(GltfMaterialInputs, IridescenceIsReadWithTheExtensionsDefaults) {
+    TexturedFile f;
+    const Material m = f.load({{"extensions", {{"KHR_materials_iridescence",
+                                                {{"iridescenceFactor", 0.8}, {"iridescenceIor", 1.6},
+                                                 {"iridescenceThicknessMinimum", 250}, {"iridescenceThicknessMaximum", 900},
+                                                 {"iridescenceTexture", {{"index", 0}}},
+                                                 {"iridescenceThicknessTexture", {{"index", 0}}}}}}}})
+                           .materials.at(0);
+    EXPECT_FLOAT_EQ(m.iridescence.factor, 0.8f);
+    EXPECT_FLOAT_EQ(m.iridescence.ior, 1.6f);
+    EXPECT_FLOAT_EQ(m.iridescence.thicknessMin, 250.0f);
+    EXPECT_FLOAT_EQ(m.iridescence.thicknessMax, 900.0f);
+    EXPECT_EQ(m.iridescence.texture.image, 0);
+    EXPECT_FALSE(m.iridescence.texture.srgb);  // both textures are linear data
+    EXPECT_EQ(m.iridescence.thicknessTexture.image, 0);
+    EXPECT_FALSE(m.iridescence.thicknessTexture.srgb);
+    const Material d = TexturedFile().load({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).materials.at(0);
+    EXPECT_EQ(d.iridescence.factor, 0.0f);  // the extension's defaults: no effect until a factor is given
+    EXPECT_FLOAT_EQ(d.iridescence.ior, 1.3f);
+    EXPECT_FLOAT_EQ(d.iridescence.thicknessMin, 100.0f);
+    EXPECT_FLOAT_EQ(d.iridescence.thicknessMax, 400.0f);
+    EXPECT_THAT(TexturedFile().error({{"name", "I"}, {"extensions", {{"KHR_materials_iridescence", {{"iridescenceIor", 0.5}}}}}}),
+                HasSubstr("material 'I'.extensions.KHR_materials_iridescence.iridescenceIor: is 0.500000, must be >= 1"));
+}
+
+TEST(GltfMaterialInputs, SpecularGlossinessBecomesMetallicRoughnessAsGltfTransformConvertsIt) {
+    {
+        TexturedFile f;
+        f.b.useExtension("KHR_materials_pbrSpecularGlossiness", true);
+        const SceneDescription s =
+            f.load({{"pbrMetallicRoughness", {{"metallicFactor", 1}, {"roughnessFactor", 0.1}}},  // other viewers' fallback
+                    {"extensions", {{"KHR_materials_pbrSpecularGlossiness",
+                                     {{"diffuseFactor", {0.5, 0.25, 1, 0.75}}, {"specularFactor", {0.9, 0.6, 0.3}},
+                                      {"glossinessFactor", 0.3}}}}}});
+        const Material& m = s.materials.at(0);
+        EXPECT_EQ(m.baseColor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+        EXPECT_EQ(m.metallic, 0.0f);
+        EXPECT_FLOAT_EQ(m.roughness, 0.7f);  // 1 - glossiness
+        EXPECT_EQ(m.ior, 0.0f);              // F0 = specularColor x specular, exactly
+        EXPECT_EQ(m.specular, 1.0f);
+        expectNear(m.specularColor, {0.9f, 0.6f, 0.3f});
+        EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("KHR_materials_pbrSpecularGlossiness: approximated")));
+    }
+    {
+        // With the texture: specular colour from its RGB (sRGB), roughness 1 - glossiness x A in
+        // a texture of its own (G; A is 255 and 64 in t.png: 255 - 0.5 x 255 = 127.5 -> 128,
+        // 255 - 0.5 x 64 = 223), the diffuse texture as the base colour's.
+        TexturedFile f;
+        const SceneDescription s =
+            f.load({{"extensions", {{"KHR_materials_pbrSpecularGlossiness",
+                                     {{"glossinessFactor", 0.5}, {"diffuseTexture", {{"index", 0}}},
+                                      {"specularGlossinessTexture", {{"index", 0}, {"texCoord", 1}}}}}}}});
+        const Material& m = s.materials.at(0);
+        EXPECT_EQ(m.baseColorTexture.image, 0);
+        EXPECT_TRUE(m.baseColorTexture.srgb);
+        EXPECT_EQ(m.specularColorTexture.image, 0);
+        EXPECT_TRUE(m.specularColorTexture.srgb);
+        EXPECT_EQ(m.roughness, 1.0f);
+        ASSERT_EQ(m.metallicRoughnessTexture.image, 1);
+        EXPECT_FALSE(m.metallicRoughnessTexture.srgb);
+        EXPECT_EQ(m.metallicRoughnessTexture.texCoord, 1);  // the specular-glossiness texture's coordinates
+        const TextureImage& rough = s.textures.at(1);
+        ASSERT_EQ(rough.bytes.size(), 2u);
+        EXPECT_EQ(rough.bytes[0], glm::u8vec4(0, 128, 0, 255));
+        EXPECT_EQ(rough.bytes[1], glm::u8vec4(0, 223, 0, 255));
+    }
+}
+
+TEST(GltfMaterialInputs, DispersionIsReadAndNotRendered) {
+    TexturedFile f;
+    f.b.useExtension("KHR_materials_dispersion");
+    const SceneDescription s = f.load({{"extensions", {{"KHR_materials_dispersion", {{"dispersion", 0.4}}}}}});
+    EXPECT_THAT(s.warnings, ::testing::Contains("KHR_materials_dispersion: rendered without dispersion (one IOR for every wavelength)"));
+    EXPECT_THAT(TexturedFile().error({{"name", "D"}, {"extensions", {{"KHR_materials_dispersion", {{"dispersion", -1}}}}}}),
+                HasSubstr("material 'D'.extensions.KHR_materials_dispersion.dispersion: is -1.000000, must be >= 0"));
+}
+
 TEST(GltfMaterialInputs, UnlitAndDefaults) {
     TexturedFile f;
     const SceneDescription s = f.load({{"extensions", {{"KHR_materials_unlit", json::object()}}}});
@@ -195,18 +272,19 @@ TEST(GltfMaterialInputs, OutOfRangeAndMalformedValuesNameTheMaterialAndKey) {
 
 TEST(GltfExtensions, UnsupportedOnesAreNamedRequiredOnesRefused) {
     TexturedFile f;
-    f.b.useExtension("KHR_materials_iridescence");
+    f.b.useExtension("EXT_lights_image_based");
     f.b.useExtension("KHR_materials_volume");
     const SceneDescription s = f.load(json::object());
-    EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("ignores the optional extension KHR_materials_iridescence")));
+    EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("ignores the optional extension EXT_lights_image_based")));
     EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr("KHR_materials_volume: rendered thin-walled")));
     TexturedFile g;
-    g.b.useExtension("KHR_materials_iridescence", true);
-    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension KHR_materials_iridescence, which woven does not support"));
+    g.b.useExtension("EXT_lights_image_based", true);
+    EXPECT_THAT(g.error(json::object()), HasSubstr("requires the extension EXT_lights_image_based, which woven does not support"));
     // The extensions woven renders can be required.
     TexturedFile h;
     for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit",
-                          "KHR_materials_anisotropy"})
+                          "KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness",
+                          "KHR_materials_dispersion", "EXT_mesh_gpu_instancing"})
         h.b.useExtension(e, true);
     EXPECT_NO_THROW(h.load(json::object()));
 }
