@@ -19,6 +19,7 @@
 
 #include "commands.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "number_checks.h"
 #include "render_job.h"
 #include "scene_camera.h"
@@ -37,7 +38,7 @@ constexpr double kMinSeconds = 1e-3, kMaxSeconds = 86400;
 struct ConvergeOptions {
     std::string scene, outDir = "converge";
     std::vector<double> budgets{1, 2, 4, 8, 16};
-    std::vector<std::string> integrators{"path", "bdpt", "auto"};
+    std::vector<std::string> integrators = integratorNames();
     std::vector<std::string> filters{"on", "off"};  // the weave filter (--filter is "on")
     std::vector<double> thresholds{0.0, kDefaultNoiseThreshold};  // adaptive sampling; 0: off
     double referenceTime = 300;
@@ -114,7 +115,9 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     struct Part { std::vector<glm::vec3> mean; std::vector<float> count; double weight; };
     std::vector<Part> parts;
     uint64_t seed = 0x5eed0001;
-    for (const char* integrator : {"path", "bdpt"}) {
+    for (const IntegratorKind& kind : integratorKinds()) {
+        if (!kind.make) continue;  // auto: the reference is of the integrators themselves
+        const std::string integrator = kind.name;
         const Timed a = renderFor(scene, o, integrator, o.referenceTime / 4, seed++, false);
         const Timed b = renderFor(scene, o, integrator, o.referenceTime / 4, seed++, false);
         Part part;
@@ -258,7 +261,7 @@ void runConverge(const ConvergeOptions& o) {
             const double spp = meanSpp(t.film);
             csv << v.name() << "," << t.seconds << "," << spp << "," << e.relMse << "," << e.relRmse << ","
                 << efficiency << "," << v.integrator << "," << (v.filter ? "on" : "off") << "," << v.threshold << "\n";
-            std::cout << "| " << v.integrator << (v.integrator == "auto" ? " (" + t.integrator + ")" : "") << " | "
+            std::cout << "| " << v.integrator << (v.integrator == autoIntegrator().name ? " (" + t.integrator + ")" : "") << " | "
                       << (v.filter ? "on" : "off") << " | " << adaptiveLabel(v.threshold) << " | " << std::fixed
                       << std::setprecision(2) << t.seconds << " | " << std::setprecision(1) << spp << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
                       << e.relRmse << " | " << efficiency << " |\n" << std::defaultfloat << std::flush;
@@ -334,18 +337,20 @@ void runConverge(const ConvergeOptions& o) {
     // Which integrator is most efficient with the default settings, and what auto picks.
     std::string winner;
     double top = -1;
-    for (const std::string& integrator : {std::string("path"), std::string("bdpt")}) {
-        const auto r = runs.find(Variant{integrator, defaultFilter, defaultThreshold}.name());
+    for (const IntegratorKind& kind : integratorKinds()) {
+        if (!kind.make) continue;
+        const auto r = runs.find(Variant{kind.name, defaultFilter, defaultThreshold}.name());
         if (r != runs.end() && r->second.efficiency > top) {
             top = r->second.efficiency;
-            winner = integrator;
+            winner = kind.name;
         }
     }
     if (winner.empty()) return;
-    const auto autoRuns = runs.find(Variant{"auto", defaultFilter, defaultThreshold}.name());
+    const std::string autoName = autoIntegrator().name;
+    const auto autoRuns = runs.find(Variant{autoName, defaultFilter, defaultThreshold}.name());
     const std::string picked = autoRuns != runs.end()
                                    ? autoRuns->second.picked
-                                   : renderFor(scene, o, "auto", 0.5, 99, defaultFilter, defaultThreshold).integrator;
+                                   : renderFor(scene, o, autoName, 0.5, 99, defaultFilter, defaultThreshold).integrator;
     std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << picked
               << (picked == winner ? " (agrees)" : " (DISAGREES)") << "\n";
 }
@@ -361,9 +366,9 @@ void addConvergeCommand(CLI::App& app) {
     cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
     const CLI::Validator timeCheck = finiteNumber(kMinSeconds, kMaxSeconds);
     cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',')->check(timeCheck);
-    cmd->add_option("--integrators", o->integrators, "integrators to compare (path, bdpt, auto)")
+    cmd->add_option("--integrators", o->integrators, "integrators to compare (" + integratorChoices() + ")")
         ->delimiter(',')
-        ->check(CLI::IsMember({"path", "bdpt", "auto"}));
+        ->check(CLI::IsMember(integratorNames()));
     cmd->add_option("--filter", o->filters, "the weave filter: on, off or on,off (both, compared)")
         ->delimiter(',')
         ->check(CLI::IsMember({"on", "off"}));

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "atomic_file.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "output_path.h"
 #include "sample_index_check.h"
 
@@ -68,10 +69,9 @@ std::string frameDifference(const Part& a, const Part& b) {
     const auto differ = [&](const std::string& what, const std::string& inA, const std::string& inB) {
         text += (text.empty() ? "" : "; ") + what + " " + inA + " in " + a.path + ", " + inB + " in " + b.path;
     };
-    const auto picked = [](const std::string& integrator) { return integrator.rfind("auto", 0) == 0; };
     if (x.scene != y.scene) differ("the scene (with its camera and materials) has the hash", x.scene, y.scene);
     if (x.seed != y.seed) differ("--seed", std::to_string(x.seed), std::to_string(y.seed));
-    if (x.integrator != y.integrator && !(picked(x.integrator) && picked(y.integrator)))
+    if (x.integrator != y.integrator && !(chosenByAuto(x.integrator) && chosenByAuto(y.integrator)))
         differ("--integrator", x.integrator, y.integrator);
     if (x.maxDepth != y.maxDepth) differ("--max-depth", std::to_string(x.maxDepth), std::to_string(y.maxDepth));
     if (x.filterWeave != y.filterWeave) differ("--filter", x.filterWeave ? "on" : "off", y.filterWeave ? "on" : "off");
@@ -107,7 +107,7 @@ std::optional<FrameIdentity> commonFrame(const std::vector<Part>& parts) {
     if (mixedPicks) {
         std::cerr << "note: --integrator auto chose differently for some parts: the merge is a frame of both integrators, "
                      "not the bits of one render\n";
-        frame.integrator = "auto";
+        frame.integrator = autoIntegrator().name;
     }
     return frame;
 }

@@ -13,6 +13,7 @@
 #include "number_checks.h"
 #include "frame_limits.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "output_path.h"
 #include "progress_bar.h"
 #include "render_options.h"
@@ -141,7 +142,7 @@ int runRender(RenderCommand o) {
     {
         InterruptGuard guard;
         ProgressBar bar("render");
-        if (settings.integrator == "auto") std::cerr << "render: choosing the integrator (a short pilot of each)\n";
+        if (settings.integrator == autoIntegrator().name) std::cerr << "render: choosing the integrator (a short pilot of each)\n";
         job.run(interrupted, [&](const RenderProgress& p) {
             last = p;
             const double fraction = p.activeFraction == 0.0           ? 1.0  // every pixel below the noise threshold

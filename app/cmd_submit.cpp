@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "frame_pattern.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "render_options.h"
 #include "run_process.h"
 #include "scene_loader.h"
@@ -122,7 +123,7 @@ SlurmJob planJob(const SubmitOptions& o) {
     if (job.tasks > job.spp)
         throw std::invalid_argument("--tasks " + std::to_string(job.tasks) + " is more than the " +
                                     std::to_string(job.spp) + " samples per pixel: each task needs one at least");
-    if (settings.integrator == "auto")
+    if (settings.integrator == autoIntegrator().name)
         std::cerr << "note: the integrator is auto, which each task picks by timing a pilot: give --integrator path or "
                      "bdpt for a frame that equals a local render bit for bit\n";
     return job;

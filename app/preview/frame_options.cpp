@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "integrators.h"
 #include "number_checks.h"
 #include "scene_camera.h"
 #include "woven_assignment.h"
@@ -17,8 +18,12 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--width", o.width, "image width (default: the scene's, else 640)")->check(CLI::Range(1, 1 << 15));
     command.add_option("--height", o.height, "image height (default: the scene's, else 480)")->check(CLI::Range(1, 1 << 15));
     command.add_option("--spp", o.spp, "samples per pixel (default: the scene's, else 64)")->check(CLI::Range(1, 1 << 24));
-    command.add_option("--integrator", o.integrator, "bdpt, path or auto (default: the scene's, else auto)")
-        ->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorNames), std::end(kIntegratorNames))));
+    std::string integrators;
+    for (const IntegratorKind& kind : integratorKinds())
+        integrators += std::string(integrators.empty() ? "" : "; ") + kind.name + ": " + kind.description;
+    command.add_option("--integrator", o.integrator,
+                       integrators + " (default: the scene's, else " + autoIntegrator().name + ")")
+        ->check(CLI::IsMember(integratorNames()));
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--sampler", o.sampler,
                        "sobol (Owen-scrambled Sobol points, converging faster) or independent (PCG numbers, as woven "

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "image_io.h"
+#include "integrators.h"
 #include "preview_window_impl.h"
 #include "scene_export.h"
 
@@ -37,8 +38,8 @@ void PreviewWindow::drawRenderControls() {
     ui::InputDouble("noise threshold", &render_.noiseThreshold, 0.01, 0.05, "%.3f");
     clampSetting("noise threshold", render_.noiseThreshold, 0.0, 1.0);
     if (ui::BeginCombo("integrator", render_.integrator.c_str())) {
-        for (const char* name : kIntegratorNames)
-            if (ui::Selectable(name, render_.integrator == name)) render_.integrator = name;
+        for (const IntegratorKind& kind : integratorKinds())
+            if (ui::Selectable(kind.name, render_.integrator == kind.name)) render_.integrator = kind.name;
         ui::EndCombo();
     }
     if (ui::Button("Render")) {

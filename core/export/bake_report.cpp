@@ -12,6 +12,7 @@
 #include "flat_cloth.h"
 #include "gltf_material.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "render_job.h"
 #include "scene_camera.h"
 #include "srgb.h"
@@ -60,7 +61,7 @@ Image renderCloth(const SceneDescription& scene, const ReportOptions& o, bool fa
     settings.spp = far ? 16 * o.spp : o.spp;
     settings.seed = seed;
     settings.threads = o.threads;
-    settings.integrator = "path";
+    settings.integrator = pathIntegrator().name;
     settings.maxDepth = 1;  // direct light: a flat cloth under a sun and a sky has nothing more
     RenderJob job(std::make_shared<const SceneDescription>(scene), settings);
     const std::atomic<bool> cancel{false};

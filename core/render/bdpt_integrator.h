@@ -14,7 +14,6 @@ public:
         : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
     glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const override;
-    const char* name() const override { return "bdpt"; }
 
     struct Vertex;  // a subpath vertex (bdpt_integrator.cpp)
 

@@ -2,8 +2,6 @@
 // What both integrators share: one camera sample in, a radiance estimate for its pixel out, plus
 // contributions that land on other pixels (BDPT's t = 1 strategies) and a count of rays traced.
 #include <cstdint>
-#include <memory>
-#include <string>
 #include <vector>
 
 #include "render_scene.h"
@@ -30,14 +28,7 @@ public:
     // The radiance estimate of the camera ray through pRaster; all random numbers from sampler,
     // at the dimensions sample_dimensions.h gives each use.
     virtual glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const = 0;
-    virtual const char* name() const = 0;
 };
-
-// maxDepth counts scattering vertices (bounces) as in pbrt-v3: 1 = direct lighting only.
-// filterWeave: woven materials shade each hit filtered over its pixel footprint (addFootprint()).
-// Throws std::invalid_argument for an unknown name ("bdpt" and "path" are known).
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene,
-                                           const CameraModel& camera, int maxDepth, bool filterWeave);
 
 // Gives a hit its pixel footprint (CameraModel::footprint() through setUvFootprint()) where its
 // material filters by one; other hits cost nothing more.

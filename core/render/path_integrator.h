@@ -12,7 +12,6 @@ public:
         : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
 
     glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const override;
-    const char* name() const override { return "path"; }
 
 private:
     // Light sampled at hit, path vertex `vertex`, MIS-weighted against the BSDF's density; beta

@@ -13,7 +13,7 @@
 #include "adaptive_sampling.h"
 #include "film.h"
 #include "frame_limits.h"
-#include "integrator.h"
+#include "integrators.h"
 #include "render_scene.h"
 #include "scene_camera.h"
 #include "scene_hash.h"
@@ -90,12 +90,12 @@ struct RenderJob::Impl {
           arena(workerThreads(settings.threads)),
           film(settings.width, settings.height) {}
 
-    // "auto": the more efficient integrator (1 / (variance x time) per pass) in a pilot of
-    // each on a low-resolution version of the frame.
-    std::string pickIntegrator(const std::atomic<bool>& cancel);
+    // Auto: the more efficient integrator (1 / (variance x time) per pass) in a pilot of each
+    // on a low-resolution version of the frame.
+    const IntegratorKind& pickIntegrator(const std::atomic<bool>& cancel);
 };
 
-std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
+const IntegratorKind& RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
     // About 20,000 pixels: enough to see the noise of every region of the frame, a few
     // seconds on two cores for both integrators together.
     const double scale = std::min(1.0, std::sqrt(20000.0 / (double(settings.width) * settings.height)));
@@ -108,12 +108,14 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
     constexpr int kMinPasses = 4, kMaxPasses = 16;
     constexpr double kPilotSeconds = 1.5;
     struct Pilot {
-        const char* name;
+        const IntegratorKind* kind;
         double mean = 0.0, variance = 0.0, secondsPerPass = 0.0;  // per pass, over the image
     };
-    Pilot pilots[2] = {{"path"}, {"bdpt"}};
+    std::vector<Pilot> pilots;
+    for (const IntegratorKind& kind : integratorKinds())
+        if (kind.make) pilots.push_back({&kind});
     for (Pilot& pilot : pilots) {
-        const auto candidate = makeIntegrator(pilot.name, *scene, pilotModel, settings.maxDepth, settings.filterWeave);
+        const auto candidate = pilot.kind->make(*scene, pilotModel, settings.maxDepth, settings.filterWeave);
         std::vector<double> sum(size_t(width) * height, 0.0), sumSq(sum.size(), 0.0);
         const Clock::time_point start = Clock::now();
         int passes = 0;
@@ -123,7 +125,7 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
             // Sample indices far from any final render's, so the pilot never repeats its samples.
             const uint64_t sampleIndex = (uint64_t(1) << 62) + uint64_t(passes);
             if (!renderPass(*candidate, width, height, settings.sampler, settings.seed, sampleIndex, {}, 0, arena, cancel, &rays, &pass))
-                return "path";
+                return *pilot.kind;  // cancelled: run() renders nothing
             const std::vector<glm::vec3> image = pass.combined();
             for (size_t i = 0; i < image.size(); ++i) {
                 const double y = luminance(image[i]);
@@ -141,14 +143,18 @@ std::string RenderJob::Impl::pickIntegrator(const std::atomic<bool>& cancel) {
         pilot.mean /= double(sum.size());
         pilot.variance /= double(sum.size());
     }
-    // Both estimate the same image. One that found far less light than the other has missed
+    // All estimate the same image. One that found far less light than another has missed
     // paths it samples rarely, and its variance estimate is meaningless (zero when it found
-    // none): the other wins. Otherwise the efficiency 1 / (variance x time) decides.
-    const Pilot& path = pilots[0];
-    const Pilot& bdpt = pilots[1];
-    if (path.mean < 0.5 * bdpt.mean) return bdpt.name;
-    if (bdpt.mean < 0.5 * path.mean) return path.name;
-    return path.variance * path.secondsPerPass <= bdpt.variance * bdpt.secondsPerPass ? path.name : bdpt.name;
+    // none): it is out. Of the rest the efficiency 1 / (variance x time) decides, a tie going
+    // to the one first in the table.
+    double brightest = 0.0;
+    for (const Pilot& pilot : pilots) brightest = std::max(brightest, pilot.mean);
+    const Pilot* best = nullptr;
+    for (const Pilot& pilot : pilots)
+        if (!(pilot.mean < 0.5 * brightest) &&
+            (!best || pilot.variance * pilot.secondsPerPass < best->variance * best->secondsPerPass))
+            best = &pilot;
+    return *best->kind;
 }
 
 RenderSettings defaultRenderSettings(const SceneDescription& scene) {
@@ -157,7 +163,12 @@ RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     if (scene.render.width > 0) settings.width = scene.render.width;
     if (scene.render.height > 0) settings.height = scene.render.height;
     if (scene.render.spp > 0) settings.spp = scene.render.spp;
-    if (!scene.render.integrator.empty()) settings.integrator = scene.render.integrator;
+    if (!scene.render.integrator.empty()) {
+        if (!findIntegrator(scene.render.integrator))
+            throw SceneError(scene.source + ": render.integrator: must be " + integratorChoices("\"") + ", not \"" +
+                             scene.render.integrator + "\"");
+        settings.integrator = scene.render.integrator;
+    }
     return settings;
 }
 
@@ -182,8 +193,12 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     im.camera = im.settings.camera ? *im.settings.camera : sceneCamera(*im.description);
     im.cameraModel = std::make_unique<CameraModel>(im.camera, im.settings.width, im.settings.height);
     im.sceneHash = sceneHash(*im.description, im.camera);
-    im.integratorName = im.settings.integrator;
-    if (im.integratorName != "auto") im.integrator = makeIntegrator(im.integratorName, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
+    const IntegratorKind* kind = findIntegrator(im.settings.integrator);
+    if (!kind)
+        throw std::invalid_argument("unknown integrator '" + im.settings.integrator + "' (expected " +
+                                    integratorChoices() + ")");
+    im.integratorName = kind->name;
+    if (kind->make) im.integrator = kind->make(*im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
 }
 
 RenderJob::~RenderJob() = default;
@@ -192,11 +207,11 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
     Impl& im = *impl_;
     const Clock::time_point start = Clock::now();
     if (!im.integrator) {
-        const std::string chosen = im.pickIntegrator(cancel);
+        const IntegratorKind& chosen = im.pickIntegrator(cancel);
         if (cancel.load()) return;
-        im.integrator = makeIntegrator(chosen, *im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
+        im.integrator = chosen.make(*im.scene, *im.cameraModel, im.settings.maxDepth, im.settings.filterWeave);
         std::lock_guard<std::mutex> lock(im.filmMutex);  // snapshot() reads it from other threads
-        im.integratorName = chosen;
+        im.integratorName = chosen.name;
     }
     const Clock::time_point renderStart = Clock::now();
     const size_t pixels = size_t(im.settings.width) * im.settings.height;
@@ -244,9 +259,8 @@ FilmImage RenderJob::snapshot() const {
     FilmImage image = impl_->film.image();
     const Impl& im = *impl_;
     image.samples = {im.settings.firstSample, im.film.passes()};
-    const bool picked = im.settings.integrator == "auto" && im.integratorName != "auto";
-    image.frame = {im.sceneHash, im.settings.seed, (picked ? "auto: " : "") + im.integratorName, im.settings.maxDepth,
-                   im.settings.filterWeave};
+    image.frame = {im.sceneHash, im.settings.seed, integratorRecord(im.settings.integrator, im.integratorName),
+                   im.settings.maxDepth, im.settings.filterWeave};
     return image;
 }
 

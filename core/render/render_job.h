@@ -11,6 +11,7 @@
 
 #include "exact_sum.h"
 #include "image_io.h"
+#include "integrators.h"
 #include "sample_range.h"
 #include "sampler.h"
 #include "scene_description.h"
@@ -22,7 +23,7 @@ struct RenderSettings {
     int spp = 64;              // samples per pixel to take (from firstSample on)
     int64_t firstSample = 0;   // start of this render's sample range (for distributed renders)
     double timeLimit = 0.0;    // seconds; > 0 stops after the pass that crosses it
-    std::string integrator = "auto";  // "bdpt", "path" or "auto"
+    std::string integrator = autoIntegrator().name;  // a name in the table
     uint64_t seed = 0;
     // Owen-scrambled Sobol points by default: at equal samples they converge faster than
     // independent ones (docs/RESULTS.md, "Samplers").
@@ -46,7 +47,7 @@ constexpr double kDefaultNoiseThreshold = 0.05;
 
 // The scene file's render hints, the rest woven's defaults (640x480, 64 spp, auto, noise
 // threshold kDefaultNoiseThreshold): what `woven render` and the previewer's Render button
-// start from.
+// start from. Throws SceneError naming the file for a render.integrator the table lacks.
 RenderSettings defaultRenderSettings(const SceneDescription& scene);
 
 struct RenderProgress {
@@ -82,8 +83,8 @@ public:
     // or, with a noise threshold, every pixel below it.
     void run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress = {});
     FilmImage snapshot() const;  // thread-safe
-    // The one chosen: "auto" is resolved by a short pilot at the start of run(), so until then
-    // it reads "auto".
+    // The one chosen: auto is resolved by a short pilot at the start of run(), so until then
+    // it reads auto's name.
     const std::string& integratorName() const;
 
 private:

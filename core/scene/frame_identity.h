@@ -13,8 +13,9 @@ namespace woven {
 struct FrameIdentity {
     std::string scene;       // sceneHash() of the scene as rendered, through the camera it used
     uint64_t seed = 0;
-    // "path" or "bdpt"; "auto: path" or "auto: bdpt" where --integrator auto's pilot chose (it
-    // times both, so the tasks of one frame may choose differently), "auto" for a merge of both.
+    // integratorRecord() (integrators.h): an integrator's name, prefixed by auto's where its
+    // pilot chose (it times each, so the tasks of one frame may choose differently), or auto's
+    // alone for a merge of frames it chose differently for.
     std::string integrator;
     int maxDepth = 0;
     bool filterWeave = false;

@@ -190,14 +190,11 @@ struct NamedCamera {
     Camera camera;
 };
 
-// The integrators a frame can be rendered with; "auto" lets the render job choose.
-inline constexpr const char* kIntegratorNames[] = {"auto", "bdpt", "path"};
-
 // Render settings a scene file asks for; 0 or empty = not given (the command line decides).
 struct RenderHints {
     int width = 0, height = 0;
     int spp = 0;
-    std::string integrator;  // "bdpt", "path", "auto", ...
+    std::string integrator;  // a name in integrators.h's table, checked where a render takes it
 };
 
 struct SceneDescription {

@@ -1,6 +1,5 @@
 #include "scene_file.h"
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -231,12 +230,9 @@ private:
         if (render.contains("width")) hints.width = positiveInt(render["width"], "render.width", 16384);
         if (render.contains("height")) hints.height = positiveInt(render["height"], "render.height", 16384);
         if (render.contains("spp")) hints.spp = positiveInt(render["spp"], "render.spp", 1 << 20);
-        if (render.contains("integrator")) {
-            hints.integrator = string(render["integrator"], "render.integrator");
-            if (std::find(std::begin(kIntegratorNames), std::end(kIntegratorNames), hints.integrator) ==
-                std::end(kIntegratorNames))
-                fail("render.integrator", "must be \"bdpt\", \"path\" or \"auto\", not \"" + hints.integrator + "\"");
-        }
+        // Its name is checked against the integrators' table where a render takes it
+        // (defaultRenderSettings()), in the render layer above this one.
+        if (render.contains("integrator")) hints.integrator = string(render["integrator"], "render.integrator");
     }
 
     std::string path_;

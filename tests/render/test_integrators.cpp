@@ -660,5 +660,21 @@ TEST(RenderJob, UnknownIntegratorIsRejected) {
     EXPECT_THROW(RenderJob(scene, settings), std::invalid_argument);
 }
 
+// A scene file's render.integrator is checked against the integrators' table where a render
+// takes it (the scene layer below cannot see the table): the message names the file and the key.
+TEST(RenderJob, SceneFileIntegratorOutsideTheTableNamesTheFileAndKey) {
+    SceneDescription scene;
+    scene.source = "dir/scene.json";
+    scene.render.integrator = "fast";
+    try {
+        defaultRenderSettings(scene);
+        FAIL() << "render.integrator \"fast\" was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("dir/scene.json: render.integrator: must be"), std::string::npos) << e.what();
+    }
+    scene.render.integrator = "bdpt";
+    EXPECT_EQ(defaultRenderSettings(scene).integrator, "bdpt");
+}
+
 }  // namespace
 }  // namespace woven
