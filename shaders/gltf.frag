@@ -20,6 +20,8 @@ uniform float anisotropyStrength;
 uniform vec2 anisotropyRotation;  // (cos, sin) of KHR_materials_anisotropy's rotation
 uniform float clearcoatFactor, clearcoatRoughnessFactor;
 uniform float transmissionFactor;
+uniform float iridescenceFactor, iridescenceIor;
+uniform vec2 iridescenceThickness;  // KHR_materials_iridescence's minimum and maximum, nm
 
 // As core's keepReflectionAbove(): a normal map's normal tilted so far that the view's mirror
 // direction falls below the surface is tilted back until it stays `margin` above.
@@ -112,6 +114,17 @@ void main() {
     clearcoatRoughness *= lookup(MAP_CLEARCOAT_ROUGHNESS).g;
 #endif
     g.clearcoatAlpha = clamp(clearcoatRoughness * clearcoatRoughness, 1e-3, 1.0);
+    g.iridescence = iridescenceFactor;
+#ifdef MAP_IRIDESCENCE
+    g.iridescence *= lookup(MAP_IRIDESCENCE).r;
+#endif
+    g.iridescence = clamp(g.iridescence, 0.0, 1.0);
+    g.iridescenceIor = max(iridescenceIor, 1.0);
+    g.iridescenceThickness = iridescenceThickness.y;
+#ifdef MAP_IRIDESCENCE_THICKNESS
+    g.iridescenceThickness = mix(iridescenceThickness.x, iridescenceThickness.y, lookup(MAP_IRIDESCENCE_THICKNESS).g);
+#endif
+    g.iridescenceThickness = max(g.iridescenceThickness, 0.0);
 
     // Thin-walled transmission lets light through where the surface neither reflects nor
     // absorbs it: drawn as partial coverage.

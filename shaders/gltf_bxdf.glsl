@@ -1,7 +1,7 @@
 // core/bsdf/gltf_bxdf.cpp's eval() in GLSL (reflection; the preview draws transmission as
 // partial coverage): Lambert + GGX (anisotropic) with the height-correlated Smith term, dielectric
 // and metal Fresnel, the Charlie sheen layer with its albedo scaling (the albedo table is core's,
-// uploaded as a texture) and the clearcoat layer. Local frame: z = the shading normal, x = the
+// uploaded as a texture), the clearcoat layer and the iridescent film (gltf_iridescence.glsl). Local frame: z = the shading normal, x = the
 // anisotropy direction.
 struct GltfInputs {
     vec3 baseColor;
@@ -13,7 +13,21 @@ struct GltfInputs {
     vec3 sheenColor;
     float sheenRoughness;      // clamped to [0.07, 1] as core's SheenLobe
     float clearcoat, clearcoatAlpha;
+    float iridescence, iridescenceIor, iridescenceThickness;  // strength, film IOR, nm
 };
+
+// The dielectric's (xyz) and the metal's Fresnel at cosTheta to the microfacet normal, as core's
+// GltfBxdf::fresnel(): Schlick's, mixed towards the film's by the iridescence.
+void gltfFresnel(GltfInputs g, float cosTheta, out vec3 dielectric, out vec3 metal) {
+    float weight = pow5(clamp(1.0 - cosTheta, 0.0, 1.0));
+    dielectric = g.f0 + (vec3(g.f90) - g.f0) * weight;
+    metal = g.baseColor + (1.0 - g.baseColor) * weight;
+    if (g.iridescence > 0.0) {
+        float outside = 1.0 + 0.5 * g.clearcoat;  // the coat's 1.5 as far as it covers the film
+        dielectric = mix(dielectric, thinFilmFresnel(outside, g.iridescenceIor, cosTheta, g.iridescenceThickness, g.f0), g.iridescence);
+        metal = mix(metal, thinFilmFresnel(outside, g.iridescenceIor, cosTheta, g.iridescenceThickness, g.baseColor), g.iridescence);
+    }
+}
 
 uniform sampler2D sheenAlbedoTable;  // SheenLobe::albedoTable(): x = cos theta, y = roughness
 
@@ -56,11 +70,11 @@ vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
     float len = length(H);
     if (!(len > 1e-12)) return vec3(0.0);
     vec3 h = H / len;
-    float fresnel = pow5(clamp(1.0 - 0.5 * len, 0.0, 1.0));
+    vec3 dielectricF, metalF;
+    gltfFresnel(g, 0.5 * len, dielectricF, metalF);
     float specular = ggxD(g.alphaX, g.alpha, h) * ggxVisibility(g.alphaX, g.alpha, wo, wi);
-    vec3 dielectricF = g.f0 + (vec3(g.f90) - g.f0) * fresnel;
     vec3 dielectric = (1.0 - dielectricF) * (1.0 - g.transmission) * g.baseColor / PI + dielectricF * specular;
-    vec3 metal = (g.baseColor + (1.0 - g.baseColor) * fresnel) * specular;
+    vec3 metal = metalF * specular;
     vec3 f = mix(dielectric, metal, g.metallic);
     float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
     if (sheenMax > 0.0) {
@@ -95,8 +109,19 @@ vec3 gltfAlbedo(GltfInputs g, float cosO) {
     if (cosO <= 0.0) return vec3(0.0);
     vec2 terms = ggxAlbedoTerms(sqrt(sqrt(g.alphaX * g.alpha)), cosO);
     vec3 dielectricSpec = g.f0 * terms.x + g.f90 * terms.y;
-    vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * g.baseColor + dielectricSpec;
     vec3 metal = g.baseColor * terms.x + terms.y;
+    if (g.iridescence > 0.0) {
+        // What the film adds to the Fresnel towards the view, scaled by the split sum's x + y
+        // (its albedo for a Fresnel of 1), as glTF viewers light the film.
+        vec3 filmDielectric, filmMetal, plainDielectric, plainMetal;
+        gltfFresnel(g, cosO, filmDielectric, filmMetal);
+        GltfInputs plain = g;
+        plain.iridescence = 0.0;
+        gltfFresnel(plain, cosO, plainDielectric, plainMetal);
+        dielectricSpec += (filmDielectric - plainDielectric) * (terms.x + terms.y);
+        metal += (filmMetal - plainMetal) * (terms.x + terms.y);
+    }
+    vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * g.baseColor + dielectricSpec;
     vec3 albedo = mix(dielectric, metal, g.metallic);
     float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
     if (sheenMax > 0.0) {

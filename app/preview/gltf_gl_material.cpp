@@ -21,6 +21,8 @@ std::vector<MapUse> gltfMaps(const Material& m) {
         {"MAP_CLEARCOAT_ROUGHNESS", &m.clearcoat.roughnessTexture},
         {"MAP_TRANSMISSION", &m.transmission.texture},
         {"MAP_ANISOTROPY", &m.anisotropy.texture},
+        {"MAP_IRIDESCENCE", &m.iridescence.texture},
+        {"MAP_IRIDESCENCE_THICKNESS", &m.iridescence.thicknessTexture},
     };
     std::vector<MapUse> used;
     for (const MapUse& map : all)
@@ -48,7 +50,7 @@ std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
         std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "lighting.glsl", "screen_door.glsl", "texture_maps.glsl",
-                                 "normal_map.glsl", "gltf_bxdf.glsl", "gltf.frag"},
+                                 "normal_map.glsl", "gltf_iridescence.glsl", "gltf_bxdf.glsl", "gltf.frag"},
         preamble);
 }
 
@@ -70,6 +72,9 @@ void uploadGltfMaterial(const ShaderProgram& program, const Material& m, GpuText
     glUniform1f(program.uniform("clearcoatFactor"), m.clearcoat.factor);
     glUniform1f(program.uniform("clearcoatRoughnessFactor"), m.clearcoat.roughness);
     glUniform1f(program.uniform("transmissionFactor"), m.transmission.factor);
+    glUniform1f(program.uniform("iridescenceFactor"), m.iridescence.factor);
+    glUniform1f(program.uniform("iridescenceIor"), m.iridescence.ior);
+    glUniform2f(program.uniform("iridescenceThickness"), m.iridescence.thicknessMin, m.iridescence.thicknessMax);
     textures.bindMaps(program, gltfMaps(m), firstUnit);
 }
 
