@@ -66,4 +66,19 @@ glm::vec2 repeatForThreadsPerCm(const SceneDescription& scene, const std::vector
     return repeatForThreadsPerCm(worldLengthPerUv(scene, meshes), threadsPerCm);
 }
 
+WovenParams scaledToMeshes(const MaterialJson& read, const SceneDescription& scene, const std::vector<size_t>& meshes,
+                           std::vector<std::string>& warnings) {
+    WovenParams params = read.params;
+    if (!read.threadsPerCm) return params;
+    const UvScale scale = measureUvScale(scene, meshes);
+    params.repeat = repeatForThreadsPerCm(scale.metresPerUv, *read.threadsPerCm);
+    if (const std::string uneven = unevenUvWarning(scale); !uneven.empty()) warnings.push_back(read.scaleKey + ": " + uneven);
+    try {
+        validate(params);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(read.scaleKey + " gives " + e.what());
+    }
+    return params;
+}
+
 }  // namespace woven

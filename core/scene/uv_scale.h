@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "material_json.h"
 #include "scene_description.h"
 
 namespace woven {
@@ -32,5 +33,12 @@ std::string unevenUvWarning(const UvScale& scale);
 glm::vec2 repeatForThreadsPerCm(const glm::dvec2& metresPerUv, const glm::vec2& threadsPerCm);
 glm::vec2 repeatForThreadsPerCm(const SceneDescription& scene, const std::vector<size_t>& meshes,
                                 const glm::vec2& threadsPerCm);
+
+// `read`'s parameters with its thread counts, where it gives any, made `repeat` on those meshes,
+// as scene files, `--woven` and the previewer's panel all take them: the uneven-UV warning goes
+// to `warnings` after the key that gave the counts; std::invalid_argument naming that key for a
+// repeat out of range (or no UVs to measure).
+WovenParams scaledToMeshes(const MaterialJson& read, const SceneDescription& scene, const std::vector<size_t>& meshes,
+                           std::vector<std::string>& warnings);
 
 }  // namespace woven

@@ -80,10 +80,10 @@ std::optional<bool> takeKeepBaseColor(nlohmann::json& layer) {
     return value;
 }
 
-// Whether a layer gives the yarns colours of its own (a draft brings its threads' colours), which
-// then win over a glTF material's base colour factor.
+// Whether a layer gives the yarns colours of its own (a draft brings its threads' colours, a
+// library fabric its own), which then win over a glTF material's base colour factor.
 bool setsYarnColor(const nlohmann::json& layer) {
-    for (const char* key : {"weft_color", "warp_color", "warp_colors", "weft_colors", "wif"})
+    for (const char* key : {"weft_color", "warp_color", "warp_colors", "weft_colors", "wif", "preset"})
         if (layer.contains(key)) return true;
     return false;
 }
@@ -188,18 +188,7 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
                 if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
                 colorKeys |= setsYarnColor(layer);
                 const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
-                params = read.params;
-                if (read.threadsPerCm) {
-                    const UvScale scale = measureUvScale(scene, meshes);
-                    params.repeat = repeatForThreadsPerCm(scale.metresPerUv, *read.threadsPerCm);
-                    if (const std::string uneven = unevenUvWarning(scale); !uneven.empty())
-                        warnings.push_back(read.scaleKey + ": " + uneven);
-                    try {
-                        validate(params);
-                    } catch (const std::invalid_argument& e) {
-                        throw std::invalid_argument(read.scaleKey + " gives " + e.what());
-                    }
-                }
+                params = scaledToMeshes(read, scene, meshes, warnings);
                 if (!read.wif.empty()) material.draft = read.wif;
             } catch (const std::exception& e) {  // a bad key, a draft that cannot be used, no UVs to scale by
                 fail(assignments[a], e.what());
