@@ -16,7 +16,63 @@
 
 namespace woven {
 
+// The Fabrics menu, and what a weaver quotes of the edited material where its meshes' size is known.
+void PreviewWindow::drawFabricControls(WovenParams& p) {
+    if (!fabricMenu_) fabricMenu_ = std::make_unique<FabricMenu>();
+    const std::string target = edits_->edits()[size_t(editIndex_)].target;
+    const auto chosenHere = [&] { return chosenFabric_ && chosenFabric_->target == target ? &*chosenFabric_ : nullptr; };
+    if (const std::string name = fabricMenu_->draw("fabric", chosenHere() ? chosenHere()->name : ""); !name.empty()) {
+        try {
+            std::vector<std::string> warnings;
+            ChosenFabric chosen = chooseFabric(target, name, scene(), edits_->meshesOf(target), warnings);
+            p = chosen.params;
+            presetIndex_ = -1;
+            showFinal_ = false;  // the rendered frame is of the old cloth
+            showDraftOf(chosen.wif, warnings);
+            chosenFabric_ = std::move(chosen);
+            status_ = "fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")");
+            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    measuresLine_.clear();
+    auto [scale, first] = metresPerUv_.try_emplace(target);
+    if (first) {
+        try {
+            scale->second = worldLengthPerUv(scene(), edits_->meshesOf(target));
+        } catch (const std::invalid_argument&) {  // no UVs: a cloth of no known size
+        }
+    }
+    if (!scale->second) {
+        ImGui::TextDisabled("(its meshes have no UVs to measure the cloth by)");
+        return;
+    }
+    try {
+        validate(p);  // the sliders' message below says what is wrong
+    } catch (const std::invalid_argument&) {
+        return;
+    }
+    measuresLine_ = describe(measureOnMesh(p, *scale->second, chosenHere()));
+    ImGui::TextWrapped("%s", measuresLine_.c_str());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the repeat on its meshes, %.3g x %.3g cm per UV unit; the yarn counts of the fabric chosen "
+                          "while its repeat and yarn widths stay, else each side weighed from its width",
+                          100.0 * scale->second->x, 100.0 * scale->second->y);
+}
+
+void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>& warnings) {
+    if (wif.empty()) {
+        if (draftEdit_ == editIndex_) draft_.reset();
+        return;
+    }
+    draft_ = DraftEditor::open(wif, warnings);
+    draftEdit_ = editIndex_;
+    copyToBuffer(draftPath_, wif);
+}
+
 void PreviewWindow::drawMaterialControls(WovenParams& p) {
+    drawFabricControls(p);
     const auto& presets = weavePresets();
     const char* presetName = presetIndex_ >= 0 ? presets[presetIndex_].name.c_str() : "(custom)";
     if (ui::BeginCombo("weave preset", presetName)) {
@@ -83,16 +139,12 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         try {
             std::vector<std::string> warnings;
             const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
-            p = read.params;
-            if (read.threadsPerCm) p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target), *read.threadsPerCm);
+            p = scaledToMeshes(read, scene(), edits_->meshesOf(target), warnings);
             presetIndex_ = -1;
+            if (chosenFabric_ && chosenFabric_->target == target) chosenFabric_.reset();
             status_ = std::string("loaded ") + materialPath_;
+            if (!read.wif.empty()) showDraftOf(read.wif, warnings);
             for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-            if (!read.wif.empty()) {
-                draft_ = DraftEditor::open(read.wif, warnings);
-                draftEdit_ = editIndex_;
-                copyToBuffer(draftPath_, read.wif);
-            }
         } catch (const std::exception& e) {
             status_ = e.what();
         }

@@ -20,7 +20,7 @@ constexpr float kFieldWidth = 240.0f;
 
 float PreviewWindow::labelWidth() {
     // Every label the panel puts beside a field (checkboxes and buttons size themselves).
-    static const char* const labels[] = {"exposure",   "tone map",        "target",     "woven",    "weave preset",
+    static const char* const labels[] = {"exposure",   "tone map",        "target",     "woven",    "fabric",  "weave preset",
                                          "scene file", "draft file",      "render size", "spp",     "noise threshold",
                                          "integrator", "image file",      "intensity",  "position", "direction",
                                          "environment"};

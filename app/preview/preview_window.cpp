@@ -17,6 +17,7 @@
 #include "demo_scene.h"
 #include "gl_error.h"
 #include "image_io.h"
+#include "image_texture.h"
 #include "scene_loader.h"
 #include "woven_assignment.h"
 
@@ -45,19 +46,6 @@ GLFWwindow* createWindow(int width, int height) {
     const char* why = nullptr;
     glfwGetError(&why);
     throw GlError(std::string("could not create an OpenGL 3.3+ core window: ") + (why ? why : "unknown GLFW error"));
-}
-
-// RGBA8 of `image` through the display transform of PNG output.
-std::vector<uint8_t> displayBytes(const Image& image, const DisplayTransform& transform) {
-    std::vector<uint8_t> bytes(image.pixels.size() * 4);
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        const glm::u8vec3 c = displayColor(image.pixels[i], transform);
-        bytes[4 * i] = c.r;
-        bytes[4 * i + 1] = c.g;
-        bytes[4 * i + 2] = c.b;
-        bytes[4 * i + 3] = 255;
-    }
-    return bytes;
 }
 
 }  // namespace
@@ -102,6 +90,7 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
 PreviewWindow::~PreviewWindow() {
     final_.cancel();
     glDeleteTextures(1, &finalTexture_);
+    fabricMenu_.reset();
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -122,6 +111,8 @@ void PreviewWindow::openScene(const std::string& path) {
     renderer_->setMeshes(scene());
     picker_.reset();
     pickedMesh_ = -1;
+    chosenFabric_.reset();
+    metresPerUv_.clear();
     lights_ = PreviewLights::fromScene(scene());
     camera_ = OrbitCamera::forScene(scene());
     // The panel starts on the first woven material, as an edit of its own name (no change yet).
@@ -272,13 +263,7 @@ void PreviewWindow::handleMouse() {
 }
 
 void PreviewWindow::updateFinalTexture(const FilmImage& film) {
-    const std::vector<uint8_t> bytes = displayBytes(film.radiance, display_);
-    glBindTexture(GL_TEXTURE_2D, finalTexture_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, film.radiance.width, film.radiance.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 bytes.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    uploadImageTexture(finalTexture_, film.radiance, display_);
 }
 
 // The rendered frame, letterboxed over the preview (row 0 of the image is its top).
@@ -326,12 +311,24 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     glfwGetWindowSize(window_, &width, &height);
     nlohmann::json image = nullptr;
     if (finalImage_) image = {finalImage_->radiance.width, finalImage_->radiance.height};
+    // The edited material as the panel shows it: its fabric, repeat and measures.
+    nlohmann::json material = nullptr;
+    if (const WovenParams* p = editedParams()) {
+        const std::string& target = edits_->edits()[size_t(editIndex_)].target;
+        const bool chosen = chosenFabric_ && chosenFabric_->target == target;
+        material = {{"target", target},
+                    {"fabric", chosen ? nlohmann::json(chosenFabric_->name) : nlohmann::json(nullptr)},
+                    {"repeat", {p->repeat.x, p->repeat.y}},
+                    {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
+                    {"measures", measuresLine_}};
+    }
     map["state"] = {
         {"frame", frame_},
         {"window", {{"pos", {x, y}}, {"size", {width, height}}}},
         {"status", status_},
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
+        {"material", material},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
                     {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},

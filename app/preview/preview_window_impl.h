@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,8 @@
 
 #include "draft_editor.h"
 #include "draft_view.h"
+#include "fabric_choice.h"
+#include "fabric_menu.h"
 #include "final_render.h"
 #include "interactive_resolution.h"
 #include "orbit_camera.h"
@@ -55,6 +58,10 @@ private:
     void drawSelection();
     void drawMaterialControls(WovenParams& p);
     void drawDraftControls(WovenParams& p);
+    void drawFabricControls(WovenParams& p);
+    // A material's draft ("wif") in the draft view of the edited material; none: that edit's
+    // draft is closed, for it no longer describes the material.
+    void showDraftOf(const std::string& wif, std::vector<std::string>& warnings);
     void drawDraftWindow();
     void applyEdits();
     void drawLightControls();
@@ -113,6 +120,15 @@ private:
     int draftEdit_ = -1;
     DraftView draftView_;
     char draftPath_[512] = "draft.wif";
+
+    // The Fabrics menu, made on first use (with the GL context current, as it must be when it
+    // goes); the fabric last chosen, for the edit it was chosen for; the length per UV unit of
+    // each target's meshes, measured once a scene (nullopt: they have no UVs to measure); and
+    // this frame's measures of the edited material, empty where its meshes' size is unknown.
+    std::unique_ptr<FabricMenu> fabricMenu_;
+    std::optional<ChosenFabric> chosenFabric_;
+    std::map<std::string, std::optional<glm::dvec2>> metresPerUv_;
+    std::string measuresLine_;
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;

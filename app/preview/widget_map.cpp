@@ -118,8 +118,8 @@ void EndCombo() {
         current->pendingCombos_.pop_back();
     }
 }
-bool Selectable(const char* label, bool selected) {
-    return recorded(ImGui::Selectable(label, selected), label, "selectable");
+bool Selectable(const char* label, bool selected, ImGuiSelectableFlags flags, const ImVec2& size) {
+    return recorded(ImGui::Selectable(label, selected, flags, size), label, "selectable");
 }
 bool Combo(const char* label, int* current, const char* const items[], int count) {
     return recorded(ImGui::Combo(label, current, items, count), label, "combo");

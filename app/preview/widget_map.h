@@ -68,7 +68,7 @@ bool Checkbox(const char* label, bool* v);
 bool CollapsingHeader(const char* label, ImGuiTreeNodeFlags flags = 0);
 bool BeginCombo(const char* label, const char* preview);  // then ui::EndCombo() when it returned true
 void EndCombo();
-bool Selectable(const char* label, bool selected);
+bool Selectable(const char* label, bool selected, ImGuiSelectableFlags flags = 0, const ImVec2& size = ImVec2(0, 0));
 bool Combo(const char* label, int* current, const char* const items[], int count);
 bool SliderFloat(const char* label, float* v, float min, float max, const char* format = "%.3f",
                  ImGuiSliderFlags flags = 0);

@@ -6,8 +6,9 @@ It checks, at the default 1280x800 window: no two widgets share an ImGui ID, wit
 open (the Lights header is clicked open); no label runs past the panel's edge; the Render button
 is on screen without scrolling; the render size fields take "160 Tab 120 Enter" as 160x120 and say
 so in the status line when a value is clamped; the Render button renders (the final frame arrives
-at 160x120); Save PNG writes that frame; SIGTERM closes the window. While a text field has the
-focus, the view is drawn at full resolution.
+at 160x120); Save PNG writes that frame; the Fabrics menu lists the library and denim chosen in
+it becomes the edited material at its thread counts, measured in the panel; SIGTERM closes the
+window. While a text field has the focus, the view is drawn at full resolution.
 
 Usage: window_click_xvfb.py WOVEN_BINARY
 """
@@ -249,6 +250,37 @@ def main(woven):
         check(brightest > 40 and len(colours) > 50, f'render.png is (nearly) black: max {brightest}, {len(colours)} colours')
         print(f'render.png: {width}x{height}, {len(colours)} colours')
         check_panel(m, 'after the render')
+
+        # The Fabrics menu: denim chosen in its combo becomes the edited material at denim's thread
+        # counts on the 2 m procedural cloth, and the panel measures it as `woven fabrics` does.
+        while not window.item('fabric', 'combo')['visible']:
+            x0, y0, x1, y1 = m['windows']['woven']['clip']
+            wx, wy = m['state']['window']['pos']
+            window.xdotool('mousemove', str(int(wx + (x0 + x1) / 2)), str(int(wy + (y0 + y1) / 2)))
+            window.xdotool('click', '5')
+            m = window.read()
+            window.frames()
+        window.click('fabric', 'combo')
+        # On its first frame a popup is measured, hidden, and then placed within the window.
+        m = window.wait('the Fabrics menu open', lambda m: any(i['label'] == 'denim' and i['kind'] == 'selectable'
+                                                                and i['visible'] for i in m['items']), 30)
+        window.frames()
+        names = [i['label'] for i in m['items'] if i['kind'] == 'selectable' and i['window'] != 'woven']
+        check(len(names) >= 12, f'the Fabrics menu lists {names}')
+        check_panel(m, 'with the Fabrics menu open')
+        window.click('denim', 'selectable')
+        m = window.wait('denim chosen', lambda m: m['state']['material']['fabric'] == 'denim', 30)
+        material = m['state']['material']
+        repeat, measures = material['repeat'], material['measures']
+        # The cloth spans 2 m of x and z over its UVs, and its waves add a few percent of length.
+        check(all(200 * n <= r <= 1.05 * 200 * n for r, n in zip(repeat, (25, 16))),
+              f'denim (25 x 16 per cm) on the 2 m cloth has repeat {repeat}')
+        check('25 x 16 threads/cm' in measures and '381 g/m2' in measures and 'about' not in measures
+              and '0.97 cloth' in measures,
+              f'the panel measures denim as "{measures}"')
+        check(material['warp_color'][2] > material['warp_color'][0], f'denim\'s warp is not indigo: {material["warp_color"]}')
+        check(m['state']['status'].startswith('fabric denim'), f'status "{m["state"]["status"]}"')
+        print(f'Fabrics menu: {len(names)} fabrics; denim chosen: repeat {repeat[0]:.0f} x {repeat[1]:.0f}, {measures}')
 
         check('ID clash' not in window.errors(), f'clash warnings on stderr: {window.errors()}')
         code = window.close()
