@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "number_checks.h"

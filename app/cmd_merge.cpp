@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "atomic_file.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "output_path.h"

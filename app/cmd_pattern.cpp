@@ -8,6 +8,7 @@
 #include "draft_tile.h"
 #include "drawdown_image.h"
 #include "fabric_measures.h"
+#include "display_transform.h"
 #include "image_io.h"
 #include "material_json.h"
 #include "untrusted_json.h"

@@ -8,6 +8,7 @@
 #include "final_render.h"
 #include "frame_options.h"
 #include "headless_gl.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"

@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "number_checks.h"
 #include "frame_limits.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "output_path.h"

@@ -17,6 +17,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "frame_pattern.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "render_options.h"

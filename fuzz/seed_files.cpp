@@ -9,6 +9,7 @@
 
 #include "draft.h"
 #include "gltf_builder.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "temp_dir.h"
 #include "wif_writer.h"

@@ -8,6 +8,7 @@
 
 #include "drawdown.h"
 #include "srgb.h"
+#include "display_transform.h"
 
 namespace woven {
 

@@ -11,6 +11,7 @@
 #include "woven_assignment.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
+#include "display_transform.h"
 
 namespace woven {
 

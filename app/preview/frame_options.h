@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "display_transform.h"
 #include "image_io.h"
 #include "render_job.h"
 #include "scene_loader.h"

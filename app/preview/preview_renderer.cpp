@@ -9,6 +9,7 @@
 #include "gl_error.h"
 #include "orbit_camera.h"
 #include "sheen_lobe.h"
+#include "display_transform.h"
 
 namespace woven {
 

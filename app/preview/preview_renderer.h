@@ -9,6 +9,7 @@
 
 #include "gltf_gl_material.h"
 #include "gpu_mesh.h"
+#include "display_transform.h"
 #include "image_io.h"
 #include "preview_lights.h"
 #include "shadow_maps.h"

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "preview_window_impl.h"

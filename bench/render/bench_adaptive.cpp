@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_io.h"
 #include "image_io.h"
 #include "render_job.h"
 #include "scene_loader.h"

@@ -11,6 +11,7 @@
 #include "far_field.h"
 #include "flat_cloth.h"
 #include "gltf_material.h"
+#include "display_transform.h"
 #include "image_io.h"
 #include "integrators.h"
 #include "render_job.h"

@@ -8,10 +8,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "frame_io.h"
 #include "integrator.h"
-#include "render_job.h"
 
 namespace woven {
+
+// Mean radiance and sample count per pixel, and what an EXR keeps so that renders of disjoint
+// sample ranges merge exactly (frame_io.h): the exact sums, the sample range and the frame.
+struct FilmImage {
+    Image radiance;          // linear RGB mean
+    std::vector<float> sampleCount;  // per pixel
+    std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
+    SampleRange samples{};
+    FrameIdentity frame{};
+
+    // As a frame file keeps it (writeFrame): everything `woven merge` needs.
+    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples, frame}; }
+};
 
 // One pass before it is added: each pixel's estimate, and the splats of each tile in tile order.
 struct PassImage {

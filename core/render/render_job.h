@@ -9,10 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "exact_sum.h"
-#include "image_io.h"
+#include "film.h"
 #include "integrators.h"
-#include "sample_range.h"
 #include "sampler.h"
 #include "scene_description.h"
 
@@ -57,19 +55,6 @@ struct RenderProgress {
     double samplesPerSecond = 0.0;          // camera samples (one per sampled pixel per pass) per second
     uint64_t rays = 0;                      // rays traced by the passes so far (shadow rays included)
     double raysPerSecond = 0.0;
-};
-
-// Mean radiance and sample count per pixel, and what an EXR keeps so that renders of disjoint
-// sample ranges merge exactly (image_io.h): the exact sums, the sample range and the frame.
-struct FilmImage {
-    Image radiance;          // linear RGB mean
-    std::vector<float> sampleCount;  // per pixel
-    std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
-    SampleRange samples{};
-    FrameIdentity frame{};
-
-    // As a frame file keeps it (writeFrame): everything `woven merge` needs.
-    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples, frame}; }
 };
 
 class RenderJob {

@@ -1,16 +1,14 @@
 #pragma once
-// Reading and writing woven::Image: PNG/JPEG/HDR/EXR in, PNG (display-ready) and EXR (linear,
-// with a per-pixel sample count so renders of disjoint sample ranges can be merged) out.
-// Every failure throws ImageError naming the file; every write is atomic (atomic_file.h).
+// Decoding images into woven::Image and TextureImage: PNG/JPEG/WebP/HDR/EXR textures and
+// environment maps, read as untrusted input within the limits below, and textures encoded back
+// to PNG as they are. A frame's files (EXR with its sample counts, display-ready PNG) are the
+// render layer's (frame_io.h). Every failure throws ImageError naming the file; every write is
+// atomic (atomic_file.h).
 #include <cstdint>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "exact_sum.h"
-#include "frame_identity.h"
-#include "sample_range.h"
 #include "scene_description.h"
 #include "srgb.h"  // PNG and JPEG are sRGB-encoded
 
@@ -56,55 +54,5 @@ TextureImage decodeTexture(const unsigned char* data, size_t size, const std::st
 // Throws ImageError for a float or empty texture.
 std::vector<unsigned char> encodeTexturePng(const TextureImage& texture);
 void writeTexturePng(const std::string& path, const TextureImage& texture);  // atomic
-
-// Linear radiance to 8-bit display colour: scale by 2^exposure, tone-map, then sRGB-encode.
-// PNG output, the previewer's window (and shaders/display.frag) all go through this.
-enum class ToneMap {
-    Clamp,     // values above 1 clip to white: colours are the reflectances as given
-    Reinhard,  // c / (1 + c) per channel
-    Aces       // Narkowicz's fit of the ACES filmic curve
-};
-struct DisplayTransform {
-    float exposure = 0.0f;  // in stops
-    ToneMap toneMap = ToneMap::Aces;  // what woven shows and writes unless told otherwise
-};
-glm::u8vec3 displayColor(const glm::vec3& linear, const DisplayTransform& transform);
-void writePng(const std::string& path, const Image& image, const DisplayTransform& transform = {});
-
-// A linear image with, optionally, how many samples each pixel's value is the mean of, and what
-// a render keeps so that renders of disjoint sample ranges merge exactly: the exact sums of the
-// samples, which samples they are and which frame they are samples of.
-struct ExrImage {
-    Image image;
-    std::vector<float> sampleCount;        // empty, or one per pixel (channel "N")
-    std::vector<ExactSum> sampleSums{};    // empty, or three per pixel: R, G, B
-    std::optional<SampleRange> samples{};  // the same for every pixel
-    std::optional<FrameIdentity> frame{};  // none in files of other tools and of woven before it
-};
-enum class ExrPrecision { Half, Float };
-
-// Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
-// float, exact for counts below 2^24), ZIP-compressed. Sample sums go to 32-bit unsigned
-// channels sum.B0-sum.B3, sum.G0-sum.G3, sum.R0-sum.R3 (ExactSum::words(), least significant
-// first), the sample range to attributes wovenFirstSample and wovenSampleCount (decimal strings:
-// EXR has no 64-bit integer attribute; files of earlier versions have ints, which are read too),
-// the frame's identity to wovenScene, wovenSeed (strings), wovenIntegrator (a string),
-// wovenMaxDepth and wovenFilter (ints); other tools read R, G, B (and N) and ignore the rest.
-void writeExr(const std::string& path, const ExrImage& exr,
-              ExrPrecision precision = ExrPrecision::Half);
-ExrImage readExr(const std::string& path);
-
-// ".exr" for "out/Frame.EXR": the extension with its dot, in lower case; "" for none.
-std::string lowerExtension(const std::string& path);
-
-// A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
-// 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
-void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
-// Throws the ImageError writeFrame would for `path`'s extension, or the FileWriteError for a
-// folder that is missing or not writable (atomic_file.h): check before a long render.
-void checkFrameFileName(const std::string& path);
-// "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
-// a finished one.
-std::string partialFrameName(const std::string& path);
 
 }  // namespace woven

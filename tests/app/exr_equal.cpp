@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "frame_io.h"
 #include "image_io.h"
 
 int main(int argc, char** argv) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../scene/gltf_builder.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "../common/run_woven.h"
 

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "frame_io.h"
 #include "image_io.h"
 #include "../common/run_woven.h"
 

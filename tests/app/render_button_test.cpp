@@ -15,6 +15,7 @@
 
 #include "../scene/gltf_builder.h"
 #include "../scene/temp_dir.h"
+#include "frame_io.h"
 #include "image_io.h"
 
 namespace woven {

@@ -13,6 +13,7 @@
 
 #include "../scene/temp_dir.h"
 #include "frame_pattern.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "shell_quote.h"
 

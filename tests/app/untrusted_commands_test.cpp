@@ -16,6 +16,7 @@
 #include <limits>
 #include <string>
 
+#include "frame_io.h"
 #include "image_io.h"
 #include "../common/run_woven.h"
 

@@ -11,6 +11,7 @@
 
 #include "demo_scene.h"
 #include "gl_test_context.h"
+#include "display_transform.h"
 
 namespace woven::test {
 namespace {

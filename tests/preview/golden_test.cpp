@@ -12,6 +12,7 @@
 
 #include "demo_scene.h"
 #include "gl_test_context.h"
+#include "display_transform.h"
 #include "image_io.h"
 #include "weave_presets.h"
 

@@ -14,6 +14,7 @@
 
 #include "../scene/gltf_builder.h"
 #include "../scene/temp_dir.h"
+#include "frame_io.h"
 #include "image_io.h"
 
 namespace woven {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <vector>
 
+#include "frame_io.h"
 #include "image_io.h"
 #include "temp_dir.h"
 

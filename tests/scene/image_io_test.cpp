@@ -1,5 +1,6 @@
 // Image reading and writing: round trips through real PNG and EXR files, the sRGB transfer
 // functions against their published constants, and that failed writes leave no file.
+#include "frame_io.h"
 #include "image_io.h"
 
 #include <gmock/gmock.h>

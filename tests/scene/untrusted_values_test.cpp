@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "gltf_builder.h"
+#include "frame_io.h"
 #include "image_io.h"
 #include "scene_lighting.h"
 #include "scene_loader.h"

@@ -1,0 +1,54 @@
+#pragma once
+// A rendered frame's files: OpenEXR with the linear radiance, the per-pixel sample counts and
+// what `woven merge` needs to merge renders of disjoint sample ranges exactly (exact sums, the
+// sample range, the frame's identity), or a display-ready PNG. Every failure throws ImageError
+// naming the file; every write is atomic (atomic_file.h).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "display_transform.h"
+#include "exact_sum.h"
+#include "frame_identity.h"
+#include "image_io.h"
+#include "sample_range.h"
+
+namespace woven {
+
+// A linear image with, optionally, how many samples each pixel's value is the mean of, and what
+// a render keeps so that renders of disjoint sample ranges merge exactly: the exact sums of the
+// samples, which samples they are and which frame they are samples of.
+struct ExrImage {
+    Image image;
+    std::vector<float> sampleCount;        // empty, or one per pixel (channel "N")
+    std::vector<ExactSum> sampleSums{};    // empty, or three per pixel: R, G, B
+    std::optional<SampleRange> samples{};  // the same for every pixel
+    std::optional<FrameIdentity> frame{};  // none in files of other tools and of woven before it
+};
+enum class ExrPrecision { Half, Float };
+
+// Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
+// float, exact for counts below 2^24), ZIP-compressed. Sample sums go to 32-bit unsigned
+// channels sum.B0-sum.B3, sum.G0-sum.G3, sum.R0-sum.R3 (ExactSum::words(), least significant
+// first), the sample range to attributes wovenFirstSample and wovenSampleCount (decimal strings:
+// EXR has no 64-bit integer attribute; files of earlier versions have ints, which are read too),
+// the frame's identity to wovenScene, wovenSeed (strings), wovenIntegrator (a string),
+// wovenMaxDepth and wovenFilter (ints); other tools read R, G, B (and N) and ignore the rest.
+void writeExr(const std::string& path, const ExrImage& exr,
+              ExrPrecision precision = ExrPrecision::Half);
+ExrImage readExr(const std::string& path);
+
+// ".exr" for "out/Frame.EXR": the extension with its dot, in lower case; "" for none.
+std::string lowerExtension(const std::string& path);
+
+// A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
+// 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
+void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
+// Throws the ImageError writeFrame would for `path`'s extension, or the FileWriteError for a
+// folder that is missing or not writable (atomic_file.h): check before a long render.
+void checkFrameFileName(const std::string& path);
+// "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
+// a finished one.
+std::string partialFrameName(const std::string& path);
+
+}  // namespace woven
