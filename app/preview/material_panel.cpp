@@ -54,7 +54,10 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
         return;
     }
     measuresLine_ = describe(measureOnMesh(p, *scale->second, chosenHere()));
-    ImGui::TextWrapped("%s", measuresLine_.c_str());
+    // One figure a line: ImGui wraps within a number ("0." and "16 cm").
+    std::string lines = measuresLine_;
+    for (size_t at = lines.find(", "); at != std::string::npos; at = lines.find(", ", at)) lines.replace(at, 2, "\n");
+    ImGui::TextUnformatted(lines.c_str());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the repeat on its meshes, %.3g x %.3g cm per UV unit; the yarn counts of the fabric chosen "
                           "while its repeat and yarn widths stay, else each side weighed from its width",
