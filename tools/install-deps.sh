@@ -23,6 +23,7 @@ test_packages=(
   libgtest-dev libbenchmark-dev xvfb xauth xdotool gnuplot-nox
   clang libclang-rt-14-dev  # the fuzz and asan presets (docs/FUZZING.md): libFuzzer, ASan, UBSan
   slurm-wlm munge
+  imagemagick  # tools/fabric_sheet.sh stitches docs/RESULTS.md's sheet of the fabric library
 )
 if $tests; then packages+=("${test_packages[@]}"); fi
 missing=()

@@ -3,7 +3,7 @@
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
 # render benchmarks, preview frame time, the paper's figures and the sample drafts, the weave
 # filter's time to a clean frame on the default scene and the paper's satin, and the bakes. About
-# 29 minutes on 2 cores.
+# 31 minutes on 2 cores.
 # Usage: tools/make_results.sh [build-dir]   (builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -145,6 +145,22 @@ bake_figure() {
   echo "the houndstooth at its real scale (\"scale\": \"draft\": 20 threads per cm through the mesh's"
   echo "measured UV-to-world scale), seen from 37 cm with a 6 degree field of view."
   for scene in houndstooth gingham twill_stripes houndstooth_real_scale; do figure "$scene"; done
+  echo
+  echo '## The fabric library at its real size'
+  echo
+  echo 'Every fabric of assets/fabrics (`woven fabrics`, docs/FABRICS.md) on a flat 4 cm square swatch'
+  echo 'whose UVs span it once, rendered through `{"preset": NAME}` and nothing else, so that each'
+  echo 'shows its real thread count: 400 pixels for the 4 cm, 100 pixels per cm (the satin'\''s 100 ends'
+  echo 'per cm a pixel each), seen square on under a grey sky and a light from the upper left, 64 spp.'
+  echo 'The tartan'\''s sett is 5.2 cm, so the swatch shows three quarters of it; the voile'\''s gaps show'
+  echo 'the sky through it.'
+  echo
+  echo '![the fabric library, each on a 4 cm swatch](results/fabric_sheet.png)'
+  echo
+  echo '```'
+  echo "tools/fabric_sheet.sh $woven $out/fabric_sheet.png"
+  echo '```'
+  tools/fabric_sheet.sh "$woven" "$out/fabric_sheet.png" 2>/dev/null
   echo
   echo "## Baked to glTF: the model beside its bake"
   echo
