@@ -34,113 +34,315 @@ glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
 
 float average(const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; }
 
-// KHR_lights_punctual's spot falloff: squared, linear in cos between the outer and inner cones.
-struct SpotCone {
-    float cosOuter, scale;
-    SpotCone(float inner, float outer)
-        : cosOuter(std::cos(outer)), scale(1.0f / std::max(1e-3f, std::cos(inner) - std::cos(outer))) {}
-    float falloff(float cosTheta) const {
-        const float f = std::clamp((cosTheta - cosOuter) * scale, 0.0f, 1.0f);
-        return f * f;
-    }
-    // Integral of falloff over the sphere: 2 pi (width / 3 + (1 - cosOuter - width)).
-    float solidAngle() const {
-        const float width = std::min(1.0f / scale, 1.0f - cosOuter);
-        const float rampEnd = width * scale;  // falloff at the ramp's end: 1 unless the cone is cut at the pole
-        return 2.0f * kPi * (width * rampEnd * rampEnd / 3.0f + (1.0f - cosOuter - width));
-    }
-};
+// A ray towards the scene from infinitely far along -toLight: from a disk of the bounding
+// sphere's radius, perpendicular to it and one radius outside the sphere's centre (pbrt-v3).
+void infiniteLightRay(const SceneSphere& sphere, const glm::vec3& toLight, const glm::vec2& u, LightLeSample* s) {
+    glm::vec3 v2;
+    const glm::vec3 v1 = orthogonal(toLight, &v2);
+    const glm::vec2 disk = sampleUniformDisk(u);
+    s->ray.o = sphere.centre + sphere.radius * (disk.x * v1 + disk.y * v2 + toLight);
+    s->ray.d = -toLight;
+    s->nLight = s->ray.d;
+    s->pdfPos = 1.0f / (kPi * sphere.radius * sphere.radius);
+}
+
+// The density of a ray's origin on that disk.
+float infiniteLightPdfPos(const SceneSphere& sphere) { return 1.0f / (kPi * sphere.radius * sphere.radius); }
+
+// A point light's sample towards ref: its intensity over the squared distance.
+std::optional<LightLiSample> pointSampleLi(const glm::vec3& position, const glm::vec3& I, const glm::vec3& ref) {
+    LightLiSample s;
+    s.nLight = glm::vec3(0.0f);
+    s.pLight = position;
+    const glm::vec3 toLight = position - ref;
+    const float dist2 = glm::dot(toLight, toLight);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    s.wi = toLight / std::sqrt(dist2);
+    s.pdf = 1.0f;
+    s.L = I / dist2;
+    return s;
+}
 }  // namespace
 
-struct Light::Data {
-    // Triangle
-    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
-    float area = 0.0f;
-    bool twoSided = false;
-    const SurfaceMaterial* emitter = nullptr;  // else the constant L
-    std::array<TexCoords, 3> corners;
-    // Point, spot, directional: position, direction of travel; L is the intensity (W/sr) or the
-    // directional light's irradiance (W/m^2). Triangle: radiance. Environment: colour.
-    glm::vec3 position{0.0f}, direction{0.0f, 0.0f, -1.0f};
-    glm::vec3 L{0.0f};
-    glm::vec3 spotX{0.0f}, spotY{0.0f};
-    SpotCone cone{0.0f, 0.0f};
-    // Environment
-    std::shared_ptr<const Image> image;
-    float rotation = 0.0f;
-    std::shared_ptr<const PiecewiseConstant2D> distribution;  // over the image's (u, v)
-    glm::vec3 meanRadiance{0.0f};                             // over the sphere of directions
-    // Infinite lights
-    Bounds bounds;
-    glm::vec3 centre{0.0f};
-    float radius = 0.0f;
-};
+SpotCone::SpotCone(float inner, float outer)
+    : cosOuter(std::cos(outer)), scale(1.0f / std::max(1e-3f, std::cos(inner) - std::cos(outer))) {}
+
+float SpotCone::falloff(float cosTheta) const {
+    const float f = std::clamp((cosTheta - cosOuter) * scale, 0.0f, 1.0f);
+    return f * f;
+}
+
+// 2 pi (width / 3 + (1 - cosOuter - width)).
+float SpotCone::solidAngle() const {
+    const float width = std::min(1.0f / scale, 1.0f - cosOuter);
+    const float rampEnd = width * scale;  // falloff at the ramp's end: 1 unless the cone is cut at the pole
+    return 2.0f * kPi * (width * rampEnd * rampEnd / 3.0f + (1.0f - cosOuter - width));
+}
+
+// Triangle
+
+glm::vec3 TriangleLight::radiance(const glm::vec2& bary) const {
+    if (!emitter) return L;
+    const float b0 = 1.0f - bary.x - bary.y;
+    TexCoords tc = corners[0];
+    for (int set = 0; set < 2; ++set)
+        tc.uv[set] = b0 * corners[0].uv[set] + bary.x * corners[1].uv[set] + bary.y * corners[2].uv[set];
+    tc.color = b0 * corners[0].color + bary.x * corners[1].color + bary.y * corners[2].color;
+    return emitter->emission(tc);
+}
+
+glm::vec3 TriangleLight::power() const { return L * area * kPi * (twoSided ? 2.0f : 1.0f); }
+
+std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    LightLiSample s;
+    const glm::vec2 bary = sampleTriangleBarycentrics(u);
+    s.pLight = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
+    s.nLight = n;
+    const glm::vec3 toLight = s.pLight - ref;
+    const float dist2 = glm::dot(toLight, toLight);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    s.wi = toLight / std::sqrt(dist2);
+    const float cosLight = std::abs(glm::dot(n, s.wi));
+    if (!(cosLight > 0.0f)) return std::nullopt;
+    s.pdf = dist2 / (cosLight * area);
+    s.L = twoSided || glm::dot(n, -s.wi) > 0.0f ? radiance(bary) : glm::vec3(0.0f);
+    return s;
+}
+
+float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
+    const glm::vec3 toLight = pLight - ref;
+    const float cosLight = std::abs(glm::dot(nLight, glm::normalize(wi)));
+    if (!(cosLight > 0.0f) || !(area > 0.0f)) return 0.0f;
+    return glm::dot(toLight, toLight) / (cosLight * area);
+}
+
+std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    LightLeSample s;
+    const glm::vec2 bary = sampleTriangleBarycentrics(u1);
+    s.ray.o = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
+    // Two-sided: u2.x picks the face, then is stretched back to [0, 1).
+    glm::vec2 uDir = u2;
+    glm::vec3 face = n;
+    float sidePdf = 1.0f;
+    if (twoSided) {
+        sidePdf = 0.5f;
+        if (uDir.x < 0.5f) uDir.x *= 2.0f;
+        else { uDir.x = 2.0f * uDir.x - 1.0f; face = -face; }
+    }
+    const glm::vec3 local = sampleCosineHemisphere(uDir);
+    s.ray.d = Frame::fromNormal(face).toWorld(local);
+    s.nLight = face;
+    s.pdfPos = 1.0f / area;
+    s.pdfDir = sidePdf * local.z / kPi;
+    if (!(s.pdfDir > 0.0f)) return std::nullopt;
+    s.L = radiance(bary);
+    return s;
+}
+
+void TriangleLight::pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const {
+    const float cosTheta = glm::dot(nLight, ray.d);
+    *pdfPos = area > 0.0f ? 1.0f / area : 0.0f;
+    *pdfDir = twoSided ? 0.5f * std::abs(cosTheta) / kPi : std::max(cosTheta, 0.0f) / kPi;
+}
+
+// Point
+
+glm::vec3 PointLight::power() const { return 4.0f * kPi * I; }
+
+std::optional<LightLiSample> PointLight::sampleLi(const glm::vec3& ref, const glm::vec2&) const {
+    return pointSampleLi(position, I, ref);
+}
+
+std::optional<LightLeSample> PointLight::sampleLe(const glm::vec2& u1, const glm::vec2&) const {
+    LightLeSample s;
+    s.ray.o = position;
+    s.nLight = glm::vec3(0.0f);
+    s.pdfPos = 1.0f;
+    s.L = I;
+    s.ray.d = sampleUniformSphere(u1);
+    s.pdfDir = 1.0f / (4.0f * kPi);
+    return s;
+}
+
+void PointLight::pdfLe(const Ray&, const glm::vec3&, float* pdfPos, float* pdfDir) const {
+    *pdfPos = 0.0f;
+    *pdfDir = 1.0f / (4.0f * kPi);
+}
+
+// Spot
+
+glm::vec3 SpotLight::power() const { return I * cone.solidAngle(); }
+
+std::optional<LightLiSample> SpotLight::sampleLi(const glm::vec3& ref, const glm::vec2&) const {
+    std::optional<LightLiSample> s = pointSampleLi(position, I, ref);
+    if (s) s->L *= cone.falloff(glm::dot(-s->wi, direction));
+    return s;
+}
+
+std::optional<LightLeSample> SpotLight::sampleLe(const glm::vec2& u1, const glm::vec2&) const {
+    LightLeSample s;
+    s.ray.o = position;
+    s.nLight = glm::vec3(0.0f);
+    s.pdfPos = 1.0f;
+    s.L = I;
+    const glm::vec3 local = sampleUniformCone(u1, cone.cosOuter);
+    s.ray.d = local.x * x + local.y * y + local.z * direction;
+    s.pdfDir = 1.0f / (2.0f * kPi * (1.0f - cone.cosOuter));
+    s.L *= cone.falloff(local.z);
+    return s;
+}
+
+void SpotLight::pdfLe(const Ray& ray, const glm::vec3&, float* pdfPos, float* pdfDir) const {
+    *pdfPos = 0.0f;
+    *pdfDir = glm::dot(ray.d, direction) >= cone.cosOuter ? 1.0f / (2.0f * kPi * (1.0f - cone.cosOuter)) : 0.0f;
+}
+
+// Directional
+
+glm::vec3 DirectionalLight::power() const { return E * kPi * sphere.radius * sphere.radius; }
+
+std::optional<LightLiSample> DirectionalLight::sampleLi(const glm::vec3& ref, const glm::vec2&) const {
+    LightLiSample s;
+    s.nLight = glm::vec3(0.0f);
+    s.wi = -direction;
+    s.pLight = ref + s.wi * (2.0f * sphere.radius);
+    s.pdf = 1.0f;
+    s.L = E;
+    return s;
+}
+
+std::optional<LightLeSample> DirectionalLight::sampleLe(const glm::vec2&, const glm::vec2& u2) const {
+    LightLeSample s;
+    s.pdfDir = 1.0f;
+    infiniteLightRay(sphere, -direction, u2, &s);
+    s.L = E;
+    return s;
+}
+
+void DirectionalLight::pdfLe(const Ray&, const glm::vec3&, float* pdfPos, float* pdfDir) const {
+    *pdfPos = infiniteLightPdfPos(sphere);
+    *pdfDir = 0.0f;
+}
+
+// Environment
+
+glm::vec3 EnvironmentLight::Le(const glm::vec3& dir) const {
+    if (!image) return color;
+    const glm::vec2 uv = equirectUv(rotateY(glm::normalize(dir), -rotation));
+    // fmin/fmax also map a NaN (from a zero direction) to a pixel rather than to undefined behaviour.
+    const int px = int(std::fmin(std::fmax(uv.x * image->width, 0.0f), float(image->width - 1)));
+    const int py = int(std::fmin(std::fmax(uv.y * image->height, 0.0f), float(image->height - 1)));
+    return color * image->at(px, py);
+}
+
+glm::vec3 EnvironmentLight::sampleDirection(const glm::vec2& u, float* pdf) const {
+    if (!distribution) {
+        *pdf = 1.0f / (4.0f * kPi);
+        return sampleUniformSphere(u);
+    }
+    float pdfUv;
+    const glm::vec2 uv = distribution->sample(u, &pdfUv);
+    const float sinTheta = std::sin(kPi * uv.y);
+    // dOmega = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv
+    *pdf = sinTheta > 0.0f ? pdfUv / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    return rotateY(equirectDirection(uv), rotation);
+}
+
+float EnvironmentLight::pdfDirection(const glm::vec3& dir) const {
+    if (!distribution) return 1.0f / (4.0f * kPi);
+    const glm::vec2 uv = equirectUv(rotateY(glm::normalize(dir), -rotation));
+    const float sinTheta = std::sin(kPi * uv.y);
+    return sinTheta > 0.0f ? distribution->pdf(uv) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+}
+
+// Flux arriving on the scene's bounding sphere (pbrt-v4's 4 pi^2 r^2 L).
+glm::vec3 EnvironmentLight::power() const { return 4.0f * kPi * kPi * sphere.radius * sphere.radius * meanRadiance; }
+
+std::optional<LightLiSample> EnvironmentLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
+    LightLiSample s;
+    s.nLight = glm::vec3(0.0f);
+    s.wi = sampleDirection(u, &s.pdf);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    s.pLight = ref + s.wi * (2.0f * sphere.radius);
+    s.L = Le(s.wi);
+    return s;
+}
+
+float EnvironmentLight::pdfLi(const glm::vec3&, const glm::vec3& wi, const glm::vec3&, const glm::vec3&) const {
+    return pdfDirection(wi);
+}
+
+std::optional<LightLeSample> EnvironmentLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
+    LightLeSample s;
+    const glm::vec3 toLight = sampleDirection(u1, &s.pdfDir);
+    if (!(s.pdfDir > 0.0f)) return std::nullopt;
+    infiniteLightRay(sphere, toLight, u2, &s);
+    s.L = Le(toLight);
+    return s;
+}
+
+void EnvironmentLight::pdfLe(const Ray& ray, const glm::vec3&, float* pdfPos, float* pdfDir) const {
+    *pdfPos = infiniteLightPdfPos(sphere);
+    *pdfDir = pdfDirection(-ray.d);
+}
+
+// Light
 
 Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& L, bool twoSided) {
-    auto d = std::make_shared<Data>();
-    d->a = a;
-    d->b = b;
-    d->c = c;
+    TriangleLight t;
+    t.a = a;
+    t.b = b;
+    t.c = c;
     const glm::vec3 cr = glm::cross(b - a, c - a);
-    d->area = 0.5f * glm::length(cr);
-    d->n = d->area > 0.0f ? glm::normalize(cr) : glm::vec3(0.0f);
-    d->L = L;
-    d->twoSided = twoSided;
-    Light light;
-    light.type_ = Type::Triangle;
-    light.data_ = std::move(d);
-    return light;
+    t.area = 0.5f * glm::length(cr);
+    t.n = t.area > 0.0f ? glm::normalize(cr) : glm::vec3(0.0f);
+    t.L = L;
+    t.twoSided = twoSided;
+    return Light(t);
 }
 
 Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const SurfaceMaterial& emitter,
                       const std::array<TexCoords, 3>& corners) {
-    Light light = triangle(a, b, c, glm::vec3(0.0f), emitter.twoSidedEmission());
-    auto d = std::make_shared<Data>(*light.data_);
-    d->emitter = &emitter;
-    d->corners = corners;
-    light.data_ = d;
+    TriangleLight t = std::get<TriangleLight>(triangle(a, b, c, glm::vec3(0.0f), emitter.twoSidedEmission()).kind_);
+    t.emitter = &emitter;
+    t.corners = corners;
     // L only chooses lights by power: the mean over a 4 x 4 stratified set of points.
     glm::vec3 sum(0.0f);
-    for (int i = 0; i < 16; ++i) sum += light.triangleRadiance(sampleTriangleBarycentrics({(i % 4 + 0.5f) / 4, (i / 4 + 0.5f) / 4}));
-    d->L = sum / 16.0f;
-    return light;
-}
-
-glm::vec3 Light::triangleRadiance(const glm::vec2& b) const {
-    const Data& d = *data_;
-    if (!d.emitter) return d.L;
-    const float b0 = 1.0f - b.x - b.y;
-    TexCoords tc = d.corners[0];
-    for (int set = 0; set < 2; ++set)
-        tc.uv[set] = b0 * d.corners[0].uv[set] + b.x * d.corners[1].uv[set] + b.y * d.corners[2].uv[set];
-    tc.color = b0 * d.corners[0].color + b.x * d.corners[1].color + b.y * d.corners[2].color;
-    return d.emitter->emission(tc);
+    for (int i = 0; i < 16; ++i) sum += t.radiance(sampleTriangleBarycentrics({(i % 4 + 0.5f) / 4, (i / 4 + 0.5f) / 4}));
+    t.L = sum / 16.0f;
+    return Light(t);
 }
 
 Light Light::punctual(const PunctualLight& p) {
-    auto d = std::make_shared<Data>();
-    d->position = p.position;
-    d->direction = glm::normalize(p.direction);
-    d->L = p.intensity;
-    Light light;
+    const glm::vec3 direction = glm::normalize(p.direction);
     switch (p.type) {
-    case PunctualLight::Type::Point: light.type_ = Type::Point; break;
-    case PunctualLight::Type::Spot:
-        light.type_ = Type::Spot;
-        d->cone = SpotCone(p.innerConeAngle, p.outerConeAngle);
-        d->spotX = orthogonal(d->direction, &d->spotY);
-        break;
-    case PunctualLight::Type::Directional: light.type_ = Type::Directional; break;
+    case PunctualLight::Type::Point: return Light(PointLight{p.position, p.intensity});
+    case PunctualLight::Type::Spot: {
+        SpotLight s;
+        s.position = p.position;
+        s.direction = direction;
+        s.I = p.intensity;
+        s.cone = SpotCone(p.innerConeAngle, p.outerConeAngle);
+        s.x = orthogonal(direction, &s.y);
+        return Light(s);
     }
-    light.data_ = std::move(d);
-    return light;
+    case PunctualLight::Type::Directional: {
+        DirectionalLight d;
+        d.direction = direction;
+        d.E = p.intensity;
+        return Light(d);
+    }
+    }
+    return Light(PointLight{p.position, p.intensity});
 }
 
 Light Light::environment(const Environment& env) {
-    auto d = std::make_shared<Data>();
-    d->L = env.color;
-    d->rotation = env.rotation;
-    d->meanRadiance = env.color;
+    EnvironmentLight e;
+    e.color = env.color;
+    e.rotation = env.rotation;
+    e.meanRadiance = env.color;
     if (env.image && env.image->width > 0 && env.image->height > 0) {
         auto image = std::make_shared<Image>(*env.image);
         for (glm::vec3& p : image->pixels) p = glm::max(p, glm::vec3(0.0f));  // negative radiance is noise
@@ -160,233 +362,35 @@ Light Light::environment(const Environment& env) {
             }
             weights += double(sinTheta) * w;
         }
-        d->meanRadiance = env.color * glm::vec3(weighted / weights);
-        d->distribution = std::make_shared<PiecewiseConstant2D>(func, w, h);
-        d->image = std::move(image);
+        e.meanRadiance = env.color * glm::vec3(weighted / weights);
+        e.distribution = std::make_shared<PiecewiseConstant2D>(func, w, h);
+        e.image = std::move(image);
     }
-    Light light;
-    light.type_ = Type::Environment;
-    light.data_ = std::move(d);
-    return light;
+    return Light(e);
 }
 
 void Light::setSceneBounds(const Bounds& b) {
-    auto d = std::make_shared<Data>(*data_);
-    d->bounds = b;
-    d->centre = b.centre();
-    d->radius = std::max(b.radius(), 1e-3f);
-    data_ = std::move(d);
-}
-
-glm::vec3 Light::power() const {
-    const Data& d = *data_;
-    switch (type_) {
-    case Type::Triangle: return d.L * d.area * kPi * (d.twoSided ? 2.0f : 1.0f);
-    case Type::Point: return 4.0f * kPi * d.L;
-    case Type::Spot: return d.L * d.cone.solidAngle();
-    case Type::Directional: return d.L * kPi * d.radius * d.radius;
-    // Flux arriving on the scene's bounding sphere (pbrt-v4's 4 pi^2 r^2 L).
-    case Type::Environment: return 4.0f * kPi * kPi * d.radius * d.radius * d.meanRadiance;
-    }
-    return glm::vec3(0.0f);
-}
-
-glm::vec3 Light::L(const glm::vec3& n, const glm::vec3& w, const TexCoords& tc) const {
-    if (type_ != Type::Triangle) return glm::vec3(0.0f);
-    if (!data_->twoSided && !(glm::dot(n, w) > 0.0f)) return glm::vec3(0.0f);
-    return data_->emitter ? data_->emitter->emission(tc) : data_->L;
-}
-
-glm::vec3 Light::Le(const glm::vec3& dir) const {
-    if (type_ != Type::Environment) return glm::vec3(0.0f);
-    const Data& d = *data_;
-    if (!d.image) return d.L;
-    const glm::vec2 uv = equirectUv(rotateY(glm::normalize(dir), -d.rotation));
-    // fmin/fmax also map a NaN (from a zero direction) to a pixel rather than to undefined behaviour.
-    const int x = int(std::fmin(std::fmax(uv.x * d.image->width, 0.0f), float(d.image->width - 1)));
-    const int y = int(std::fmin(std::fmax(uv.y * d.image->height, 0.0f), float(d.image->height - 1)));
-    return d.L * d.image->at(x, y);
-}
-
-glm::vec3 Light::sampleEnvironment(const glm::vec2& u, float* pdf) const {
-    const Data& d = *data_;
-    if (!d.distribution) {
-        *pdf = 1.0f / (4.0f * kPi);
-        return sampleUniformSphere(u);
-    }
-    float pdfUv;
-    const glm::vec2 uv = d.distribution->sample(u, &pdfUv);
-    const float sinTheta = std::sin(kPi * uv.y);
-    // dOmega = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv
-    *pdf = sinTheta > 0.0f ? pdfUv / (2.0f * kPi * kPi * sinTheta) : 0.0f;
-    return rotateY(equirectDirection(uv), d.rotation);
-}
-
-float Light::environmentPdf(const glm::vec3& dir) const {
-    const Data& d = *data_;
-    if (!d.distribution) return 1.0f / (4.0f * kPi);
-    const glm::vec2 uv = equirectUv(rotateY(glm::normalize(dir), -d.rotation));
-    const float sinTheta = std::sin(kPi * uv.y);
-    return sinTheta > 0.0f ? d.distribution->pdf(uv) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
-}
-
-std::optional<LightLiSample> Light::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
-    const Data& d = *data_;
-    LightLiSample s;
-    s.nLight = glm::vec3(0.0f);
-    switch (type_) {
-    case Type::Triangle: {
-        if (!(d.area > 0.0f)) return std::nullopt;
-        const glm::vec2 b = sampleTriangleBarycentrics(u);
-        s.pLight = (1.0f - b.x - b.y) * d.a + b.x * d.b + b.y * d.c;
-        s.nLight = d.n;
-        const glm::vec3 toLight = s.pLight - ref;
-        const float dist2 = glm::dot(toLight, toLight);
-        if (!(dist2 > 0.0f)) return std::nullopt;
-        s.wi = toLight / std::sqrt(dist2);
-        const float cosLight = std::abs(glm::dot(d.n, s.wi));
-        if (!(cosLight > 0.0f)) return std::nullopt;
-        s.pdf = dist2 / (cosLight * d.area);
-        s.L = data_->twoSided || glm::dot(d.n, -s.wi) > 0.0f ? triangleRadiance(b) : glm::vec3(0.0f);
-        break;
-    }
-    case Type::Point:
-    case Type::Spot: {
-        s.pLight = d.position;
-        const glm::vec3 toLight = d.position - ref;
-        const float dist2 = glm::dot(toLight, toLight);
-        if (!(dist2 > 0.0f)) return std::nullopt;
-        s.wi = toLight / std::sqrt(dist2);
-        s.pdf = 1.0f;
-        s.L = d.L / dist2;
-        if (type_ == Type::Spot) s.L *= d.cone.falloff(glm::dot(-s.wi, d.direction));
-        break;
-    }
-    case Type::Directional:
-        s.wi = -d.direction;
-        s.pLight = ref + s.wi * (2.0f * d.radius);
-        s.pdf = 1.0f;
-        s.L = d.L;
-        break;
-    case Type::Environment: {
-        s.wi = sampleEnvironment(u, &s.pdf);
-        if (!(s.pdf > 0.0f)) return std::nullopt;
-        s.pLight = ref + s.wi * (2.0f * d.radius);
-        s.L = Le(s.wi);
-        break;
-    }
-    }
-    return s;
+    const SceneSphere sphere{b.centre(), std::max(b.radius(), 1e-3f)};
+    if (auto* d = std::get_if<DirectionalLight>(&kind_)) d->sphere = sphere;
+    if (auto* e = std::get_if<EnvironmentLight>(&kind_)) e->sphere = sphere;
 }
 
 float Light::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
-    switch (type_) {
-    case Type::Triangle: {
-        const glm::vec3 toLight = pLight - ref;
-        const float cosLight = std::abs(glm::dot(nLight, glm::normalize(wi)));
-        if (!(cosLight > 0.0f) || !(data_->area > 0.0f)) return 0.0f;
-        return glm::dot(toLight, toLight) / (cosLight * data_->area);
-    }
-    case Type::Environment: return environmentPdf(wi);
-    default: return 0.0f;
-    }
+    if (const auto* t = std::get_if<TriangleLight>(&kind_)) return t->pdfLi(ref, wi, pLight, nLight);
+    if (const auto* e = std::get_if<EnvironmentLight>(&kind_)) return e->pdfLi(ref, wi, pLight, nLight);
+    return 0.0f;  // a delta light: no direction reaches it by chance
 }
 
-std::optional<LightLeSample> Light::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
-    const Data& d = *data_;
-    LightLeSample s;
-    switch (type_) {
-    case Type::Triangle: {
-        if (!(d.area > 0.0f)) return std::nullopt;
-        const glm::vec2 b = sampleTriangleBarycentrics(u1);
-        s.ray.o = (1.0f - b.x - b.y) * d.a + b.x * d.b + b.y * d.c;
-        // Two-sided: u2.x picks the face, then is stretched back to [0, 1).
-        glm::vec2 uDir = u2;
-        glm::vec3 n = d.n;
-        float sidePdf = 1.0f;
-        if (d.twoSided) {
-            sidePdf = 0.5f;
-            if (uDir.x < 0.5f) uDir.x *= 2.0f;
-            else { uDir.x = 2.0f * uDir.x - 1.0f; n = -n; }
-        }
-        const glm::vec3 local = sampleCosineHemisphere(uDir);
-        s.ray.d = Frame::fromNormal(n).toWorld(local);
-        s.nLight = n;
-        s.pdfPos = 1.0f / d.area;
-        s.pdfDir = sidePdf * local.z / kPi;
-        if (!(s.pdfDir > 0.0f)) return std::nullopt;
-        s.L = triangleRadiance(b);
-        break;
-    }
-    case Type::Point:
-    case Type::Spot: {
-        s.ray.o = d.position;
-        s.nLight = glm::vec3(0.0f);
-        s.pdfPos = 1.0f;
-        s.L = d.L;
-        if (type_ == Type::Point) {
-            s.ray.d = sampleUniformSphere(u1);
-            s.pdfDir = 1.0f / (4.0f * kPi);
-        } else {
-            const glm::vec3 local = sampleUniformCone(u1, d.cone.cosOuter);
-            s.ray.d = local.x * d.spotX + local.y * d.spotY + local.z * d.direction;
-            s.pdfDir = 1.0f / (2.0f * kPi * (1.0f - d.cone.cosOuter));
-            s.L *= d.cone.falloff(local.z);
-        }
-        break;
-    }
-    case Type::Directional:
-    case Type::Environment: {
-        // A ray towards the scene from a disk of the bounding sphere's radius, perpendicular to
-        // its direction and one radius outside the sphere's centre (pbrt-v3).
-        glm::vec3 toLight;
-        if (type_ == Type::Directional) {
-            toLight = -d.direction;
-            s.pdfDir = 1.0f;
-        } else {
-            toLight = sampleEnvironment(u1, &s.pdfDir);
-            if (!(s.pdfDir > 0.0f)) return std::nullopt;
-        }
-        glm::vec3 v2;
-        const glm::vec3 v1 = orthogonal(toLight, &v2);
-        const glm::vec2 disk = sampleUniformDisk(u2);
-        s.ray.o = d.centre + d.radius * (disk.x * v1 + disk.y * v2 + toLight);
-        s.ray.d = -toLight;
-        s.nLight = s.ray.d;
-        s.pdfPos = 1.0f / (kPi * d.radius * d.radius);
-        s.L = type_ == Type::Directional ? d.L : Le(toLight);
-        break;
-    }
-    }
-    return s;
+glm::vec3 Light::L(const glm::vec3& n, const glm::vec3& w, const TexCoords& tc) const {
+    const auto* t = std::get_if<TriangleLight>(&kind_);
+    if (!t) return glm::vec3(0.0f);
+    if (!t->twoSided && !(glm::dot(n, w) > 0.0f)) return glm::vec3(0.0f);
+    return t->emitter ? t->emitter->emission(tc) : t->L;
 }
 
-void Light::pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const {
-    const Data& d = *data_;
-    switch (type_) {
-    case Type::Triangle: {
-        const float cosTheta = glm::dot(nLight, ray.d);
-        *pdfPos = d.area > 0.0f ? 1.0f / d.area : 0.0f;
-        *pdfDir = d.twoSided ? 0.5f * std::abs(cosTheta) / kPi : std::max(cosTheta, 0.0f) / kPi;
-        break;
-    }
-    case Type::Point:
-        *pdfPos = 0.0f;
-        *pdfDir = 1.0f / (4.0f * kPi);
-        break;
-    case Type::Spot:
-        *pdfPos = 0.0f;
-        *pdfDir = glm::dot(ray.d, d.direction) >= d.cone.cosOuter ? 1.0f / (2.0f * kPi * (1.0f - d.cone.cosOuter)) : 0.0f;
-        break;
-    case Type::Directional:
-        *pdfPos = 1.0f / (kPi * d.radius * d.radius);
-        *pdfDir = 0.0f;
-        break;
-    case Type::Environment:
-        *pdfPos = 1.0f / (kPi * d.radius * d.radius);
-        *pdfDir = environmentPdf(-ray.d);
-        break;
-    }
+glm::vec3 Light::Le(const glm::vec3& dir) const {
+    const auto* e = std::get_if<EnvironmentLight>(&kind_);
+    return e ? e->Le(dir) : glm::vec3(0.0f);
 }
 
 }  // namespace woven

@@ -1,15 +1,18 @@
 #pragma once
 // Lights, shaped like pbrt-v3's Light interface so that both integrators can use every kind:
 // emissive triangles (area), point, spot, directional, and the environment (constant or
-// equirectangular image, importance-sampled). Radiance, importance and densities follow pbrt-v3's
+// equirectangular image, importance-sampled), each a struct of its own in a variant, as
+// bsdf.h keeps its lobes. Which light a sample takes is light_sampler.h's choice. Radiance, importance and densities follow pbrt-v3's
 // conventions: pdfLi is per unit solid angle at the reference point, pdfPos per unit area (or 1
 // for delta positions), pdfDir per unit solid angle (or 1 for delta directions).
 #include <array>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <variant>
 
 #include "interaction.h"
+#include "piecewise_constant.h"
 #include "scene_description.h"
 #include "surface_material.h"
 
@@ -36,9 +39,105 @@ struct LightLeSample {
     float pdfPos, pdfDir;
 };
 
+// KHR_lights_punctual's spot falloff: squared, linear in cos between the outer and inner cones.
+struct SpotCone {
+    float cosOuter = 1.0f, scale = 1.0f;
+    SpotCone() = default;
+    SpotCone(float inner, float outer);
+    float falloff(float cosTheta) const;
+    float solidAngle() const;  // the falloff's integral over the sphere
+};
+
+// The kinds of light, one struct each; Light holds one of them. Each has the members Light's
+// interface forwards to (power, sampleLi, pdfLi, sampleLe, pdfLe) and says whether its position
+// or direction is a delta and whether it lies at infinity.
+
+// An emissive triangle: radiance L from its front face (and its back when twoSided), or the
+// emission of a material (which must outlive the light) at the corners' texture coordinates.
+struct TriangleLight {
+    static constexpr bool kDeltaPosition = false, kDeltaDirection = false, kInfinite = false;
+    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
+    float area = 0.0f;
+    bool twoSided = false;
+    const SurfaceMaterial* emitter = nullptr;  // else the constant L
+    std::array<TexCoords, 3> corners;
+    glm::vec3 L{0.0f};  // with an emitter: its mean, for choosing lights by power
+
+    glm::vec3 radiance(const glm::vec2& barycentrics) const;  // from the front
+    glm::vec3 power() const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+};
+
+// Intensity I (W/sr) from a point, the same every way.
+struct PointLight {
+    static constexpr bool kDeltaPosition = true, kDeltaDirection = false, kInfinite = false;
+    glm::vec3 position{0.0f}, I{0.0f};
+
+    glm::vec3 power() const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+};
+
+// A point's intensity I within a cone around `direction` (of travel), with the spot's falloff.
+struct SpotLight {
+    static constexpr bool kDeltaPosition = true, kDeltaDirection = false, kInfinite = false;
+    glm::vec3 position{0.0f}, direction{0.0f, 0.0f, -1.0f}, I{0.0f};
+    glm::vec3 x{0.0f}, y{0.0f};  // completing direction to a frame
+    SpotCone cone;
+
+    glm::vec3 power() const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+};
+
+// The scene's bounding sphere, which infinite lights need to place and emit their rays.
+struct SceneSphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+// Irradiance E (W/m^2) along `direction` (of travel), from infinitely far.
+struct DirectionalLight {
+    static constexpr bool kDeltaPosition = false, kDeltaDirection = true, kInfinite = true;
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}, E{0.0f};
+    SceneSphere sphere;
+
+    glm::vec3 power() const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+};
+
+// Radiance from every direction: a colour, times an equirectangular image (importance-sampled
+// by its piecewise-constant distribution) where there is one.
+struct EnvironmentLight {
+    static constexpr bool kDeltaPosition = false, kDeltaDirection = false, kInfinite = true;
+    glm::vec3 color{0.0f};
+    std::shared_ptr<const Image> image;
+    float rotation = 0.0f;
+    std::shared_ptr<const PiecewiseConstant2D> distribution;  // over the image's (u, v)
+    glm::vec3 meanRadiance{0.0f};                             // over the sphere of directions
+    SceneSphere sphere;
+
+    glm::vec3 Le(const glm::vec3& dir) const;
+    // A direction towards the environment with its solid-angle density, and that density.
+    glm::vec3 sampleDirection(const glm::vec2& u, float* pdf) const;
+    float pdfDirection(const glm::vec3& dir) const;
+    glm::vec3 power() const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+};
+
 class Light {
 public:
-    enum class Type { Triangle, Point, Spot, Directional, Environment };
+    using Kind = std::variant<TriangleLight, PointLight, SpotLight, DirectionalLight, EnvironmentLight>;
 
     // An emissive triangle (world-space vertices) with radiance `L` from its front face
     // (and its back when `twoSided`).
@@ -51,17 +150,20 @@ public:
     static Light punctual(const PunctualLight& light);
     static Light environment(const Environment& env);  // builds the importance distribution
 
-    Type type() const { return type_; }
-    bool isDeltaPosition() const { return type_ == Type::Point || type_ == Type::Spot; }
-    bool isDeltaDirection() const { return type_ == Type::Directional; }
+    template <class K>
+    bool is() const { return std::holds_alternative<K>(kind_); }
+    bool isDeltaPosition() const { return std::visit([](const auto& k) { return k.kDeltaPosition; }, kind_); }
+    bool isDeltaDirection() const { return std::visit([](const auto& k) { return k.kDeltaDirection; }, kind_); }
     bool isDelta() const { return isDeltaPosition() || isDeltaDirection(); }
-    bool isInfinite() const { return type_ == Type::Directional || type_ == Type::Environment; }
+    bool isInfinite() const { return std::visit([](const auto& k) { return k.kInfinite; }, kind_); }
 
     // Infinite lights need the scene's extent; call once before sampling.
     void setSceneBounds(const Bounds& b);
-    glm::vec3 power() const;  // total emitted power, for choosing lights
+    glm::vec3 power() const { return std::visit([](const auto& k) { return k.power(); }, kind_); }  // total emitted power
 
-    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
+        return std::visit([&](const auto& k) { return k.sampleLi(ref, u); }, kind_);
+    }
     // For a direction wi from ref that reaches this light (at pLight with normal nLight for
     // triangles; ignored for the environment). Zero for delta lights.
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
@@ -71,20 +173,16 @@ public:
     // Environment radiance arriving from direction `dir` (a ray's direction escaping the scene).
     glm::vec3 Le(const glm::vec3& dir) const;
 
-    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
-    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
+        return std::visit([&](const auto& k) { return k.sampleLe(u1, u2); }, kind_);
+    }
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const {
+        std::visit([&](const auto& k) { k.pdfLe(ray, nLight, pdfPos, pdfDir); }, kind_);
+    }
 
 private:
-    struct Data;
-    // Environment: a direction towards it with its solid-angle density, and that density.
-    glm::vec3 sampleEnvironment(const glm::vec2& u, float* pdf) const;
-    float environmentPdf(const glm::vec3& dir) const;
-    // A triangle's radiance from its front at barycentrics b.
-    glm::vec3 triangleRadiance(const glm::vec2& b) const;
-
-
-    Type type_ = Type::Point;
-    std::shared_ptr<const Data> data_;  // shared: lights are copied freely, never mutated after setup
+    explicit Light(Kind kind) : kind_(std::move(kind)) {}
+    Kind kind_;
 };
 
 }  // namespace woven

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "piecewise_constant.h"
+#include "light_sampler.h"
 #include "sampling.h"
 #include "scene_loader.h"
 #include "scene_validation.h"
@@ -124,7 +124,7 @@ struct RenderScene::Impl {
     std::vector<Light> lights;
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
     int environment = -1;
-    std::optional<PiecewiseConstant1D> lightChoice;
+    std::optional<PowerLightSampler> lightSampler;
     Bounds bounds;
 
     ~Impl() {
@@ -213,13 +213,8 @@ void RenderScene::Impl::buildLights() {
         environment = int(lights.size());
         lights.push_back(Light::environment(env));
     }
-    if (lights.empty()) return;
-    std::vector<float> power;
-    for (Light& light : lights) {
-        light.setSceneBounds(bounds);
-        power.push_back(std::max(luminance(light.power()), 0.0f));
-    }
-    lightChoice.emplace(power);
+    for (Light& light : lights) light.setSceneBounds(bounds);
+    lightSampler.emplace(lights);
 }
 
 SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t,
@@ -408,16 +403,14 @@ const std::vector<Light>& RenderScene::lights() const { return impl_->lights; }
 int RenderScene::environmentLight() const { return impl_->environment; }
 
 int RenderScene::sampleLight(float u, float* pmf) const {
-    if (!impl_->lightChoice) {
+    if (!impl_->lightSampler) {
         *pmf = 0.0f;
         return -1;
     }
-    return impl_->lightChoice->sampleDiscrete(u, pmf);
+    return impl_->lightSampler->sample(u, pmf);
 }
 
-float RenderScene::lightPmf(int index) const {
-    return impl_->lightChoice && index >= 0 && index < int(impl_->lights.size()) ? impl_->lightChoice->discretePmf(index) : 0.0f;
-}
+float RenderScene::lightPmf(int index) const { return impl_->lightSampler ? impl_->lightSampler->pmf(index) : 0.0f; }
 
 const Bounds& RenderScene::bounds() const { return impl_->bounds; }
 const SceneDescription& RenderScene::description() const { return *impl_->scene; }

@@ -47,7 +47,7 @@ public:
     const std::vector<Light>& lights() const;
     int lightIndex(const SurfaceHit& hit) const;  // the area light of the hit triangle, or -1
     int environmentLight() const;                 // index of the environment light, or -1
-    // Lights are chosen in proportion to their power.
+    // Lights are chosen by light_sampler.h's PowerLightSampler.
     int sampleLight(float u, float* pmf) const;
     float lightPmf(int index) const;
 

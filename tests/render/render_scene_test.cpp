@@ -388,8 +388,8 @@ TEST(RenderSceneLights, EmissiveTrianglesPunctualLightsAndEnvironment) {
     RenderScene scene(desc);
     ASSERT_EQ(scene.lights().size(), 4u);
     EXPECT_EQ(scene.environmentLight(), 3);
-    EXPECT_EQ(scene.lights()[2].type(), Light::Type::Point);
-    EXPECT_EQ(scene.lights()[3].type(), Light::Type::Environment);
+    EXPECT_TRUE(scene.lights()[2].is<PointLight>());
+    EXPECT_TRUE(scene.lights()[3].is<EnvironmentLight>());
 
     Ray up;
     up.o = {0.3f, 0.6f, 0.5f};
