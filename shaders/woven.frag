@@ -2,8 +2,8 @@
 // every other material). Features a material does not use are compiled out by #defines that the
 // C++ side picks from its parameters (woven_gl_material.cpp): WOVEN_NOISE, WOVEN_CRIMP,
 // WOVEN_GAPS (both yarns narrower than their element), WOVEN_THREADS (per-thread colours, yarns
-// or spacing), WOVEN_SPACING (threads of different widths) and WOVEN_FILTER (the far-field weave
-// filter); PREVIEW_SHADOWS (lighting.glsl). A glTF material made woven keeps its surface (core's
+// or spacing), WOVEN_SPACING (threads of different widths), WOVEN_TRANSMISSION (yarns that pass
+// light, docs/MODEL_TRANSMISSION.md) and WOVEN_FILTER (the far-field weave filter); PREVIEW_SHADOWS (lighting.glsl). A glTF material made woven keeps its surface (core's
 // WovenSurfaceMaterial): WOVEN_PRINT (the base colour texture and vertex colour multiply the
 // yarns' colour), MAP_BASE_COLOR and MAP_NORMAL in maps[] (texture_maps.glsl), ALPHA_MASK or
 // ALPHA_BLEND, as gltf.frag has them.
@@ -58,6 +58,42 @@ vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     return sum;
 }
 
+#ifdef WOVEN_TRANSMISSION
+// core's yarnTransmittance and YarnTransmission::eval (core/model/yarn_transmission.cpp).
+vec3 yarnTransmittance(vec3 rd, float t) {
+    float peak = max(rd.r, max(rd.g, rd.b));
+    if (!(peak > 0.0)) return vec3(0.0);
+    vec3 hue = rd / peak;
+    return t * (1.0 - rd) * hue * hue;
+}
+vec3 yarnTransmission(Lobe l, vec3 T, float g, vec3 wo, vec3 wi) {
+    if (wo.z * wi.z >= 0.0) return vec3(0.0);
+    float mo = abs(wo.z), mi = abs(wi.z);
+    float lobe = (1.0 - g) * (28.0 / (23.0 * PI));
+    vec3 H = vec3(wo.xy + wi.xy, mo + mi);
+    float len = length(H);
+    if (g > 0.0 && len > 1e-12) {
+        vec3 h = H / len;
+        float sx = h.x * h.x, sy = h.y * h.y, s = sx + sy;
+        float N = s > 0.0 ? (l.ex * sx + l.ey * sy) / s : l.ex;
+        lobe += g * sqrt((l.ex + 1.0) * (l.ey + 1.0)) / (8.0 * PI) * cosPowN(s, N) / (0.5 * len * max(mo, mi));
+    }
+    return T * ((1.0 - l.rs) * (1.0 - pow5(1.0 - 0.5 * mo)) * (1.0 - pow5(1.0 - 0.5 * mi)) * lobe);
+}
+// The lights behind the cloth (on the side of -ng) that the yarn passes to wo.
+vec3 transmittedLight(Frame f, Lobe lobe, vec3 T, float g, vec3 p, vec3 ng, vec3 wo) {
+    vec3 woLocal = toLocal(f, wo), sum = vec3(0.0);
+    for (int i = 0; i < lightCount; ++i) {
+        vec3 wi;
+        vec3 L = incidentLight(i, p, -ng, wi);
+        if (L == vec3(0.0)) continue;
+        vec3 wiLocal = toLocal(f, wi);
+        sum += yarnTransmission(lobe, T, g, woLocal, wiLocal) * L * abs(wiLocal.z);
+    }
+    return sum;
+}
+#endif
+
 // `print` multiplies the yarns' colour, as core's ShadingInput::print.
 vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 print) {
     if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
@@ -78,7 +114,14 @@ vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 pri
 #endif
     color *= print;
     Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
-    return reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
+    vec3 radiance = reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
+#ifdef WOVEN_TRANSMISSION
+    // The material's own transmission for every yarn (yarn types' own values are not in the
+    // yarn table yet).
+    float t = material.transmission;
+    if (t > 0.0) radiance += transmittedLight(f, Lobe(ex, ey, rs, color), yarnTransmittance(color, t), material.transmission_gloss, p, ng, wo);
+#endif
+    return radiance;
 }
 
 #ifdef WOVEN_FILTER

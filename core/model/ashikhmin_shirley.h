@@ -43,10 +43,11 @@ public:
     float specularProbability() const { return specularProb_; }
     // Density of half vector h for the specular lobe (the source's eq. 1, p_h).
     float halfVectorPdf(const glm::vec3& h) const;
+    // A half vector drawn from halfVectorPdf (MODEL.md section 4's sampling).
+    glm::vec3 sampleHalfVector(const glm::vec2& u) const;
 
 private:
     float cosPowN(const glm::vec3& H, float invLen2) const;  // (n.h)^N, N = e_x cos^2 phi + e_y sin^2 phi
-    glm::vec3 sampleHalfVector(const glm::vec2& u) const;
 
     LobeShape shape_;
     glm::vec3 rd_;

@@ -119,7 +119,9 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in, const F
     const glm::vec3 bumped = tangent.toWorld(y.normal);
     const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
     const AshikhminShirley lobe(weave_.lobeShape(y.yarn), color);
-    return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
+    if (!(yarn.transmission() > 0.0f)) return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
+    return WovenShading{y.type, SurfaceBsdf(frame, lobe),
+                        YarnTransmission(lobe.shape(), yarnTransmittance(color, yarn.transmission()), yarn.transmissionGloss())};
 }
 
 }  // namespace woven

@@ -5,6 +5,7 @@
 
 #include "filtered_weave_lobe.h"
 #include "surface_bsdf.h"
+#include "yarn_transmission.h"
 #include "yarn_geometry.h"
 
 namespace woven {
@@ -32,6 +33,9 @@ struct ShadingInput {
 struct WovenShading {
     YarnType yarn;
     SurfaceBsdf bsdf;
+    // The light the yarn passes to the other side, in bsdf's frame (TransmittingYarn composes the
+    // two); absent for yarns of transmission 0, which stay exactly the reflecting lobe of before.
+    std::optional<YarnTransmission> transmission = std::nullopt;
 };
 
 class WovenMaterial {

@@ -13,7 +13,7 @@ namespace woven {
 
 // The parameters a thread's yarn has apart from its colour (MODEL.md section 6), in the order
 // Yarn and YarnSpec keep them.
-enum YarnField { kYarnEx, kYarnEy, kYarnRs, kYarnWidth, kYarnCy, kYarnNoise, kYarnFieldCount };
+enum YarnField { kYarnEx, kYarnEy, kYarnRs, kYarnWidth, kYarnCy, kYarnNoise, kYarnTransmission, kYarnTransmissionGloss, kYarnFieldCount };
 
 // A yarn type of WovenParams::yarns ("yarn type" in MODEL.md and the issue; YarnType in
 // weave_pattern.h names the yarn on top): the yarn fields it sets. A field it leaves unset follows the
@@ -57,6 +57,10 @@ struct WovenParams {
     // Variation and gaps.
     float noise = 0.0f;        // per-yarn colour noise amplitude, 0 = off
     float noise_scale = 0.5f;  // noise features per weave element along the yarn
+
+    // Light through the yarns (docs/MODEL_TRANSMISSION.md): 0 = none, today's opaque yarns.
+    float transmission = 0.0f;        // fraction of the light a yarn does not reflect that it passes
+    float transmission_gloss = 0.5f;  // share of that light leaving forward along the fibres
     int backing = 0;           // 0: gaps are see-through; 1: gaps show backing_color
     glm::vec3 backing_color{0.0f, 0.0f, 0.0f};
 
@@ -89,7 +93,7 @@ struct ParamInfo {
     const char* description;
     const char* fallback;  // when absent from a file, take this field's value (e.g. warp_ex <- ex)
     // The yarn field this entry is the material's value of, for the threads of `yarnSide`; a
-    // yarn type's JSON names its fields by the Weft or Both entries (ex, ey, rs, yarn_width, cy, noise).
+    // yarn type's JSON names its fields by the Weft or Both entries (ex, ey, rs, yarn_width, cy, noise, transmission, ...).
     int yarnField = -1;
     YarnSide yarnSide = YarnSide::None;
 };

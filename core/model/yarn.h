@@ -17,10 +17,12 @@ struct Yarn {
     float width() const { return value[kYarnWidth]; }
     float cy() const { return value[kYarnCy]; }
     float noise() const { return value[kYarnNoise]; }
+    float transmission() const { return value[kYarnTransmission]; }
+    float transmissionGloss() const { return value[kYarnTransmissionGloss]; }
 };
 
 // The material's own yarn for the threads of `side` (Warp or Weft): warp_ex, warp_ey, rs,
-// warp_width, cy, noise for the warp; ex, ey, rs, yarn_width, cy, noise for the weft.
+// warp_width, cy, noise, transmission, transmission_gloss for the warp; ex, ey, rs, yarn_width, ... for the weft.
 Yarn sideYarn(const WovenParams& p, YarnSide side);
 
 // `type` on the threads of a side whose own yarn is `sideDefault`.
