@@ -16,7 +16,7 @@
 // Tolerance: the code computes both sides from the same half vector (wo + wi is commutative in
 // float), so D and V agree to the last bit and the base's Fresnel (from |wo + wi| / 2) too: a
 // few roundoffs of each term, 16 eps of the terms' size (the sum of the lobes' magnitudes, as in
-// test_reference.cpp). The coat's Fresnel is taken at wo.h, which the swap turns into wi.h: for
+// reference_test.cpp). The coat's Fresnel is taken at wo.h, which the swap turns into wi.h: for
 // float directions, unit only to |w|^2 - 1 ~ 3 eps, the two differ by (|wo|^2 - |wi|^2) / |wo + wi|,
 // up to 6 eps / |wo + wi|, and F' <= 5 (1 - F0): the coat term may move by 32 eps / |wo + wi|
 // of itself, which at grazing, nearly opposite pairs (|wo + wi| ~ 0.02) is 1e-4 relative.
