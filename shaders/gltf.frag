@@ -7,21 +7,8 @@ layout(location = 0) out vec4 outRadiance;
 
 uniform vec3 cameraPosition;
 uniform vec3 emission;  // emissive factor x strength, radiance of the front face
-uniform vec4 baseColorFactor;
-uniform float metallicFactor, roughnessFactor;
-uniform float normalScale, occlusionStrength;
-uniform float alphaCutoff;
-uniform float iorF0;  // ((ior - 1) / (ior + 1))^2
-uniform float specularFactor;
-uniform vec3 specularColorFactor;
-uniform vec3 sheenColorFactor;
-uniform float sheenRoughnessFactor;
-uniform float anisotropyStrength;
-uniform vec2 anisotropyRotation;  // (cos, sin) of KHR_materials_anisotropy's rotation
-uniform float clearcoatFactor, clearcoatRoughnessFactor;
-uniform float transmissionFactor;
-uniform float iridescenceFactor, iridescenceIor;
-uniform vec2 iridescenceThickness;  // KHR_materials_iridescence's minimum and maximum, nm
+// The material's factors (baseColorFactor, metallicFactor, ...) are declared in the preamble from
+// gltfUniformTable() (app/preview/gltf_gl_material.cpp), which also uploads them.
 
 // As core's keepReflectionAbove(): a normal map's normal tilted so far that the view's mirror
 // direction falls below the surface is tilted back until it stays `margin` above.

@@ -39,11 +39,54 @@ std::string alphaDefines(const Material& m) {
     return "";
 }
 
+const std::vector<GltfUniform>& gltfUniformTable() {
+    using M = const Material&;
+    static const std::vector<GltfUniform> table = {
+        {"baseColorFactor", 4, [](M m) { return m.baseColor; }},
+        {"metallicFactor", 1, [](M m) { return glm::vec4(m.metallic); }},
+        {"roughnessFactor", 1, [](M m) { return glm::vec4(m.roughness); }},
+        {"normalScale", 1, [](M m) { return glm::vec4(m.normalTexture.scale); }},
+        {"occlusionStrength", 1, [](M m) { return glm::vec4(m.occlusionTexture.scale); }},
+        {"alphaCutoff", 1, [](M m) { return glm::vec4(m.alphaCutoff); }},
+        // ((ior - 1) / (ior + 1))^2; an IOR of 0 stands for an infinite one (F0 = 1)
+        {"iorF0", 1, [](M m) {
+             const float r = (m.ior - 1.0f) / (m.ior + 1.0f);
+             return glm::vec4(m.ior == 0.0f ? 1.0f : r * r);
+         }},
+        {"specularFactor", 1, [](M m) { return glm::vec4(m.specular); }},
+        {"specularColorFactor", 3, [](M m) { return glm::vec4(m.specularColor, 0.0f); }},
+        {"sheenColorFactor", 3, [](M m) { return glm::vec4(m.sheen.color, 0.0f); }},
+        {"sheenRoughnessFactor", 1, [](M m) { return glm::vec4(m.sheen.roughness); }},
+        {"anisotropyStrength", 1, [](M m) { return glm::vec4(m.anisotropy.strength); }},
+        // (cos, sin) of KHR_materials_anisotropy's rotation
+        {"anisotropyRotation", 2, [](M m) {
+             return glm::vec4(std::cos(m.anisotropy.rotation), std::sin(m.anisotropy.rotation), 0.0f, 0.0f);
+         }},
+        {"clearcoatFactor", 1, [](M m) { return glm::vec4(m.clearcoat.factor); }},
+        {"clearcoatRoughnessFactor", 1, [](M m) { return glm::vec4(m.clearcoat.roughness); }},
+        {"transmissionFactor", 1, [](M m) { return glm::vec4(m.transmission.factor); }},
+        {"iridescenceFactor", 1, [](M m) { return glm::vec4(m.iridescence.factor); }},
+        {"iridescenceIor", 1, [](M m) { return glm::vec4(m.iridescence.ior); }},
+        // KHR_materials_iridescence's minimum and maximum thickness, nm
+        {"iridescenceThickness", 2, [](M m) {
+             return glm::vec4(m.iridescence.thicknessMin, m.iridescence.thicknessMax, 0.0f, 0.0f);
+         }},
+    };
+    return table;
+}
+
+std::string gltfUniformsGlsl() {
+    static const char* const types[] = {"", "float", "vec2", "vec3", "vec4"};
+    std::string glsl;
+    for (const GltfUniform& u : gltfUniformTable()) glsl += std::string("uniform ") + types[u.components] + " " + u.name + ";\n";
+    return glsl;
+}
+
 std::string gltfProgramPreamble(const Material& m, bool shadows) {
     std::string defines = mapDefines(gltfMaps(m)) + alphaDefines(m);
     if (m.unlit) defines += "#define UNLIT\n";
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
-    return defines;
+    return defines + gltfUniformsGlsl();
 }
 
 std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble) {
@@ -55,26 +98,16 @@ std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble) {
 }
 
 void uploadGltfMaterial(const ShaderProgram& program, const Material& m, GpuTextures& textures, int firstUnit) {
-    glUniform4fv(program.uniform("baseColorFactor"), 1, glm::value_ptr(m.baseColor));
-    glUniform1f(program.uniform("metallicFactor"), m.metallic);
-    glUniform1f(program.uniform("roughnessFactor"), m.roughness);
-    glUniform1f(program.uniform("normalScale"), m.normalTexture.scale);
-    glUniform1f(program.uniform("occlusionStrength"), m.occlusionTexture.scale);
-    glUniform1f(program.uniform("alphaCutoff"), m.alphaCutoff);
-    const float r = (m.ior - 1.0f) / (m.ior + 1.0f);
-    glUniform1f(program.uniform("iorF0"), m.ior == 0.0f ? 1.0f : r * r);
-    glUniform1f(program.uniform("specularFactor"), m.specular);
-    glUniform3fv(program.uniform("specularColorFactor"), 1, glm::value_ptr(m.specularColor));
-    glUniform3fv(program.uniform("sheenColorFactor"), 1, glm::value_ptr(m.sheen.color));
-    glUniform1f(program.uniform("sheenRoughnessFactor"), m.sheen.roughness);
-    glUniform1f(program.uniform("anisotropyStrength"), m.anisotropy.strength);
-    glUniform2f(program.uniform("anisotropyRotation"), std::cos(m.anisotropy.rotation), std::sin(m.anisotropy.rotation));
-    glUniform1f(program.uniform("clearcoatFactor"), m.clearcoat.factor);
-    glUniform1f(program.uniform("clearcoatRoughnessFactor"), m.clearcoat.roughness);
-    glUniform1f(program.uniform("transmissionFactor"), m.transmission.factor);
-    glUniform1f(program.uniform("iridescenceFactor"), m.iridescence.factor);
-    glUniform1f(program.uniform("iridescenceIor"), m.iridescence.ior);
-    glUniform2f(program.uniform("iridescenceThickness"), m.iridescence.thicknessMin, m.iridescence.thicknessMax);
+    for (const GltfUniform& u : gltfUniformTable()) {
+        const GLint location = program.uniform(u.name);
+        const glm::vec4 v = u.value(m);
+        switch (u.components) {
+            case 1: glUniform1f(location, v.x); break;
+            case 2: glUniform2f(location, v.x, v.y); break;
+            case 3: glUniform3f(location, v.x, v.y, v.z); break;
+            default: glUniform4f(location, v.x, v.y, v.z, v.w); break;
+        }
+    }
     textures.bindMaps(program, gltfMaps(m), firstUnit);
 }
 

@@ -10,14 +10,27 @@
 
 namespace woven {
 
+// One factor of gltf.frag: its name, its number of float components (1 to 4) and the value core's
+// Material gives it. gltf.frag's declarations are generated from this table (gltfUniformsGlsl(),
+// in the preamble) and the upload iterates it, so each factor is named once, as the woven
+// parameters are (wovenParamTable()).
+struct GltfUniform {
+    const char* name;
+    int components;
+    glm::vec4 (*value)(const Material&);
+};
+const std::vector<GltfUniform>& gltfUniformTable();
+// "uniform vec4 baseColorFactor;\n...": the declarations of the table's uniforms.
+std::string gltfUniformsGlsl();
+
 // The textures the material uses, in maps[] order.
 std::vector<MapUse> gltfMaps(const Material& material);
 
 // ALPHA_MASK or ALPHA_BLEND as the material's alphaMode says (nothing when opaque).
 std::string alphaDefines(const Material& material);
 
-// MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, and
-// PREVIEW_SHADOWS when `shadows`.
+// MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, PREVIEW_SHADOWS
+// when `shadows`, and the factors' declarations.
 std::string gltfProgramPreamble(const Material& material, bool shadows);
 // shaders/mesh.vert + the gltf.frag chain, compiled with `preamble`.
 std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble);

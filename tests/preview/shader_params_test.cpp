@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "gl_test_context.h"
+#include "gltf_gl_material.h"
 #include "woven_gl_material.h"
 
 namespace woven::test {
@@ -112,6 +113,77 @@ TEST(ShaderParams, ShaderSourcesReadEveryTableEntry) {
         const std::regex read("material\\." + std::string(info.name) + "\\b");
         EXPECT_TRUE(std::regex_search(sources, read)) << "no shader reads material." << info.name;
     }
+}
+
+// The glTF program's factors are one list too: gltfUniformTable() declares them in the preamble
+// and uploads them, the shader sources read every entry and declare none by hand, and each
+// upload lands in its uniform.
+std::string gltfSources() {
+    std::string sources;
+    for (const char* file : {"gltf.frag", "gltf_bxdf.glsl", "gltf_iridescence.glsl"}) {
+        std::ifstream in(shaderDirectory() + "/" + file);
+        EXPECT_TRUE(in) << file;
+        std::ostringstream s;
+        s << in.rdbuf();
+        sources += s.str();
+    }
+    return sources;
+}
+
+TEST(GltfUniforms, TheSourcesReadEveryEntryAndDeclareNoFactorOfTheirOwn) {
+    const std::string sources = gltfSources();
+    for (const GltfUniform& u : gltfUniformTable())
+        EXPECT_TRUE(std::regex_search(sources, std::regex(std::string("\\b") + u.name + "\\b")))
+            << "no glTF shader reads " << u.name;
+    // Besides the table's, only what the renderer sets for every surface program (the camera, the
+    // emission) and the sheen's albedo table it binds are declared here.
+    const std::set<std::string> shared = {"cameraPosition", "emission", "sheenAlbedoTable"};
+    const std::regex declaration("uniform\\s+\\w+\\s+(\\w+)");
+    for (std::sregex_iterator it(sources.begin(), sources.end(), declaration), end; it != end; ++it)
+        EXPECT_TRUE(shared.count((*it)[1].str())) << "gltf shaders declare '" << (*it)[1].str()
+                                                  << "' by hand: add it to gltfUniformTable()";
+}
+
+TEST(GltfUniforms, UploadedValuesReadBackPerEntry) {
+    ensureHeadlessGl();
+    Material m;
+    // Distinct values per factor, so a value landing in the wrong uniform is caught.
+    m.baseColor = {0.11f, 0.12f, 0.13f, 0.14f};
+    m.metallic = 0.21f;
+    m.roughness = 0.22f;
+    m.normalTexture.scale = 0.23f;
+    m.occlusionTexture.scale = 0.24f;
+    m.alphaCutoff = 0.25f;
+    m.ior = 1.7f;
+    m.specular = 0.31f;
+    m.specularColor = {0.32f, 0.33f, 0.34f};
+    m.sheen.color = {0.41f, 0.42f, 0.43f};
+    m.sheen.roughness = 0.44f;
+    m.anisotropy.strength = 0.51f;
+    m.anisotropy.rotation = 0.52f;
+    m.clearcoat.factor = 0.61f;
+    m.clearcoat.roughness = 0.62f;
+    m.transmission.factor = 0.71f;
+    m.iridescence.factor = 0.81f;
+    m.iridescence.ior = 1.31f;
+    m.iridescence.thicknessMin = 120.0f;
+    m.iridescence.thicknessMax = 380.0f;
+    const auto program = buildGltfProgram(gltfProgramPreamble(m, true));
+    glUseProgram(program->id());
+    GpuTextures textures;
+    uploadGltfMaterial(*program, m, textures, 8);
+    int active = 0;
+    for (const GltfUniform& u : gltfUniformTable()) {
+        const GLint location = program->uniform(u.name);
+        if (location < 0) continue;  // compiled out for this material
+        ++active;
+        GLfloat got[4] = {};
+        glGetUniformfv(program->id(), location, got);
+        const glm::vec4 want = u.value(m);
+        for (int c = 0; c < u.components; ++c) EXPECT_FLOAT_EQ(got[c], want[c]) << u.name << "[" << c << "]";
+    }
+    // Most factors shape every material; a table whose names the shader never declared reads none.
+    EXPECT_GE(active, int(gltfUniformTable().size()) - 4);
 }
 
 }  // namespace
