@@ -1,6 +1,6 @@
 // Per-thread colours, yarn types and spacing (MODEL.md section 6) against values worked out by
 // hand: which thread a point falls on, the colour and lobe it shades with, where gaps open, the
-// far-field weights (the JSON keys: test_params_json.cpp).
+// far-field weights (the JSON keys: params_json_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

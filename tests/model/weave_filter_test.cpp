@@ -4,7 +4,7 @@
 //   elements sees), per direction pair.
 // - Footprint shares: a box of whole repeats keeps the repeat's shares; a box over one satin
 //   warp dot shows the warp alone.
-// - Sampling the filtered BSDF matches its pdf (chi-square, as test_sampling_chi_square.cpp), in
+// - Sampling the filtered BSDF matches its pdf (chi-square, as sampling_chi_square_test.cpp), in
 //   the far field and in the blend with the exact lobe.
 // - The blend: below a quarter element there is no filtered BSDF; from one element on the exact
 //   lobe has no weight.
