@@ -369,10 +369,6 @@ bool RenderScene::occluded(const SurfaceHit& from, const glm::vec3& target) cons
     return occludedRay(impl_->rtcScene, ray.o, target - ray.o, segmentEnd(ray.o, target));
 }
 
-bool RenderScene::occludedFrom(const glm::vec3& p, const glm::vec3& target) const {
-    return occludedRay(impl_->rtcScene, p, target - p, segmentEnd(p, target));
-}
-
 bool RenderScene::occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const {
     const Ray ray = spawnRay(from, dir);
     return occludedRay(impl_->rtcScene, ray.o, ray.d, std::numeric_limits<float>::infinity());

@@ -29,7 +29,6 @@ public:
     // Is the segment from a surface point to `target` blocked? The origin is offset off the
     // surface; the far end stops short of target by the same relative epsilon.
     bool occluded(const SurfaceHit& from, const glm::vec3& target) const;
-    bool occludedFrom(const glm::vec3& p, const glm::vec3& target) const;  // from a non-surface point (camera, light)
     bool occludedToInfinity(const SurfaceHit& from, const glm::vec3& dir) const;
     // Whether a camera at `camera` sees from.p as its camera rays would: nothing in between, and not
     // the back of a single-sided surface (BDPT's light paths that end on the camera).

@@ -16,6 +16,7 @@
 namespace woven {
 namespace {
 
+using test::occludedFrom;
 using test::quad;
 using test::render;
 using test::sceneWith;
@@ -176,8 +177,8 @@ TEST(GltfAlpha, CutOutsLetCameraAndShadowRaysThrough) {
     const auto down = [](float x, float y) { return Ray{{x, y, 3.0f}, {0, 0, -1}}; };
     EXPECT_EQ(scene.intersect(down(0.25f, 0.5f))->mesh, 1);  // through the cut-out to the floor
     EXPECT_EQ(scene.intersect(down(0.75f, 0.5f))->mesh, 0);  // the opaque half
-    EXPECT_FALSE(scene.occludedFrom({0.25f, 0.5f, 3.0f}, {0.25f, 0.5f, 0.01f}));
-    EXPECT_TRUE(scene.occludedFrom({0.75f, 0.5f, 3.0f}, {0.75f, 0.5f, 0.01f}));
+    EXPECT_FALSE(occludedFrom(scene, {0.25f, 0.5f, 3.0f}, {0.25f, 0.5f, 0.01f}));
+    EXPECT_TRUE(occludedFrom(scene, {0.75f, 0.5f, 3.0f}, {0.75f, 0.5f, 0.01f}));
 }
 
 TEST(GltfAlpha, BlendLetsThroughInProportionToTransparency) {
@@ -194,7 +195,7 @@ TEST(GltfAlpha, BlendLetsThroughInProportionToTransparency) {
         const glm::vec3 from = target + glm::vec3(0.3f * rng.uniform() - 0.15f, 0.2f, 2.0f);
         throughLeft += scene.intersect(Ray{from, glm::normalize(target - from)})->mesh == 1;
         const glm::vec3 right = target + glm::vec3(0.5f, 0, 0);
-        throughRight += !scene.occludedFrom(right + glm::vec3(0, 0, 2), right - glm::vec3(0, 0, 0.99f));
+        throughRight += !occludedFrom(scene, right + glm::vec3(0, 0, 2), right - glm::vec3(0, 0, 0.99f));
     }
     // Binomial, p = 0.75 and 0.25: 5 standard deviations is 0.015.
     const double tolerance = 5.0 * std::sqrt(0.75 * 0.25 / n);

@@ -12,6 +12,7 @@
 namespace woven {
 namespace {
 
+using test::occludedFrom;
 using test::quad;
 using test::sceneWith;
 
@@ -235,7 +236,7 @@ TEST(RenderSceneSides, CameraRaysPassTheBackOfSingleSidedSurfacesOnly) {
     EXPECT_EQ(scene.intersect(rayDown(0.5f, 0.5f, 1.5f), RayKind::Camera)->mesh, 0);  // the front
     EXPECT_EQ(scene.intersect(up, RayKind::Camera)->mesh, 2);  // the back is culled: the sky behind
     EXPECT_EQ(scene.intersect(up)->mesh, 0);                   // a bounce meets it
-    EXPECT_TRUE(scene.occludedFrom(up.o, {0.5f, 0.5f, 1.5f}));  // and so does a shadow ray
+    EXPECT_TRUE(occludedFrom(scene, up.o, {0.5f, 0.5f, 1.5f}));  // and so does a shadow ray
     EXPECT_EQ(scene.intersect(Ray{{2.5f, 0.5f, 0.0f}, {0, 0, 1}}, RayKind::Camera)->mesh, 1);
     EXPECT_EQ(scene.intersect(rayDown(2.5f, 0.5f, 1.5f), RayKind::Camera)->mesh, 1);
 
@@ -257,20 +258,20 @@ TEST(RenderSceneGaps, RaysAndShadowRaysPassThroughGapsOnly) {
     ASSERT_TRUE(throughGap);
     EXPECT_EQ(throughGap->mesh, 1);
     EXPECT_NEAR(throughGap->t, 4.0f, 1e-5f);
-    EXPECT_FALSE(scene.occludedFrom({0.1f, 0.1f, 3.0f}, {0.1f, 0.1f, -0.5f}));
-    EXPECT_FALSE(scene.occludedFrom({0.1f, 0.1f, -0.5f}, {0.1f, 0.1f, 3.0f}));
+    EXPECT_FALSE(occludedFrom(scene, {0.1f, 0.1f, 3.0f}, {0.1f, 0.1f, -0.5f}));
+    EXPECT_FALSE(occludedFrom(scene, {0.1f, 0.1f, -0.5f}, {0.1f, 0.1f, 3.0f}));
     EXPECT_FALSE(scene.occluded(*throughGap, {0.1f, 0.1f, 3.0f}));
     // On a yarn (the weft at t = 1/2, the warp at s = 1/2): blocked.
     const auto onYarn = scene.intersect(rayDown(0.5f, 0.1f));
     ASSERT_TRUE(onYarn);
     EXPECT_EQ(onYarn->mesh, 0);
-    EXPECT_TRUE(scene.occludedFrom({0.1f, 0.5f, 3.0f}, {0.1f, 0.5f, -0.5f}));
+    EXPECT_TRUE(occludedFrom(scene, {0.1f, 0.5f, 3.0f}, {0.1f, 0.5f, -0.5f}));
     // With a backing colour the gaps are solid.
     WovenParams backed = gappyWeave();
     backed.backing = 1;
     RenderScene solid(clothOverFloor(backed));
     EXPECT_EQ(solid.intersect(rayDown(0.1f, 0.1f))->mesh, 0);
-    EXPECT_TRUE(solid.occludedFrom({0.1f, 0.1f, 3.0f}, {0.1f, 0.1f, -0.5f}));
+    EXPECT_TRUE(occludedFrom(solid, {0.1f, 0.1f, 3.0f}, {0.1f, 0.1f, -0.5f}));
     // Without UVs there is no weave to find gaps in: the documented fallback is solid cloth,
     // shaded everywhere like the middle of a weave element (on a yarn, so it reflects).
     RenderScene noUv(clothOverFloor(gappyWeave(), false));
@@ -303,7 +304,7 @@ TEST(RenderSceneGaps, IntersectionAndOcclusionAgreeWithTheWeaveEverywhere) {
         const auto hit = scene.intersect(ray);
         const bool hitCloth = hit && hit->mesh == 0;
         ASSERT_EQ(hitCloth, !gap) << xy.x << ", " << xy.y;
-        ASSERT_EQ(scene.occludedFrom(ray.o, onCloth + 0.5f * ray.d), !gap) << xy.x << ", " << xy.y;
+        ASSERT_EQ(occludedFrom(scene, ray.o, onCloth + 0.5f * ray.d), !gap) << xy.x << ", " << xy.y;
     }
     // The gaps' share of the area: (1 - 0.7)(1 - 0.5) = 15 %; binomial, 5 sigma.
     EXPECT_NEAR(gaps, 0.15 * n, 5.0 * std::sqrt(0.15 * 0.85 * n));

@@ -8,9 +8,19 @@
 #include <atomic>
 
 #include "render_job.h"
+#include "render_scene.h"
 #include "scene_description.h"
 
 namespace woven::test {
+
+// Whether anything blocks the segment from a point in space (no surface under it) to `target`:
+// a shadow ray from a point that is no hit, through the scene's own occlusion query.
+inline bool occludedFrom(const RenderScene& scene, const glm::vec3& p, const glm::vec3& target) {
+    SurfaceHit from;
+    from.p = p;
+    from.ng = from.ns = glm::normalize(target - p);
+    return scene.occluded(from, target);
+}
 
 // A planar quad a, b, c, d (counter-clockwise seen from its front) with uv (0,0), (1,0), (1,1),
 // (0,1) at its corners, times `uvScale`.
