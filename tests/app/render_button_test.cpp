@@ -13,6 +13,7 @@
 #include <iterator>
 #include <string>
 
+#include "../common/run_woven.h"
 #include "../scene/gltf_builder.h"
 #include "../scene/temp_dir.h"
 #include "frame_io.h"
@@ -27,8 +28,7 @@ using test::TempDir;
 int run(const std::string& args, std::string* errors = nullptr) {
     // One file per test process: CTest runs this suite's tests side by side.
     const std::string errorFile = testing::TempDir() + "woven_render_button_stderr_" + std::to_string(::getpid()) + ".txt";
-    const std::string cmd = std::string(WOVEN_EXECUTABLE) + " " + args + " 2>" + errorFile + " >/dev/null";
-    const int status = std::system(cmd.c_str());
+    const int status = test::runWoven(args + " 2>" + errorFile).exitCode;
     if (errors) {
         std::ifstream in(errorFile);
         *errors = std::string(std::istreambuf_iterator<char>(in), {});

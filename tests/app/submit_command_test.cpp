@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "../common/run_woven.h"
 #include "../scene/temp_dir.h"
 #include "frame_pattern.h"
 #include "frame_io.h"
@@ -39,9 +40,8 @@ Result shell(const std::string& command) {
 }
 
 Result woven(const std::vector<std::string>& args) {
-    std::vector<std::string> words = {WOVEN_EXECUTABLE};
-    words.insert(words.end(), args.begin(), args.end());
-    return shell(shellCommand(words));
+    const test::RunResult r = test::runWovenCommand(shellCommand(args));
+    return {r.exitCode, r.out};
 }
 
 // A scene file in `folder` that loads the bundled cloth, under a sky of this colour.
