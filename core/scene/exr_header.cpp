@@ -16,6 +16,7 @@ public:
         : data_(data), size_(size), name_(name) {}
 
     bool atEnd() const { return at_ >= size_; }
+    size_t at() const { return at_; }
     unsigned char peek() const { return data_[at_]; }
     void skip(size_t n) { at_ += n; }
     size_t left() const { return size_ - at_; }
@@ -44,6 +45,31 @@ private:
     const std::string& name_;
 };
 
+// OpenEXR reads a channel list and a preview by their own contents, not by the size the
+// attribute claims, and goes on from where that reading stopped: a value whose contents end
+// elsewhere than its size says would have OpenEXR read the next attribute from other bytes (the
+// fuzzer found a string size read from the middle of a name, 1.9 GB), and a preview allocates
+// width x height x 4 bytes. Such values must end exactly where their size says.
+bool selfDelimited(const std::string& type) { return type == "chlist" || type == "preview"; }
+
+// Where the value starting at `in`'s position ends by its own contents, reading no further than
+// `end`; throws (cut short) past it.
+size_t contentsEnd(HeaderReader& in, const std::string& type, size_t end) {
+    if (type == "preview") {
+        const uint64_t width = in.u32(), height = in.u32();
+        const uint64_t room = end - in.at();  // bytes left in the value for the RGBA pixels
+        if (width != 0 && height > room / 4 / width) return end + 1;  // more pixels than bytes: no product overflows
+        return in.at() + size_t(width * height * 4);
+    }
+    // chlist: entries of a name and 16 bytes (type, pLinear, 3 reserved, x and y sampling), then
+    // an empty name.
+    while (!in.text().empty()) {
+        if (in.at() + 16 > end) in.cutShort();
+        in.skip(16);
+    }
+    return in.at();
+}
+
 }  // namespace
 
 void checkExrAttributeSizes(const unsigned char* data, size_t size, const std::string& name) {
@@ -53,11 +79,19 @@ void checkExrAttributeSizes(const unsigned char* data, size_t size, const std::s
     for (;;) {
         // Attributes until an empty name, each: name, type, size (int32), value.
         for (std::string attribute = in.text(); !attribute.empty(); attribute = in.text()) {
-            in.text();
+            const std::string type = in.text();
             const int32_t bytes = int32_t(in.u32());
             if (bytes < 0 || size_t(bytes) > in.left())
                 throw ImageError(name + ": the OpenEXR attribute '" + attribute + "' claims " + std::to_string(bytes) +
                                  " bytes, but the file has " + std::to_string(in.left()) + " left");
+            const size_t start = in.at(), end = start + size_t(bytes);
+            if (selfDelimited(type)) {
+                HeaderReader value(data, end, name);
+                value.skip(start);
+                if (contentsEnd(value, type, end) != end)
+                    throw ImageError(name + ": the OpenEXR attribute '" + attribute + "' (" + type +
+                                     ") does not end where its size of " + std::to_string(bytes) + " bytes says");
+            }
             in.skip(size_t(bytes));
         }
         // A multi-part file's headers end with an empty header.

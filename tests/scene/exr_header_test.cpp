@@ -54,6 +54,41 @@ TEST(ExrHeader, AnAttributeLargerThanTheFileIsRefusedByName) {
     EXPECT_EQ(refusal(exrWithAttribute(0, 19, 19)), "(accepted)");
 }
 
+// OpenEXR reads a channel list or a preview by its contents and goes on from there: one whose
+// contents end elsewhere than its size says would have OpenEXR read the next attribute's size
+// from other bytes (the fuzzer's 1.9 GB string). Found by fuzz/fuzz_exr.
+Bytes exrWithValue(const std::string& type, const Bytes& value, uint32_t claimed) {
+    Bytes b = {0x76, 0x2f, 0x31, 0x01};
+    put32(b, 2);
+    put(b, "attr");
+    put(b, type);
+    put32(b, claimed);
+    b.insert(b.end(), value.begin(), value.end());
+    b.insert(b.end(), 8, 'x');  // room beyond the value, so only the contents can disagree
+    b.push_back(0);
+    return b;
+}
+
+TEST(ExrHeader, ChannelListsAndPreviewsMustEndWhereTheirSizeSays) {
+    Bytes channels;
+    put(channels, "R");
+    channels.insert(channels.end(), 16, 0);
+    channels.push_back(0);  // the list's end: 19 bytes in all
+    EXPECT_EQ(refusal(exrWithValue("chlist", channels, 19)).find("does not end"), std::string::npos);
+    EXPECT_THAT(refusal(exrWithValue("chlist", channels, 23)),
+                HasSubstr("'attr' (chlist) does not end where its size of 23 bytes says"));
+    Bytes preview;
+    put32(preview, 2);
+    put32(preview, 1);
+    preview.insert(preview.end(), 8, 255);  // 2 x 1 RGBA pixels
+    EXPECT_EQ(refusal(exrWithValue("preview", preview, 16)).find("does not end"), std::string::npos);
+    Bytes huge;
+    put32(huge, 100000);
+    put32(huge, 100000);  // 4e10 bytes of pixels claimed in a 16-byte value
+    huge.insert(huge.end(), 8, 0);
+    EXPECT_THAT(refusal(exrWithValue("preview", huge, 16)), HasSubstr("(preview) does not end"));
+}
+
 TEST(ExrHeader, CutShortHeadersAreRefused) {
     Bytes b = exrWithAttribute(0, 4, 4);
     b.pop_back();  // no end of header: the next name never ends
