@@ -2,6 +2,7 @@
 // hold the weave and colours their names promise, and are exactly what woven's writer writes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -84,6 +85,27 @@ TEST(DraftAssets, TwillWithStripesHasThickerStripeThreads) {
         EXPECT_EQ(d.warp.spacing[size_t(e)] > d.warp.spacing[0], stripe) << e;
         EXPECT_LE(d.warp.thickness[size_t(e)], d.warp.spacing[size_t(e)]) << e;  // no yarn wider than its cell
     }
+}
+
+// tools/make_drafts writes denim.wif (the default scene's cloth): a warp-faced 3/1 twill, indigo
+// ends and ecru picks, 25 ends and 16 picks per cm.
+TEST(DraftAssets, DenimIsAWarpFacedThreeOneTwillAtItsThreadCounts) {
+    std::string text;
+    const Draft d = readAsset("denim.wif", &text);
+    EXPECT_EQ(formatWif(d, "denim"), text);
+    const std::vector<std::string> map = test::mapOf(d);
+    ASSERT_EQ(map.size(), 4u);
+    for (size_t V = 0; V < map.size(); ++V) {
+        ASSERT_EQ(map[V].size(), 4u);
+        EXPECT_EQ(std::count(map[V].begin(), map[V].end(), '|'), 3) << "pick " << V;  // 3 up, 1 down
+        EXPECT_EQ(map[V], map[0].substr(4 - V % 4) + map[0].substr(0, 4 - V % 4)) << "pick " << V;  // the diagonal
+    }
+    EXPECT_EQ(distinctColours(d.warp.colors), 1u);
+    EXPECT_EQ(distinctColours(d.weft.colors), 1u);
+    EXPECT_NE(d.warp.colors[0], d.weft.colors[0]);
+    EXPECT_EQ(d.warp.units, LengthUnit::Centimeters);
+    EXPECT_FLOAT_EQ(1.0f / d.warp.spacing[0], 25.0f);
+    EXPECT_FLOAT_EQ(1.0f / d.weft.spacing[0], 16.0f);
 }
 
 }  // namespace
