@@ -22,6 +22,7 @@ import json
 import math
 import os
 import sys
+import time
 
 import bpy
 import mathutils
@@ -59,6 +60,8 @@ def parse_args(argv):
     p.add_argument("--threads", type=int, default=0, help="render threads (0: all cores)")
     p.add_argument("--keep-light-size", action="store_true",
                    help="keep the importer's light sizes (0.25 m radius, 0.53 deg sun) instead of points")
+    p.add_argument("--lambert", action="store_true",
+                   help="every material becomes a Lambertian Diffuse BSDF of its base colour, its emission kept")
     p.add_argument("--keep-animation", action="store_true",
                    help="keep the first glTF animation active (default: static node transforms)")
     args = p.parse_args(argv)
@@ -141,6 +144,36 @@ def make_lights_punctual():
             light.shadow_soft_size = 0.0
         elif light.type == "SUN":
             light.angle = 0.0
+
+
+def make_materials_lambertian():
+    """Each material's Principled BSDF replaced by a Diffuse BSDF (Lambert) of its base colour.
+
+    For scenes meant to be Lambertian, as the Lambert box of tools/cycles_compare/efficiency.py:
+    Blender 3.4's importer drops KHR_materials_specular's specularFactor (its Principled keeps
+    specular 0.5, F0 = 0.04) and the Principled diffuse is Burley's, brighter than Lambert's at
+    grazing angles and rough, where woven reads a glTF base colour as Lambert's. Emission stays.
+    """
+    for material in bpy.data.materials:
+        if not material.use_nodes:
+            continue
+        nodes, links = material.node_tree.nodes, material.node_tree.links
+        principled = next((n for n in nodes if n.type == "BSDF_PRINCIPLED"), None)
+        output = next((n for n in nodes if n.type == "OUTPUT_MATERIAL"), None)
+        if principled is None or output is None:
+            raise RenderError(f"--lambert: material '{material.name}' has no Principled BSDF and output")
+        if principled.inputs["Base Color"].is_linked:
+            raise RenderError(f"--lambert: material '{material.name}' has a base colour texture")
+        diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+        diffuse.inputs["Color"].default_value = principled.inputs["Base Color"].default_value
+        diffuse.inputs["Roughness"].default_value = 0.0  # Oren-Nayar at 0 is Lambert
+        emission = nodes.new("ShaderNodeEmission")
+        emission.inputs["Color"].default_value = principled.inputs["Emission"].default_value
+        emission.inputs["Strength"].default_value = principled.inputs["Emission Strength"].default_value
+        add = nodes.new("ShaderNodeAddShader")
+        links.new(add.inputs[0], diffuse.outputs["BSDF"])
+        links.new(add.inputs[1], emission.outputs["Emission"])
+        links.new(output.inputs["Surface"], add.outputs["Shader"])
 
 
 def world_bounds():
@@ -306,7 +339,10 @@ def render_exr(scene, out):
     settings.exr_codec = "ZIP"
     scene.render.filepath = out
     scene.render.use_file_extension = False
+    start = time.perf_counter()
     bpy.ops.render.render(write_still=True)
+    # Scene sync, BVH, rendering and the EXR write: what efficiency.py counts as render time.
+    print(f"CYCLES_RENDER_SECONDS {time.perf_counter() - start:.4f}", flush=True)
     if not os.path.isfile(out):
         raise RenderError(f"Cycles wrote no image to {out}")
 
@@ -325,6 +361,8 @@ def main():
     setup_cycles(scene, args)
     if not args.keep_light_size:
         make_lights_punctual()
+    if args.lambert:
+        make_materials_lambertian()
     render_exr(scene, args.out)
     print(f"cycles_render: wrote {os.path.abspath(args.out)}", flush=True)
 
