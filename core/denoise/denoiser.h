@@ -1,0 +1,40 @@
+#pragma once
+// The denoiser of final frames: non-local means guided by the render passes, after Rousselle,
+// Knaus and Zwicker 2012 ("Adaptive rendering with non-local means filtering") and Rousselle,
+// Manzi and Zwicker 2013 ("Robust denoising using feature and color information"). Each pixel p
+// becomes the weighted mean of the pixels q in a (2r+1)^2 window around it, the weight
+//     w(p, q) = exp(-max(0, D_c(p, q), D_f(p, q))),
+// the smaller of the colour weight and the feature weight. D_c is the mean over the
+// (2f+1)^2 patches around p and q and over channels of
+//     ((u_p - u_q)^2 - alpha (Var_p + min(Var_p, Var_q))) / (eps + k^2 (Var_p + Var_q)),
+// the squared difference less what the pixels' noise explains, in units of that noise; D_f is
+// FeatureGuide's. What is filtered is the colour with the albedo divided out
+// (albedo_demodulation.h), multiplied back after: the threads stay as sharp as the albedo pass.
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "denoise_buffers.h"
+#include "feature_guide.h"
+
+namespace woven {
+
+struct DenoiseSettings {
+    int radius = 7;         // r: the window is 15 x 15 pixels
+    int patchRadius = 3;    // f: 7 x 7 patches, the papers'
+    float k = 0.45f;        // k_c, the papers'
+    float alpha = 1.0f;     // variance cancellation, the 2012 paper's
+    FeatureSettings features{};
+};
+
+struct DenoiseResult {
+    std::vector<glm::vec3> color;  // the denoised linear RGB, row-major
+    size_t unusablePixels = 0;     // left as they were (DenoiseBuffers::usable)
+};
+
+// Multithreaded (TBB, in the caller's arena). Throws std::invalid_argument on buffers of the
+// wrong size (checkDenoiseBuffers) or settings out of range.
+DenoiseResult denoise(const DenoiseBuffers& buffers, const DenoiseSettings& settings = {});
+
+}  // namespace woven

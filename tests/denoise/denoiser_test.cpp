@@ -1,0 +1,168 @@
+// The denoiser on synthetic frames with a known truth: smooth light under a sharp thread pattern
+// in the albedo, Gaussian noise of a known variance from fixed seeds.
+#include "denoiser.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace woven {
+namespace {
+
+constexpr int kSize = 96;
+
+// Light that varies slowly across the frame, as irradiance does across a few threads.
+glm::vec3 light(int x, int y) {
+    const float s = 0.8f + 0.3f * std::sin(0.05f * float(x)) * std::cos(0.04f * float(y));
+    return glm::vec3(s, 0.9f * s, 0.8f * s);
+}
+
+// Threads two pixels wide in a plain weave, each thread of its own colour as in a tartan (drawn
+// once from a fixed seed): the albedo changes at every second pixel in both directions, and no
+// patch of it repeats for non-local means to find.
+glm::vec3 threadAlbedo(int x, int y) {
+    static const std::vector<glm::vec3> colours = [] {
+        std::mt19937 rng(2024);
+        std::uniform_real_distribution<float> u(0.05f, 0.8f);
+        std::vector<glm::vec3> c(2 * kSize);
+        for (glm::vec3& v : c) v = glm::vec3(u(rng), u(rng), u(rng));
+        return c;
+    }();
+    const int warp = x / 2, weft = y / 2;
+    return (warp + weft) % 2 == 0 ? colours[size_t(warp)] : colours[size_t(kSize + weft)];
+}
+
+struct Frame {
+    DenoiseBuffers buffers;
+    std::vector<glm::vec3> truth;
+};
+
+// sigma: the noise's standard deviation relative to the truth.
+Frame frame(bool threads, float sigma, uint32_t seed) {
+    Frame f;
+    DenoiseBuffers& b = f.buffers;
+    b.width = b.height = kSize;
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> normal(0.0f, 1.0f);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec3 a = threads ? threadAlbedo(x, y) : glm::vec3(0.5f);
+            const glm::vec3 t = a * light(x, y), sd = sigma * t;
+            f.truth.push_back(t);
+            b.color.push_back(t + sd * glm::vec3(normal(rng), normal(rng), normal(rng)));
+            b.variance.push_back(sd * sd);
+            b.albedo.push_back(a);
+            b.normal.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+            b.depth.push_back(0.6f);
+        }
+    return f;
+}
+
+double mse(const std::vector<glm::vec3>& image, const std::vector<glm::vec3>& truth) {
+    double sum = 0.0;
+    for (size_t i = 0; i < truth.size(); ++i)
+        for (int c = 0; c < 3; ++c) sum += double(image[i][c] - truth[i][c]) * double(image[i][c] - truth[i][c]);
+    return sum / double(3 * truth.size());
+}
+
+// The energy of the image's fine detail: the image minus its 3 x 3 mean, squared and summed
+// (borders left out), the measure the issue gives for the weave.
+double detailEnergy(const std::vector<glm::vec3>& image) {
+    double sum = 0.0;
+    for (int y = 1; y < kSize - 1; ++y)
+        for (int x = 1; x < kSize - 1; ++x) {
+            glm::vec3 mean(0.0f);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) mean += image[size_t(y + dy) * kSize + x + dx];
+            const glm::vec3 d = image[size_t(y) * kSize + x] - mean / 9.0f;
+            sum += double(glm::dot(d, d));
+        }
+    return sum;
+}
+
+TEST(Denoiser, NoiseVarianceDropsOnSmoothLight) {
+    const Frame f = frame(false, 0.1f, 7);
+    const double before = mse(f.buffers.color, f.truth);
+    const double after = mse(denoise(f.buffers).color, f.truth);
+    // A 15 x 15 window holds 225 pixels; where the light is this smooth the colour weights keep
+    // most of them, and the mean of even 20 independent pixels has a twentieth of the variance.
+    // Measured: 1/69. A denoiser that only moved pixels about, or smoothed 3 x 3, stays above 1/10.
+    EXPECT_LT(after, before / 20.0) << "MSE " << before << " -> " << after;
+}
+
+TEST(Denoiser, ThreadsKeepTheirDetailAndLoseTheirNoise) {
+    const Frame f = frame(true, 0.1f, 11);
+    const DenoiseResult out = denoise(f.buffers);
+    const double truthEnergy = detailEnergy(f.truth);
+    const double ratio = detailEnergy(out.color) / truthEnergy;
+    // The issue's bound on the weave's fine detail: 60-140 % of the truth's energy. The noisy
+    // input holds more (its noise is fine detail too); a filter that averaged across threads of
+    // both colours would hold far less.
+    EXPECT_GT(ratio, 0.6);
+    EXPECT_LT(ratio, 1.4);
+    const double before = mse(f.buffers.color, f.truth), after = mse(out.color, f.truth);
+    // The albedo divided out leaves the smooth light of the test above; the bound is looser for
+    // the thread pattern's edges. Measured: 1/21.
+    EXPECT_LT(after, before / 10.0) << "MSE " << before << " -> " << after;
+}
+
+TEST(Denoiser, ThreadsNeedTheAlbedoPass) {
+    // The control of the test above: the same frame with its passes taken away. Colour alone
+    // cannot tell a thread of another colour from noise, and the threads' patches never repeat,
+    // so the colour weights refuse almost every neighbour and the noise stays (measured: the MSE
+    // falls by 1 %). That the frame above loses 95 % of its MSE is the albedo pass's doing.
+    Frame f = frame(true, 0.1f, 11);
+    f.buffers.albedo.clear();
+    f.buffers.normal.clear();
+    f.buffers.depth.clear();
+    const double before = mse(f.buffers.color, f.truth), after = mse(denoise(f.buffers).color, f.truth);
+    EXPECT_GT(after, before / 3.0) << "MSE " << before << " -> " << after;
+}
+
+TEST(Denoiser, ConstantFrameIsUnchanged) {
+    Frame f = frame(false, 0.0f, 1);
+    for (glm::vec3& c : f.buffers.color) c = glm::vec3(0.3f, 0.2f, 0.1f);
+    const DenoiseResult out = denoise(f.buffers);
+    for (size_t i = 0; i < out.color.size(); ++i) ASSERT_EQ(out.color[i], f.buffers.color[i]) << "pixel " << i;
+    // And with noise that the variance claims but the pixels do not show.
+    for (glm::vec3& v : f.buffers.variance) v = glm::vec3(0.01f);
+    const DenoiseResult noisy = denoise(f.buffers);
+    for (size_t i = 0; i < noisy.color.size(); ++i) ASSERT_EQ(noisy.color[i], f.buffers.color[i]) << "pixel " << i;
+}
+
+TEST(Denoiser, NonFinitePixelsAreLeftAloneAndLendToNone) {
+    Frame f = frame(false, 0.1f, 3);
+    const size_t nan = size_t(40) * kSize + 40, inf = size_t(41) * kSize + 44, badVariance = size_t(60) * kSize + 20;
+    f.buffers.color[nan].y = std::numeric_limits<float>::quiet_NaN();
+    f.buffers.color[inf].x = std::numeric_limits<float>::infinity();
+    f.buffers.variance[badVariance].z = -1.0f;
+    const DenoiseResult out = denoise(f.buffers);
+    EXPECT_EQ(out.unusablePixels, 3u);
+    EXPECT_TRUE(std::isnan(out.color[nan].y));
+    EXPECT_EQ(out.color[inf], f.buffers.color[inf]);
+    EXPECT_EQ(out.color[badVariance], f.buffers.color[badVariance]);
+    for (size_t i = 0; i < out.color.size(); ++i) {
+        if (i == nan || i == inf) continue;
+        for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(out.color[i][c])) << "pixel " << i;
+        // No neighbour took anything of the infinite pixel: each stays within 50 % of the truth
+        // (the noise alone is 10 %).
+        ASSERT_LT(std::fabs(out.color[i].x - f.truth[i].x), 0.5f * f.truth[i].x) << "pixel " << i;
+    }
+}
+
+TEST(Denoiser, BuffersOfTheWrongSizeAreRefused) {
+    Frame f = frame(false, 0.1f, 5);
+    f.buffers.albedo.pop_back();
+    EXPECT_THROW(denoise(f.buffers), std::invalid_argument);
+    f.buffers.albedo.clear();  // a pass may be left out
+    EXPECT_NO_THROW(denoise(f.buffers));
+    f.buffers.variance.clear();  // the variance may not
+    EXPECT_THROW(denoise(f.buffers), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace woven
