@@ -31,6 +31,8 @@ GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
       f90_(clamp01(in.specularF90)),
       transmission_(clamp01(in.transmission)),
       transmittance_(clamp01(in.transmittance)),
+      diffuseTransmission_(clamp01(in.diffuseTransmission)),
+      diffuseTransmissionColor_(clamp01(in.diffuseTransmissionColor)),
       sheen_(in.sheenColor, in.sheenRoughness),
       clearcoat_(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal),
       iridescence_(clamp01(in.iridescence)),
@@ -68,12 +70,15 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
 
     glm::vec3 f;
     if (reflection) {
-        const glm::vec3 dielectric = (1.0f - dielectricF) * (1.0f - transmission_) * baseColor_ * kInvPi +
-                                     dielectricF * specular;
+        const glm::vec3 dielectric =
+            (1.0f - dielectricF) * (1.0f - transmission_) * (1.0f - diffuseTransmission_) * baseColor_ * kInvPi +
+            dielectricF * specular;
         const glm::vec3 metal = F.metal * specular;
         f = (1.0f - metallic_) * dielectric + metallic_ * metal;
     } else {
-        f = (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * baseColor_ * transmittance_ * specular;
+        f = (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * baseColor_ * transmittance_ * specular +
+            (1.0f - metallic_) * (1.0f - transmission_) * diffuseTransmission_ * kInvPi * (1.0f - dielectricF) *
+                diffuseTransmissionColor_;
     }
     if (sheen_.active()) {
         f *= std::min(sheen_.baseScale(wo.z), sheen_.baseScale(w.z));
@@ -97,20 +102,24 @@ GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
     const float base = luminance(baseColor_);
     LobeChoice c;
     c.specular = below * ((1.0f - metallic_) * dielectricF + metallic_ * metalF);
-    c.diffuse = below * (1.0f - metallic_) * (1.0f - transmission_) * (1.0f - dielectricF) * base;
+    const float diffuseShare = below * (1.0f - metallic_) * (1.0f - transmission_) * (1.0f - dielectricF);
+    c.diffuse = diffuseShare * (1.0f - diffuseTransmission_) * base;
     c.transmission = below * (1.0f - metallic_) * transmission_ * (1.0f - dielectricF) * luminance(baseColor_ * transmittance_);
+    c.diffuseTransmission = diffuseShare * diffuseTransmission_ * luminance(diffuseTransmissionColor_);
     c.sheen = sheen_.active() ? (1.0f - clearcoat_.reflectance(wo)) * sheen_.maxColor() * sheen_.albedo(wo.z) : 0.0f;
     c.clearcoat = clearcoat_.reflectance(wo);
     // Each lobe whose f can be non-zero keeps some probability, so pdf() never vanishes where
     // f does not (a black base colour still reflects through its Fresnel term, and so on).
     c.specular = std::max(c.specular, 0.02f);
-    if (transmits()) c.transmission = std::max(c.transmission, 0.02f);
-    if (metallic_ < 1.0f && transmission_ < 1.0f) c.diffuse = std::max(c.diffuse, 0.02f);
-    const float sum = c.specular + c.diffuse + c.transmission + c.sheen + c.clearcoat;
+    if (metallic_ < 1.0f && transmission_ > 0.0f) c.transmission = std::max(c.transmission, 0.02f);
+    if (metallic_ < 1.0f && transmission_ < 1.0f && diffuseTransmission_ < 1.0f) c.diffuse = std::max(c.diffuse, 0.02f);
+    if (metallic_ < 1.0f && diffuseTransmits()) c.diffuseTransmission = std::max(c.diffuseTransmission, 0.02f);
+    const float sum = c.specular + c.diffuse + c.transmission + c.sheen + c.diffuseTransmission + c.clearcoat;
     c.specular /= sum;
     c.diffuse /= sum;
     c.transmission /= sum;
     c.sheen /= sum;
+    c.diffuseTransmission /= sum;
     c.clearcoat /= sum;
     return c;
 }
@@ -118,7 +127,12 @@ GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
 float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
     const LobeChoice c = choose(wo);
-    if (wi.z < 0.0f) return transmits() ? c.transmission * ggx_.reflectionPdf(wo, mirrorThroughSurface(wi)) : 0.0f;
+    if (wi.z < 0.0f) {
+        if (!transmits()) return 0.0f;
+        float p = c.diffuseTransmission * -wi.z * kInvPi;
+        if (c.transmission > 0.0f) p += c.transmission * ggx_.reflectionPdf(wo, mirrorThroughSurface(wi));
+        return p;
+    }
     float p = c.specular * ggx_.reflectionPdf(wo, wi) + (c.diffuse + c.sheen) * wi.z * kInvPi;
     if (c.clearcoat > 0.0f) p += c.clearcoat * clearcoat_.pdf(wo, wi);
     return p;
@@ -131,7 +145,8 @@ std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2&
     // can leave a hair under 1: a uc past the last of them belongs to the last lobe that can be
     // chosen, not to the clearcoat's branch whatever its probability (an inactive coat then
     // gave directions pdf() does not count).
-    const float toCosine = c.specular + c.transmission + c.diffuse + c.sheen;
+    const float toReflectedCosine = c.specular + c.transmission + c.diffuse + c.sheen;
+    const float toCosine = toReflectedCosine + c.diffuseTransmission;
     uc = std::min(uc, std::nextafter(toCosine + c.clearcoat, 0.0f));
     glm::vec3 wi;
     if (uc < c.specular + c.transmission) {
@@ -141,6 +156,7 @@ std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2&
         if (uc >= c.specular) wi = mirrorThroughSurface(wi);
     } else if (uc < toCosine) {
         wi = sampleCosineHemisphere(u);
+        if (uc >= toReflectedCosine) wi = mirrorThroughSurface(wi);
     } else {
         const auto coat = clearcoat_.sample(wo, u);
         // A tilted coat normal can reflect below the base's horizon: the coat only reflects,

@@ -3,7 +3,8 @@
 // extensions woven renders, at one shading point, in a local frame with z = the shading normal
 // on the viewer's side and x = KHR_materials_anisotropy's direction:
 //   base  = mix(dielectric, metal, metallic)
-//   dielectric = fresnel_mix(F0, F90; (1 - T) Lambert(baseColor) + T thinBtdf, GGX)
+//   dielectric = fresnel_mix(F0, F90; (1 - T) diffuse + T thinBtdf, GGX)
+//   diffuse = (1 - D) Lambert(baseColor) + D LambertBtdf(diffuseTransmissionColor)
 //   metal = conductor_fresnel(baseColor; GGX)
 //   f = clearcoat over (sheen over base), each layer scaling the one below by what it reflects.
 // F0 and F90 come from KHR_materials_ior and KHR_materials_specular; KHR_materials_iridescence
@@ -13,7 +14,10 @@
 // (KHR_materials_transmission without refraction): the GGX lobe mirrored through the surface,
 // tinted by the base colour and by KHR_materials_volume's attenuation. GGX's energy loss to
 // multiple scattering at high roughness is not compensated, as in the specification's
-// reference; docs/MATERIALS.md gives its size.
+// reference; docs/MATERIALS.md gives its size. KHR_materials_diffuse_transmission's D moves that
+// share of the diffuse base to the other side: a Lambertian BTDF, whose Fresnel weight is taken
+// at the half vector of wo and wi mirrored through the surface (as the thin transmission's is),
+// so that it stays reciprocal.
 // Sampling picks one lobe by its estimated reflectance towards wo (GGX by its visible normals,
 // diffuse and sheen by the cosine), and pdf() is the mixture density of all of them.
 #include <optional>
@@ -34,6 +38,8 @@ struct GltfBxdfInputs {
     float specularF90 = 1.0f;
     float transmission = 0.0f;
     glm::vec3 transmittance{1.0f};  // volume attenuation of one crossing
+    float diffuseTransmission = 0.0f;  // KHR_materials_diffuse_transmission's D
+    glm::vec3 diffuseTransmissionColor{1.0f};
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
     float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
@@ -50,13 +56,16 @@ public:
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
-    bool transmits() const { return transmission_ > 0.0f && metallic_ < 1.0f; }
+    bool transmits() const { return metallic_ < 1.0f && (transmission_ > 0.0f || diffuseTransmits()); }
 
 private:
     // Probabilities of sampling each lobe towards wo; they sum to 1.
     struct LobeChoice {
-        float specular = 1.0f, diffuse = 0.0f, transmission = 0.0f, sheen = 0.0f, clearcoat = 0.0f;
+        float specular = 1.0f, diffuse = 0.0f, transmission = 0.0f, sheen = 0.0f, diffuseTransmission = 0.0f,
+              clearcoat = 0.0f;
     };
+    // Whether the diffuse base passes light through (the thin transmission does not cover it all).
+    bool diffuseTransmits() const { return diffuseTransmission_ > 0.0f && transmission_ < 1.0f; }
     LobeChoice choose(const glm::vec3& wo) const;
     // The dielectric's and the metal's Fresnel reflectance at cosTheta to the microfacet normal.
     struct Fresnel {
@@ -71,6 +80,8 @@ private:
     float f90_;
     float transmission_;
     glm::vec3 transmittance_;
+    float diffuseTransmission_;
+    glm::vec3 diffuseTransmissionColor_;
     SheenLobe sheen_;
     ClearcoatLobe clearcoat_;
     float iridescence_, iridescenceIor_, iridescenceThickness_;

@@ -55,6 +55,8 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
       clearcoatNormalTexture_(material.clearcoat.normalTexture, textures),
       transmissionTexture_(material.transmission.texture, textures),
       thicknessTexture_(material.transmission.thicknessTexture, textures),
+      diffuseTransmissionTexture_(material.diffuseTransmission.texture, textures),
+      diffuseTransmissionColorTexture_(material.diffuseTransmission.colorTexture, textures),
       iridescenceTexture_(material.iridescence.texture, textures),
       iridescenceThicknessTexture_(material.iridescence.thicknessTexture, textures) {
     // KHR_materials_ior: an IOR of 0 stands for an infinite one (a perfect mirror's F0 of 1).
@@ -77,6 +79,10 @@ GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
     if (t.factor > 0.0f) {
         in.transmission = t.factor * transmissionTexture_.eval(tc).r;
         in.transmittance = crossingTransmittance(t, t.thickness * thicknessTexture_.eval(tc).g);
+    }
+    if (const DiffuseTransmissionParams& d = m_.diffuseTransmission; d.factor > 0.0f) {
+        in.diffuseTransmission = d.factor * diffuseTransmissionTexture_.eval(tc).a;
+        in.diffuseTransmissionColor = d.color * glm::vec3(diffuseTransmissionColorTexture_.eval(tc));
     }
     if (m_.sheen.color != glm::vec3(0.0f)) {
         in.sheenColor = m_.sheen.color * glm::vec3(sheenColorTexture_.eval(tc));

@@ -35,6 +35,7 @@ private:
     TextureSampler anisotropyTexture_;
     TextureSampler clearcoatTexture_, clearcoatRoughnessTexture_, clearcoatNormalTexture_;
     TextureSampler transmissionTexture_, thicknessTexture_;
+    TextureSampler diffuseTransmissionTexture_, diffuseTransmissionColorTexture_;
     TextureSampler iridescenceTexture_, iridescenceThicknessTexture_;
     float dielectricF0_;  // from the IOR
 };

@@ -46,6 +46,7 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp", "EXT_mesh_gpu_instancing",
     "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_dispersion",
 };
+    "KHR_materials_diffuse_transmission",
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
     {"KHR_materials_volume", "rendered thin-walled: the attenuation applies, refraction does not"},

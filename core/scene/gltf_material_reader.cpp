@@ -65,12 +65,13 @@ float GltfMaterialReader::number(const json& object, const char* key, float fall
     return std::clamp(float(x), lo, hi);
 }
 
-glm::vec4 GltfMaterialReader::unitColor4(const json& object, const char* key, const std::string& where) const {
+glm::vec4 GltfMaterialReader::unitColor(const json& object, const char* key, int count, const std::string& where) const {
     const json& factor = member(object, key);
     glm::vec4 c(1.0f);
     if (factor.is_null()) return c;
-    if (!factor.is_array() || factor.size() != 4) fail(where + "." + key, "must be an array of 4 numbers");
-    for (int i = 0; i < 4; ++i) {
+    if (!factor.is_array() || factor.size() != size_t(count))
+        fail(where + "." + key, "must be an array of " + std::to_string(count) + " numbers");
+    for (int i = 0; i < count; ++i) {
         const json& v = factor[size_t(i)];
         if (!v.is_number() || !(v.get<double>() >= -kRangeSlack && v.get<double>() <= 1.0 + kRangeSlack))
             fail(where + "." + key, "must hold numbers in [0, 1]");
@@ -118,7 +119,7 @@ Material GltfMaterialReader::readMaterial(const json& source, const std::string&
     const json& pbr = member(source, "pbrMetallicRoughness");
     if (!pbr.is_null()) {
         const std::string at = where + ".pbrMetallicRoughness";
-        m.baseColor = unitColor4(pbr, "baseColorFactor", at);
+        m.baseColor = unitColor(pbr, "baseColorFactor", 4, at);
         m.metallic = number(pbr, "metallicFactor", 1.0f, 0.0f, 1.0f, at);
         m.roughness = number(pbr, "roughnessFactor", 1.0f, 0.0f, 1.0f, at);
         m.baseColorTexture = readTexture(member(pbr, "baseColorTexture"), true, at + ".baseColorTexture", scene);
@@ -208,6 +209,14 @@ void GltfMaterialReader::readExtensions(const json& extensions, Material& m, con
         m.transmission.factor = number(e, "transmissionFactor", 0.0f, 0.0f, 1.0f, at);
         m.transmission.texture = readTexture(member(e, "transmissionTexture"), false, at + ".transmissionTexture", scene);
     }
+    if (const json& e = member(extensions, "KHR_materials_diffuse_transmission"); !e.is_null()) {
+        const std::string at = where + ".KHR_materials_diffuse_transmission";
+        DiffuseTransmissionParams& d = m.diffuseTransmission;
+        d.factor = number(e, "diffuseTransmissionFactor", 0.0f, 0.0f, 1.0f, at);
+        d.texture = readTexture(member(e, "diffuseTransmissionTexture"), false, at + ".diffuseTransmissionTexture", scene);
+        d.color = glm::vec3(unitColor(e, "diffuseTransmissionColorFactor", 3, at));
+        d.colorTexture = readTexture(member(e, "diffuseTransmissionColorTexture"), true, at + ".diffuseTransmissionColorTexture", scene);
+    }
     if (const json& e = member(extensions, "KHR_materials_volume"); !e.is_null()) {
         const std::string at = where + ".KHR_materials_volume";
         m.transmission.thickness = number(e, "thicknessFactor", 0.0f, 0.0f, std::numeric_limits<float>::infinity(), at);
@@ -244,7 +253,7 @@ void GltfMaterialReader::readExtensions(const json& extensions, Material& m, con
 // specular-glossiness texture is given. The specular-glossiness model's diffuse, scaled by
 // 1 - max(specular), becomes woven's, scaled by 1 - F per channel: an approximation.
 void GltfMaterialReader::readSpecularGlossiness(const json& e, Material& m, const std::string& at, SceneDescription& scene) {
-    m.baseColor = unitColor4(e, "diffuseFactor", at);
+    m.baseColor = unitColor(e, "diffuseFactor", 4, at);
     m.baseColorTexture = readTexture(member(e, "diffuseTexture"), true, at + ".diffuseTexture", scene);
     m.metallic = 0.0f;
     m.ior = 0.0f;

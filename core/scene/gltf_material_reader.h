@@ -38,7 +38,8 @@ private:
 
     float number(const nlohmann::json& object, const char* key, float fallback, float lo, float hi,
                  const std::string& where) const;
-    glm::vec4 unitColor4(const nlohmann::json& object, const char* key, const std::string& where) const;  // RGBA in [0, 1], white if absent
+    // `count` (3 or 4) numbers in [0, 1] as RGB(A), white if absent.
+    glm::vec4 unitColor(const nlohmann::json& object, const char* key, int count, const std::string& where) const;
     glm::vec3 color3(const nlohmann::json& object, const char* key, glm::vec3 fallback, const std::string& where) const;
 
     std::string path_;

@@ -91,6 +91,16 @@ struct TransmissionParams {
     float attenuationDistance = std::numeric_limits<float>::infinity();
 };
 
+// KHR_materials_diffuse_transmission: of the light the diffuse base does not reflect, the share
+// `factor` passes to the other side as a Lambertian BTDF of colour `color` (thin-walled, as a
+// leaf, paper or a curtain is).
+struct DiffuseTransmissionParams {
+    float factor = 0.0f;
+    TextureRef texture;  // A
+    glm::vec3 color{1.0f};
+    TextureRef colorTexture;  // RGB, sRGB
+};
+
 // KHR_materials_iridescence: a thin dielectric film over the specular reflection (thin_film.h).
 struct IridescenceParams {
     float factor = 0.0f;
@@ -140,6 +150,7 @@ struct Material {
     AnisotropyParams anisotropy;
     ClearcoatParams clearcoat;
     TransmissionParams transmission;
+    DiffuseTransmissionParams diffuseTransmission;
     IridescenceParams iridescence;
 };
 

@@ -106,6 +106,12 @@ void add(Hasher& h, const Material& m) {
         h.add(i.thicknessMax);
         add(h, i.thicknessTexture);
     }
+    if (const DiffuseTransmissionParams& d = m.diffuseTransmission; d.factor > 0.0f) {
+        h.add(d.factor);
+        add(h, d.texture);
+        h.add(d.color);
+        add(h, d.colorTexture);
+    }
 }
 
 void add(Hasher& h, const Mesh& m) {

@@ -37,6 +37,8 @@ inline GltfBxdfInputs toInputs(const Material& m) {
     in.specularF90 = float(gltfref::dielectricF90(m));
     in.transmission = float(m.transmission);
     in.transmittance = glm::vec3(m.transmittance);
+    in.diffuseTransmission = float(m.diffuseTransmission);
+    in.diffuseTransmissionColor = glm::vec3(m.diffuseTransmissionColor);
     in.sheenColor = glm::vec3(m.sheenColor);
     in.sheenRoughness = float(m.sheenRoughness);
     in.clearcoat = float(m.clearcoat);
@@ -57,7 +59,8 @@ inline std::string describe(const Material& m) {
       << " roughness " << m.roughness << " anisotropy " << m.anisotropy << " ior " << m.ior << " specular " << m.specular << " specColor ("
       << m.specularColor.r << " " << m.specularColor.g << " " << m.specularColor.b << ") T " << m.transmission
       << " transmittance (" << m.transmittance.r << " " << m.transmittance.g << " " << m.transmittance.b
-      << ") sheen (" << m.sheenColor.r << " " << m.sheenColor.g << " " << m.sheenColor.b << ") r "
+      << ") DT " << m.diffuseTransmission << " (" << m.diffuseTransmissionColor.r << " " << m.diffuseTransmissionColor.g
+      << " " << m.diffuseTransmissionColor.b << ") sheen (" << m.sheenColor.r << " " << m.sheenColor.g << " " << m.sheenColor.b << ") r "
       << m.sheenRoughness << " coat " << m.clearcoat << " r " << m.clearcoatRoughness << " n ("
       << m.clearcoatNormal.x << " " << m.clearcoatNormal.y << " " << m.clearcoatNormal.z << ")";
     return s.str();
@@ -125,6 +128,10 @@ inline Material randomMaterial(TestRng& rng) {
             m.clearcoatNormal = glm::normalize(n);
         }
     }
+    if (rng.chance(0.3)) {
+        m.diffuseTransmission = rng.chance(0.2) ? 1.0 : rng.uniform(0.0, 1.0);
+        m.diffuseTransmissionColor = rng.color();
+    }
     return m;
 }
 
@@ -135,6 +142,10 @@ inline glm::dvec3 spherical(double theta, double phi) {
 inline glm::vec3 toFloatUnit(const glm::dvec3& w) { return roundToFloat(glm::normalize(w)); }
 inline glm::dvec3 mirror(const glm::dvec3& w) { return {w.x, w.y, -w.z}; }
 inline glm::vec3 mirror(const glm::vec3& w) { return {w.x, w.y, -w.z}; }
+// Whether a material lets light through to the other side (thin or diffuse transmission).
+inline bool transmits(const Material& m) {
+    return m.metallic < 1.0 && (m.transmission > 0.0 || (m.diffuseTransmission > 0.0 && m.transmission < 1.0));
+}
 // The thin-walled transmission's L mirrored to the upper side; reflection directions unchanged.
 inline glm::vec3 mirrorBelow(const glm::vec3& w) { return w.z < 0.0f ? mirror(w) : w; }
 

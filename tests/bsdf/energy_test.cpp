@@ -116,6 +116,50 @@ TEST(GltfEnergy, LambertWhiteFurnace) {
     }
 }
 
+TEST(GltfEnergy, DiffuseTransmissionWhiteFurnace) {
+    // KHR_materials_diffuse_transmission over that Lambert base: of the diffuse light the share D
+    // leaves below with its colour, so the albedo over both hemispheres is (1 - D) baseColor +
+    // D diffuseTransmissionColor, and all of it below the surface is the latter. A white base and
+    // white transmission colour give exactly 1 for every D (nothing absorbed: a white furnace).
+    uint64_t seed = 7100;
+    for (double d : {0.3, 1.0}) {
+        for (const bool white : {false, true}) {
+            Material m;
+            m.metallic = 0.0;
+            m.roughness = 1.0;
+            m.specular = 0.0;
+            m.baseColor = white ? glm::dvec3(1.0) : glm::dvec3(0.9, 0.5, 0.1);
+            m.diffuseTransmission = d;
+            m.diffuseTransmissionColor = white ? glm::dvec3(1.0) : glm::dvec3(0.2, 0.6, 1.0);
+            const GltfBxdf bxdf(toInputs(m));
+            const glm::dvec3 expected = (1.0 - d) * m.baseColor + d * m.diffuseTransmissionColor;
+            for (double degrees : {0.0, 45.0, 80.0, 89.0}) {
+                TestRng rng(++seed);
+                constexpr int kDraws = 20000;
+                glm::dvec3 sum(0.0), sum2(0.0), below(0.0), below2(0.0);
+                for (int n = 0; n < kDraws; ++n) {
+                    const auto s = bxdf.sample(viewAt(degrees), rng.u2(), rng.u());
+                    const glm::dvec3 w = s ? glm::dvec3(s->weight) : glm::dvec3(0.0);
+                    sum += w;
+                    sum2 += w * w;
+                    if (s && s->wi.z < 0.0f) below += w, below2 += w * w;
+                }
+                const glm::dvec3 mean = sum / double(kDraws);
+                const auto standardError = [](const glm::dvec3& m, const glm::dvec3& m2) {
+                    return glm::sqrt(glm::max(glm::dvec3(0.0), m2 / double(kDraws) - m * m) / double(kDraws));
+                };
+                const glm::dvec3 meanBelow = below / double(kDraws);
+                const glm::dvec3 sigma = standardError(mean, sum2), sigmaBelow = standardError(meanBelow, below2);
+                for (int c = 0; c < 3; ++c) {
+                    EXPECT_NEAR(mean[c], expected[c], 4.0 * sigma[c] + 1e-6) << "D " << d << " channel " << c << " at " << degrees;
+                    EXPECT_NEAR(meanBelow[c], d * m.diffuseTransmissionColor[c], 4.0 * sigmaBelow[c] + 1e-6)
+                        << "D " << d << " channel " << c << " at " << degrees << " (below the surface)";
+                }
+            }
+        }
+    }
+}
+
 // The albedo of the reference BRDF by quadrature over the half-vector domain (independent of
 // sample()), to a few 1e-4 (direction_domain.h's horizon-cut accuracy).
 double referenceAlbedo(const Material& m, const glm::vec3& wo) {

@@ -60,6 +60,10 @@ public:
         in.transmission = pick(2) ? scalar() : 0.0f;
         in.transmittance = color();
         if (pick(2)) {
+            in.diffuseTransmission = scalar();
+            in.diffuseTransmissionColor = color();
+        }
+        if (pick(2)) {
             in.sheenColor = color();
             in.sheenRoughness = scalar();
         }
@@ -145,7 +149,8 @@ TEST(GltfNoNan, AMillionHardQueries) {
                 ADD_FAILURE() << problem << " at wo " << describe(wo) << " wi " << describe(wi) << " base "
                               << describe(in.baseColor) << " metallic " << in.metallic << " roughness " << in.roughness
                               << " F0 " << describe(in.specularF0) << " F90 " << in.specularF90 << " T "
-                              << in.transmission << " sheen " << describe(in.sheenColor) << " r " << in.sheenRoughness
+                              << in.transmission << " DT " << in.diffuseTransmission << " "
+                              << describe(in.diffuseTransmissionColor) << " sheen " << describe(in.sheenColor) << " r " << in.sheenRoughness
                               << " coat " << in.clearcoat << " r " << in.clearcoatRoughness << " n "
                               << describe(in.clearcoatNormal);
             }

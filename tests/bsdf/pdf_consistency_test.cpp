@@ -125,10 +125,16 @@ TEST(GltfPdf, IntegratesToTheFractionOfSamplesReturned) {
     m.roughness = 0.05;
     all.push_back({"smooth metal", m});
     m = base;
+    m.roughness = 0.4;
+    m.diffuseTransmission = 0.6;
+    m.diffuseTransmissionColor = {0.9, 0.3, 0.2};
+    all.push_back({"diffuse transmission", m});
+    m = base;
     m.roughness = 0.7;
     m.transmission = 1.0;
     all.push_back({"rough thin glass", m});
     m.transmission = 0.5;
+    m.diffuseTransmission = 0.5;
     m.sheenColor = {0.8, 0.8, 0.8};
     m.sheenRoughness = 0.4;
     m.clearcoat = 1.0;

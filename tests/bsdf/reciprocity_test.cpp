@@ -4,7 +4,7 @@
 // them must not change f, with every feature on (sheen's min of the two albedo scalings and the
 // coat's max of the two Fresnel factors exist for this).
 //
-// Thin-walled transmission: eval() wants wo on the side of the frame's z (GltfMaterial::bsdf
+// Thin-walled and diffuse transmission: eval() wants wo on the side of the frame's z (GltfMaterial::bsdf
 // turns the shading normal to the viewer's side), so light going the other way, from wi's side
 // to wo's, is evaluated by the BSDF the material builds on the other side. That frame's z is -n:
 // a world direction d has the local coordinates M(d) = (d.x, d.y, -d.z) up to a rotation about
@@ -77,14 +77,15 @@ TEST(GltfReciprocity, ReflectionIsSymmetric) {
     std::printf("[ reciprocity ] reflection: worst difference / bound %.3f\n", worst);
 }
 
-TEST(GltfReciprocity, ThinTransmissionIsSymmetricSeenFromTheOtherSide) {
-    TestRng rng(78);
+// Transmission of random materials that `makeTransmit` makes transmitting, seen from both sides.
+void expectTransmissionReciprocal(uint64_t seed, void (*makeTransmit)(TestRng&, Material&), const char* label) {
+    TestRng rng(seed);
     int failures = 0, tested = 0;
     double worst = 0.0;
     for (int i = 0; i < 500 && failures < 10; ++i) {
         Material m = randomMaterial(rng);
         m.metallic = std::min(m.metallic, 0.9);
-        m.transmission = rng.uniform(0.1, 1.0);
+        makeTransmit(rng, m);
         if (i % 2 == 0) {  // half of them with a clearcoat, tilted as a coat normal map would
             m.clearcoat = rng.uniform(0.2, 1.0);
             m.clearcoatNormal = glm::normalize(rng.hemisphere() + glm::dvec3(0.0, 0.0, 1.0));
@@ -113,7 +114,20 @@ TEST(GltfReciprocity, ThinTransmissionIsSymmetricSeenFromTheOtherSide) {
         }
     }
     EXPECT_GT(tested, 50000);  // the transmission lobe really was non-zero
-    std::printf("[ reciprocity ] thin transmission: worst difference / bound %.3f\n", worst);
+    std::printf("[ reciprocity ] %s: worst difference / bound %.3f\n", label, worst);
+}
+
+TEST(GltfReciprocity, ThinTransmissionIsSymmetricSeenFromTheOtherSide) {
+    expectTransmissionReciprocal(78, [](TestRng& rng, Material& m) { m.transmission = rng.uniform(0.1, 1.0); },
+                                 "thin transmission");
+}
+
+TEST(GltfReciprocity, DiffuseTransmissionIsSymmetricSeenFromTheOtherSide) {
+    expectTransmissionReciprocal(79, [](TestRng& rng, Material& m) {
+        m.transmission = rng.chance(0.3) ? rng.uniform(0.0, 0.9) : 0.0;
+        m.diffuseTransmission = rng.uniform(0.1, 1.0);
+        m.diffuseTransmissionColor = rng.color(0.1, 1.0);
+    }, "diffuse transmission");
 }
 
 }  // namespace

@@ -15,6 +15,10 @@
 //    mix(diffuse, specular_btdf, transmission), the BTDF being the specular BRDF evaluated with
 //    L mirrored through the surface and tinted by the base colour; KHR_materials_volume's
 //    attenuation of one crossing multiplies it.
+//  - KHR_materials_diffuse_transmission: that diffuse base's Lambert BRDF becomes
+//    mix(diffuse_brdf(baseColor), diffuse_btdf(diffuseTransmissionColor), diffuseTransmission),
+//    the BTDF being colour / pi towards L on the other side; fresnel_mix's weight for it taken at
+//    the half vector of V and L mirrored, as for the thin-walled transmission.
 //  - KHR_materials_sheen: the Charlie distribution and Conty-Kulla's visibility, layered over
 //    the base by albedo scaling, min(1 - max(sheenColor) E(N.V), 1 - max(sheenColor) E(N.L)).
 //  - KHR_materials_clearcoat: a GGX coat with F0 = 0.04 (IOR 1.5) on its own normal, over the
@@ -50,6 +54,8 @@ struct Material {
     glm::dvec3 specularColor{1.0};
     double transmission = 0.0;
     glm::dvec3 transmittance{1.0};
+    double diffuseTransmission = 0.0;
+    glm::dvec3 diffuseTransmissionColor{1.0};
     glm::dvec3 sheenColor{0.0};
     double sheenRoughness = 0.0;
     double clearcoat = 0.0, clearcoatRoughness = 0.0;
@@ -171,13 +177,14 @@ inline glm::dvec3 eval(const Material& m, const glm::dvec3& v, const glm::dvec3&
     glm::dvec3 f;
     if (reflection) {
         // fresnel_mix(base = mix(diffuse, btdf, T) -> only the diffuse part reflects, layer = specular)
-        const glm::dvec3 diffuse = m.baseColor / kPi;
+        const glm::dvec3 diffuse = (1.0 - m.diffuseTransmission) * m.baseColor / kPi;
         const glm::dvec3 dielectric = (1.0 - dielectricF) * (1.0 - m.transmission) * diffuse + dielectricF * microfacet;
         const glm::dvec3 metal = metalF * microfacet;
         f = (1.0 - m.metallic) * dielectric + m.metallic * metal;
     } else {
         const glm::dvec3 btdf = m.baseColor * m.transmittance * microfacet;
-        f = (1.0 - m.metallic) * (1.0 - dielectricF) * m.transmission * btdf;
+        const glm::dvec3 diffuseBtdf = m.diffuseTransmission * m.diffuseTransmissionColor / kPi;
+        f = (1.0 - m.metallic) * (1.0 - dielectricF) * (m.transmission * btdf + (1.0 - m.transmission) * diffuseBtdf);
     }
 
     if (maxComponent(m.sheenColor) > 0.0) {

@@ -71,7 +71,7 @@ Pair randomPair(TestRng& rng, const Material& m) {
             default: wi = wo; name = "wi = wo"; break;
         }
         if (wi.z <= 1e-6 || wo.z <= 1e-6) continue;
-        if (m.transmission > 0.0 && rng.chance(0.4)) {
+        if ((m.transmission > 0.0 || m.diffuseTransmission > 0.0) && rng.chance(0.4)) {
             wi = mirror(wi);
             name = "transmission";
         }
@@ -129,6 +129,8 @@ TEST(GltfReference, TellsApartParametersOffByOnePercent) {
     m.specular = 0.9;
     m.transmission = 0.5;
     m.transmittance = {0.9, 0.8, 0.7};
+    m.diffuseTransmission = 0.4;
+    m.diffuseTransmissionColor = {0.7, 0.6, 0.5};
     m.sheenColor = {0.5, 0.4, 0.3};
     m.sheenRoughness = 0.5;
     m.clearcoat = 0.6;
@@ -144,6 +146,8 @@ TEST(GltfReference, TellsApartParametersOffByOnePercent) {
         {"specular", [](Material& x) { x.specular *= 1.01; }},
         {"transmission", [](Material& x) { x.transmission *= 1.01; }},
         {"transmittance", [](Material& x) { x.transmittance *= 1.01; }},
+        {"diffuse transmission", [](Material& x) { x.diffuseTransmission *= 1.01; }},
+        {"diffuse transmission colour", [](Material& x) { x.diffuseTransmissionColor *= 1.01; }},
         {"sheen colour", [](Material& x) { x.sheenColor *= 1.01; }},
         {"sheen roughness", [](Material& x) { x.sheenRoughness *= 1.01; }},
         {"clearcoat", [](Material& x) { x.clearcoat *= 1.01; }},

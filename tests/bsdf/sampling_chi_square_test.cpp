@@ -22,7 +22,7 @@
 //
 // Significance. Each case uses its own fixed seed; the suite should wrongly fail with
 // probability alpha = 1 % if the seeds were drawn afresh: Sidak's alpha_i = 1 - (1 - alpha)^(1/M)
-// over the M independent tests (M = 42 here, alpha_i = 2.4e-4).
+// over the M independent tests (M = 51 here, alpha_i = 2.0e-4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,6 +89,18 @@ std::vector<Case> cases() {
     });
     add("transmission (rough)", [](Material& m) { m.transmission = 0.8; m.roughness = 0.4; m.transmittance = {0.9, 0.7, 0.5}; });
     add("transmission (smooth)", [](Material& m) { m.transmission = 1.0; m.roughness = 0.1; });
+    add("diffuse transmission", [](Material& m) {
+        m.diffuseTransmission = 0.7;
+        m.diffuseTransmissionColor = {0.8, 0.9, 0.3};
+        m.roughness = 0.3;
+    });
+    add("diffuse transmission 1 (sharp specular)", [](Material& m) { m.diffuseTransmission = 1.0; m.roughness = 0.05; });
+    add("diffuse and thin transmission, sheen", [](Material& m) {
+        m.transmission = 0.4;
+        m.diffuseTransmission = 0.5;
+        m.sheenColor = {0.6, 0.6, 0.6};
+        m.sheenRoughness = 0.4;
+    });
     add("everything", [](Material& m) {
         m.metallic = 0.3;
         m.transmission = 0.5;
@@ -270,6 +282,16 @@ TEST(GltfChiSquare, RejectsAWrongSampler) {
     more.transmission = 0.55;
     const GltfBxdf glass(toInputs(truth));
     EXPECT_FALSE(test(*sphericalDomain(), glass, wo, draw(GltfBxdf(toInputs(more)), wo, 12)).passed);
+
+    // And a diffuse transmission that sends 10 % more of the diffuse samples below.
+    Material leaf;
+    leaf.metallic = 0.0;
+    leaf.roughness = 0.5;
+    leaf.diffuseTransmission = 0.5;
+    Material brighter = leaf;
+    brighter.diffuseTransmission = 0.55;
+    const GltfBxdf thin(toInputs(leaf));
+    EXPECT_FALSE(test(*sphericalDomain(), thin, wo, draw(GltfBxdf(toInputs(brighter)), wo, 13)).passed);
 }
 
 }  // namespace
