@@ -151,6 +151,45 @@ TEST(GltfMaterialInputs, IridescenceIsReadWithTheExtensionsDefaults) {
                 HasSubstr("material 'I'.extensions.KHR_materials_iridescence.iridescenceIor: is 0.500000, must be >= 1"));
 }
 
+TEST(GltfMaterialInputs, DiffuseTransmissionIsReadWithTheExtensionsDefaults) {
+    TexturedFile f;
+    const Material m = f.load({{"extensions", {{"KHR_materials_diffuse_transmission",
+                                                {{"diffuseTransmissionFactor", 0.25},
+                                                 {"diffuseTransmissionTexture", {{"index", 0}}},
+                                                 {"diffuseTransmissionColorFactor", {1.0, 0.9, 0.85}},
+                                                 {"diffuseTransmissionColorTexture", {{"index", 0}}}}}}}})
+                           .materials.at(0);
+    EXPECT_FLOAT_EQ(m.diffuseTransmission.factor, 0.25f);
+    expectNear(m.diffuseTransmission.color, {1.0f, 0.9f, 0.85f});
+    EXPECT_EQ(m.diffuseTransmission.texture.image, 0);
+    EXPECT_FALSE(m.diffuseTransmission.texture.srgb);  // the strength in A is linear data
+    EXPECT_EQ(m.diffuseTransmission.colorTexture.image, 0);
+    EXPECT_TRUE(m.diffuseTransmission.colorTexture.srgb);  // the colour is sRGB-encoded
+    const Material d = TexturedFile().load({{"extensions", {{"KHR_materials_diffuse_transmission", json::object()}}}}).materials.at(0);
+    EXPECT_EQ(d.diffuseTransmission.factor, 0.0f);  // the extension's defaults: nothing passes until a factor is given
+    expectNear(d.diffuseTransmission.color, glm::vec3(1.0f));
+    EXPECT_FALSE(d.diffuseTransmission.texture);
+
+    // Bad values name the material, the extension and the key.
+    const auto error = [](json extension) {
+        return TexturedFile().error({{"name", "L"}, {"extensions", {{"KHR_materials_diffuse_transmission", extension}}}});
+    };
+    const std::string at = "material 'L'.extensions.KHR_materials_diffuse_transmission.";
+    EXPECT_THAT(error({{"diffuseTransmissionFactor", 1.5}}), HasSubstr(at + "diffuseTransmissionFactor: is 1.500000, must be in [0"));
+    EXPECT_THAT(error({{"diffuseTransmissionFactor", -0.25}}), HasSubstr(at + "diffuseTransmissionFactor: is -0.250000, must be in [0"));
+    EXPECT_THAT(error({{"diffuseTransmissionFactor", "half"}}), HasSubstr(at + "diffuseTransmissionFactor: must be a finite number"));
+    EXPECT_THAT(error({{"diffuseTransmissionColorFactor", {1.0, 0.5}}}),
+                HasSubstr(at + "diffuseTransmissionColorFactor: must be an array of 3 numbers"));
+    EXPECT_THAT(error({{"diffuseTransmissionColorFactor", {1.0, 1.5, 0.2}}}),
+                HasSubstr(at + "diffuseTransmissionColorFactor: must hold numbers in [0, 1]"));
+    EXPECT_THAT(error({{"diffuseTransmissionColorFactor", {1.0, nullptr, 0.2}}}),
+                HasSubstr(at + "diffuseTransmissionColorFactor: must hold numbers in [0, 1]"));
+    EXPECT_THAT(error({{"diffuseTransmissionTexture", {{"index", 4}}}}),
+                HasSubstr(at + "diffuseTransmissionTexture: texture 4 does not exist"));
+    EXPECT_THAT(error({{"diffuseTransmissionColorTexture", {{"index", -1}}}}),
+                HasSubstr(at + "diffuseTransmissionColorTexture.index: must be an integer >= 0"));
+}
+
 TEST(GltfMaterialInputs, SpecularGlossinessBecomesMetallicRoughnessAsGltfTransformConvertsIt) {
     {
         TexturedFile f;
@@ -284,7 +323,7 @@ TEST(GltfExtensions, UnsupportedOnesAreNamedRequiredOnesRefused) {
     TexturedFile h;
     for (const char* e : {"KHR_texture_transform", "KHR_materials_sheen", "KHR_materials_transmission", "KHR_materials_unlit",
                           "KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness",
-                          "KHR_materials_dispersion", "EXT_mesh_gpu_instancing"})
+                          "KHR_materials_dispersion", "KHR_materials_diffuse_transmission", "EXT_mesh_gpu_instancing"})
         h.b.useExtension(e, true);
     EXPECT_NO_THROW(h.load(json::object()));
 }
