@@ -34,8 +34,8 @@ ExrImage readPart(const std::string& path) {
         return std::invalid_argument(path + ": has no " + what +
                                      ": merge takes the EXR files of woven render (-o FILE.exr)");
     };
-    if (part.sampleCount.empty()) throw missing("sample-count channel N");
-    if (part.sampleSums.empty()) throw missing("sample sums (channels sum.R0-sum.B3)");
+    if (part.sampleCount.empty()) throw missing("sample-count channel samples.N");
+    if (part.sampleSums.empty()) throw missing("exact sample sums (channels exact.radiance0.R-exact.radiance5.B)");
     if (!part.samples) throw missing("sample range (attributes wovenFirstSample, wovenSampleCount)");
     // A count is what the sums are divided by: NaN or a negative one would write NaN or
     // negate the pixel.
@@ -169,6 +169,13 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         }
         for (size_t i = 0; i < sum.sampleCount.size(); ++i) sum.sampleCount[i] += part.sampleCount[i];
         for (size_t i = 0; i < sum.sampleSums.size(); ++i) sum.sampleSums[i] += part.sampleSums[i];
+        if (parts.empty()) sum.passSums.assign(part.passSums.size(), PassSums());
+        else if (part.passSums.size() != sum.passSums.size())
+            throw std::invalid_argument((part.passSums.empty() ? path : inputs.front()) +
+                                        " has no render passes (an older woven wrote it) and " +
+                                        (part.passSums.empty() ? inputs.front() : path) +
+                                        " has: parts of one frame come from one version");
+        for (size_t i = 0; i < sum.passSums.size(); ++i) sum.passSums[i] += part.passSums[i];
         parts.push_back({path, *part.samples, part.frame});
     }
     if (parts.empty())
@@ -184,6 +191,9 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
     for (size_t i = 0; i < sum.sampleCount.size(); ++i)
         for (int c = 0; c < 3; ++c) sum.image.pixels[i][c] = sum.sampleSums[3 * i + size_t(c)].mean(sum.sampleCount[i]);
     if (held.size() == 1) sum.samples = held.front();
+    if (sum.passSums.empty())
+        std::cerr << "warning: " << inputs.front()
+                  << " has no render passes (an older woven wrote it): the merged frame has none\n";
 
     const std::string partial = partialFrameName(out);
     if (!missing.empty()) {

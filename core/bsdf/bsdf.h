@@ -27,6 +27,9 @@ public:
     bool transmits() const {
         return std::visit([](const auto& l) { return l.transmits(); }, lobe_);
     }
+    glm::vec3 albedo() const {
+        return std::visit([](const auto& l) { return l.albedo(); }, lobe_);
+    }
 
 private:
     std::variant<AshikhminShirley, GltfBxdf, FilteredWeaveLobe> lobe_;

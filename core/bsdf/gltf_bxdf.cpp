@@ -175,4 +175,10 @@ std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2&
     return s;
 }
 
+glm::vec3 GltfBxdf::albedo() const {
+    const glm::vec3 below = baseColor_ * glm::mix(glm::vec3(1.0f), transmittance_, transmission_);
+    const glm::vec3 dielectric = f0_ + (1.0f - f0_) * below;
+    return glm::mix(dielectric, baseColor_, metallic_);
+}
+
 }  // namespace woven

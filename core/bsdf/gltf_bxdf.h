@@ -56,6 +56,11 @@ public:
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
+    // The reflectance the albedo render pass shows (integrator.h's FirstHit): the Fresnel mix at
+    // normal incidence of F0 over the base colour (tinted by the thin transmission's
+    // attenuation as far as it transmits) and the metal's base colour; the sheen and the coat
+    // above it are left out.
+    glm::vec3 albedo() const;
     bool transmits() const { return metallic_ < 1.0f && (transmission_ > 0.0f || diffuseTransmits()); }
 
 private:

@@ -38,6 +38,9 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
 
     bool transmits() const { return false; }
+    // The reflectance a denoiser's albedo pass shows (integrator.h's FirstHit): the specular
+    // lobe's at normal incidence (Schlick's F(0) = R_s) over the diffuse colour it leaves.
+    glm::vec3 albedo() const { return rd_ * (1.0f - shape_.rs) + shape_.rs; }
     const LobeShape& shape() const { return shape_; }
     const glm::vec3& rd() const { return rd_; }  // the diffuse reflectance R_d
     float specularProbability() const { return specularProb_; }

@@ -36,6 +36,13 @@ void FilteredWeaveLobe::evalAndPdf(const glm::vec3& wo, const glm::vec3& wi, glm
     if (pdf) *pdf = p;
 }
 
+glm::vec3 FilteredWeaveLobe::albedo() const {
+    glm::vec3 a = (1.0f - farWeight_) * nearLobe_.albedo();
+    if (farWeight_ > 0.0f)
+        for (const FarFieldLobe& l : farField_->lobes()) a += weights_[int(l.color)] * l.weight * lobe(l).albedo();
+    return a;
+}
+
 glm::vec3 FilteredWeaveLobe::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     glm::vec3 fCos;
     evalAndPdf(wo, wi, &fCos, nullptr);

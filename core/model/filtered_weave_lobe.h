@@ -31,6 +31,8 @@ public:
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
     bool transmits() const { return false; }
+    // The mixture's albedo: each lobe's (AshikhminShirley::albedo()) by its weight.
+    glm::vec3 albedo() const;
 
     float farWeight() const { return farWeight_; }
 

@@ -28,6 +28,8 @@ public:
     }
     // Whether light may pass to the other side of the surface (else the lobe only reflects).
     bool transmits() const { return lobe_.transmits(); }
+    // The reflectance the albedo render pass shows (integrator.h's FirstHit).
+    glm::vec3 albedo() const { return lobe_.albedo(); }
     const Frame& frame() const { return frame_; }
     const glm::vec3& shadingNormal() const { return frame_.z; }
     const Lobe& lobe() const { return lobe_; }

@@ -13,6 +13,8 @@ public:
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
     bool transmits() const { return true; }
+    // The thread's colour as its reflection shows it: what the albedo render pass keeps.
+    glm::vec3 albedo() const { return reflection_.albedo(); }
 
     const AshikhminShirley& reflection() const { return reflection_; }
     const YarnTransmission& transmission() const { return transmission_; }

@@ -7,6 +7,7 @@
 // leaves room for 2^35 samples of that size before the integer could overflow.
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace woven {
 
@@ -23,11 +24,20 @@ public:
 
     // The mean of `count` samples rounded to float; 0 when count is 0.
     float mean(float count) const;
+    // The sum itself, rounded to double.
+    double value() const;
 
-    // How a file keeps it: the 128-bit two's complement integer as four 32-bit words, least
-    // significant first.
+    // How files of earlier versions kept it: the 128-bit two's complement integer as four 32-bit
+    // words, least significant first.
     std::array<uint32_t, 4> words() const;
     static ExactSum fromWords(const std::array<uint32_t, 4>& words);
+    // How a frame file keeps it in float channels, which every EXR reader takes: the same
+    // integer as six whole numbers below 2^24, which a float holds exactly, least significant
+    // first (the last holds the top 8 bits). fromFloatWords() gives nothing unless every word
+    // is a whole number in its range.
+    static constexpr int kFloatWords = 6;
+    std::array<float, kFloatWords> floatWords() const;
+    static std::optional<ExactSum> fromFloatWords(const std::array<float, kFloatWords>& words);
 
 private:
     __extension__ typedef __int128 Fixed;  // GCC and Clang, on every 64-bit target

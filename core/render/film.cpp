@@ -17,12 +17,22 @@ std::vector<glm::vec3> PassImage::combined() const {
 }
 
 Film::Film(int width, int height)
-    : width_(width), height_(height), sum_(3 * size_t(width) * height), count_(size_t(width) * height, 0.0f) {}
+    : width_(width), height_(height), sum_(3 * size_t(width) * height), count_(size_t(width) * height, 0.0f),
+      passSums_(size_t(width) * height) {}
 
 void Film::addPass(const PassImage& pass) {
+    const std::vector<glm::vec3> estimate = pass.combined();
     for (size_t i = 0; i < count_.size(); ++i) {
         if (!pass.samples(i)) continue;
-        for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
+        PassSums& p = passSums_[i];
+        const FirstHit& hit = pass.firstHits[i];
+        for (int c = 0; c < 3; ++c) {
+            sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
+            p.albedo[c].add(hit.albedo[c]);
+            p.normal[c].add(hit.normal[c]);
+            p.square[c].add(estimate[i][c] * estimate[i][c]);
+        }
+        p.depth.add(hit.depth);
         count_[i] += 1.0f;
     }
     pass.forEachSplat([&](size_t i, const glm::vec3& L) {
@@ -38,6 +48,7 @@ FilmImage Film::image() const {
     out.radiance.pixels.resize(count_.size());
     out.sampleCount = count_;
     out.sampleSums = sum_;
+    out.passSums = passSums_;
     for (size_t i = 0; i < count_.size(); ++i)
         for (int c = 0; c < 3; ++c) out.radiance.pixels[i][c] = sum_[3 * i + size_t(c)].mean(count_[i]);
     return out;

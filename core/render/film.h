@@ -1,7 +1,8 @@
 #pragma once
 // The film of a final frame: per pixel the sum of its camera samples and of the splats that
-// BDPT's light paths seen by the camera (t = 1) land in, and the count of passes that sampled it
-// (one sample per pixel each; every pass unless sampling is adaptive). The sums are exact
+// BDPT's light paths seen by the camera (t = 1) land in, the count of passes that sampled it
+// (one sample per pixel each; every pass unless sampling is adaptive), and the sums its render
+// passes are means of (render_passes.h: first hits, squares for the variance). The sums are exact
 // (ExactSum), so the image is a pure function of the samples it holds: whatever threads rendered
 // them, in whatever order, and the merge of renders of disjoint sample ranges gives the same
 // image bit for bit.
@@ -10,26 +11,38 @@
 
 #include "frame_io.h"
 #include "integrator.h"
+#include "render_passes.h"
 
 namespace woven {
 
 // Mean radiance and sample count per pixel, and what an EXR keeps so that renders of disjoint
 // sample ranges merge exactly (frame_io.h): the exact sums, the sample range and the frame.
 struct FilmImage {
-    Image radiance;          // linear RGB mean
+    Image radiance;          // linear RGB mean: the noisy beauty
     std::vector<float> sampleCount;  // per pixel
     std::vector<ExactSum> sampleSums{};  // R, G, B per pixel
     SampleRange samples{};
     FrameIdentity frame{};
+    std::vector<PassSums> passSums{};  // per pixel
+    // The denoised beauty, once a denoiser has made it from radiance and passes(); a frame file
+    // then shows it as its beauty and keeps radiance beside it (ExrImage::noisy).
+    std::optional<Image> denoised{};
 
+    RenderPasses passes() const {
+        return meanPasses(radiance.width, radiance.height, sampleCount, sampleSums, passSums);
+    }
     // As a frame file keeps it (writeFrame): everything `woven merge` needs.
-    ExrImage exr() const { return {radiance, sampleCount, sampleSums, samples, frame}; }
+    ExrImage exr() const {
+        if (!denoised) return {radiance, sampleCount, sampleSums, samples, frame, passSums};
+        return {*denoised, sampleCount, sampleSums, samples, frame, passSums, radiance};
+    }
 };
 
 // One pass before it is added: each pixel's estimate, and the splats of each tile in tile order.
 struct PassImage {
     int width = 0, height = 0;
     std::vector<glm::vec3> radiance;           // row-major, one per pixel
+    std::vector<FirstHit> firstHits;           // row-major, one per pixel
     std::vector<std::vector<Splat>> tileSplats;
     // An adaptive pass (adaptive_sampling.h) samples only some pixels: 1 for those (empty: all).
     // BDPT then traces one light subpath per sampled pixel, not per pixel, so each splat is
@@ -66,6 +79,7 @@ private:
     int width_, height_, passes_ = 0;
     std::vector<ExactSum> sum_;  // R, G, B per pixel
     std::vector<float> count_;
+    std::vector<PassSums> passSums_;
 };
 
 template <typename F>

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/half.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -20,10 +21,57 @@ namespace {
     throw ImageError(path + ": " + problem);
 }
 
-// The sum channels' names, in the order ExactSum::words() gives them, R, G, B.
-std::string sumChannelName(int rgb, int word) {
+// Files of earlier versions kept the radiance sums as 32-bit unsigned words, sum.R0-sum.B3 in
+// ExactSum::words()' order; merge still reads them.
+std::string oldSumChannelName(int rgb, int word) {
     return std::string("sum.") + "RGB"[rgb] + std::to_string(word);
 }
+
+// The exact sums a frame file keeps, each as ExactSum::kFloatWords float channels
+// exact.NAMEk.C (k = 0 the least significant word): the radiance and the render passes'.
+struct ExactGroup {
+    const char* name;
+    const char* channels;
+};
+constexpr ExactGroup kExactGroups[] = {
+    {"radiance", "RGB"}, {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"square", "RGB"},
+};
+constexpr int kRadianceGroup = 0;
+
+std::string exactChannelName(const ExactGroup& g, int word, int c) {
+    return std::string("exact.") + g.name + std::to_string(word) + "." + g.channels[c];
+}
+
+// The sum of group g, channel c, at pixel i.
+template <class Frame>
+auto& exactSum(Frame& exr, int g, size_t i, int c) {
+    switch (g) {
+        case 0: return exr.sampleSums[3 * i + size_t(c)];
+        case 1: return exr.passSums[i].albedo[c];
+        case 2: return exr.passSums[i].normal[c];
+        case 3: return exr.passSums[i].depth;
+        default: return exr.passSums[i].square[c];
+    }
+}
+
+// The visible layers of the render passes, as compositors name them.
+struct PassLayer {
+    const char* name;
+    const char* channels;
+};
+constexpr PassLayer kPassLayers[] = {{"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"variance", "RGB"}};
+
+float passValue(const RenderPasses& p, int layer, size_t i, int c) {
+    switch (layer) {
+        case 0: return p.albedo.pixels[i][c];
+        case 1: return p.normal.pixels[i][c];
+        case 2: return p.depth[i];
+        default: return p.variance.pixels[i][c];
+    }
+}
+
+const char* const kCountChannel = "samples.N";
+const char* const kOldCountChannel = "N";  // files of earlier versions
 
 const char* const kFirstSampleAttribute = "wovenFirstSample";
 const char* const kSampleCountAttribute = "wovenSampleCount";
@@ -104,7 +152,8 @@ ExrImage readExr(const std::string& path) {
     OpenedImage opened = openImage(bytes.data(), bytes.size(), path);
     if (opened.format != ImageFormat::Exr) fail(path, "not an OpenEXR file");
     const OIIO::ImageSpec& spec = opened.spec();
-    // Every channel in its own type: the sums are 32-bit unsigned words, which floats would round.
+    // Every channel in its own type: older files' sums are 32-bit unsigned words, which floats
+    // would round.
     std::vector<unsigned char> raw(spec.image_bytes(true));
     if (!opened.input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, raw.data()))
         fail(path, "cannot decode the OpenEXR image: " + oiioError(opened.input.get()));
@@ -122,39 +171,95 @@ ExrImage readExr(const std::string& path) {
         OIIO::convert_type(spec.channelformat(c), p, OIIO::TypeFloat, &v, 1);
         return v;
     };
-    int r = find("R"), g = find("G"), b = find("B");
-    if (r < 0 || g < 0 || b < 0) r = g = b = find("Y");
-    if (r < 0) fail(path, "no R, G, B (or Y) channels");
-    ExrImage result;
-    Image& image = result.image;
-    image.width = spec.width;
-    image.height = spec.height;
     const size_t count = size_t(spec.width) * size_t(spec.height);
-    image.pixels.resize(count);
-    for (size_t i = 0; i < count; ++i) image.pixels[i] = {asFloat(r, i), asFloat(g, i), asFloat(b, i)};
-    if (const int n = find("N"); n >= 0) {
+    // An RGB layer ("" for the beauty), or none when the file lacks any of its channels.
+    const auto readRgb = [&](const std::string& prefix, Image* image) {
+        const int r = find(prefix + "R"), g = find(prefix + "G"), b = find(prefix + "B");
+        if (r < 0 || g < 0 || b < 0) return false;
+        image->width = spec.width;
+        image->height = spec.height;
+        image->pixels.resize(count);
+        for (size_t i = 0; i < count; ++i) image->pixels[i] = {asFloat(r, i), asFloat(g, i), asFloat(b, i)};
+        return true;
+    };
+    ExrImage result;
+    if (!readRgb("", &result.image)) {
+        const int y = find("Y");
+        if (y < 0) fail(path, "no R, G, B (or Y) channels");
+        result.image.width = spec.width;
+        result.image.height = spec.height;
+        result.image.pixels.resize(count);
+        for (size_t i = 0; i < count; ++i) result.image.pixels[i] = glm::vec3(asFloat(y, i));
+    }
+    if (Image noisy; readRgb("noisy.", &noisy)) result.noisy = std::move(noisy);
+    int n = find(kCountChannel);
+    if (n < 0) n = find(kOldCountChannel);
+    if (n >= 0) {
         result.sampleCount.resize(count);
         for (size_t i = 0; i < count; ++i) result.sampleCount[i] = asFloat(n, i);
     }
-    int words[3][4], found = 0;
+
+    int oldWords[3][4], oldFound = 0;
     for (int c = 0; c < 3; ++c)
         for (int w = 0; w < 4; ++w) {
-            words[c][w] = find(sumChannelName(c, w));
-            if (words[c][w] >= 0 && spec.channelformat(words[c][w]) != OIIO::TypeDesc::UINT32)
-                fail(path, "the sample-sum channel " + sumChannelName(c, w) + " is not 32-bit unsigned");
-            found += words[c][w] >= 0;
+            oldWords[c][w] = find(oldSumChannelName(c, w));
+            if (oldWords[c][w] >= 0 && spec.channelformat(oldWords[c][w]) != OIIO::TypeDesc::UINT32)
+                fail(path, "the sample-sum channel " + oldSumChannelName(c, w) + " is not 32-bit unsigned");
+            oldFound += oldWords[c][w] >= 0;
         }
-    if (found != 0 && found != 12) fail(path, "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing");
-    if (found == 12) {
+    if (oldFound != 0 && oldFound != 12) fail(path, "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing");
+    if (oldFound == 12) {
         result.sampleSums.resize(3 * count);
         for (size_t i = 0; i < count; ++i)
             for (int c = 0; c < 3; ++c) {
                 std::array<uint32_t, 4> w{};
                 for (int k = 0; k < 4; ++k)
-                    std::memcpy(&w[size_t(k)], &raw[i * pixelBytes + offset[size_t(words[c][k])]], 4);
+                    std::memcpy(&w[size_t(k)], &raw[i * pixelBytes + offset[size_t(oldWords[c][k])]], 4);
                 result.sampleSums[3 * i + size_t(c)] = ExactSum::fromWords(w);
             }
     }
+
+    // The exact sums: each group all there or not at all; the passes' only with the radiance's.
+    std::vector<int> words[std::size(kExactGroups)];
+    int groupsFound = 0;
+    for (size_t g = 0; g < std::size(kExactGroups); ++g) {
+        const ExactGroup& group = kExactGroups[g];
+        const int channels = int(std::strlen(group.channels));
+        for (int w = 0; w < ExactSum::kFloatWords; ++w)
+            for (int c = 0; c < channels; ++c) words[g].push_back(find(exactChannelName(group, w, c)));
+        const size_t found = size_t(std::count_if(words[g].begin(), words[g].end(), [](int c) { return c >= 0; }));
+        if (found != 0 && found != words[g].size())
+            fail(path, std::string("some of the exact-sum channels exact.") + group.name + "0." + group.channels[0] + "-exact." +
+                           group.name + std::to_string(ExactSum::kFloatWords - 1) + "." + group.channels[channels - 1] +
+                           " are missing");
+        if (found != 0) ++groupsFound;
+    }
+    const bool exactRadiance = !words[kRadianceGroup].empty() && words[kRadianceGroup].front() >= 0;
+    if (exactRadiance && oldFound != 0) fail(path, "has both the exact sums exact.radiance* and the older sum.R0-sum.B3");
+    if (groupsFound != 0 && groupsFound != 1 && groupsFound != int(std::size(kExactGroups)))
+        fail(path, "has the exact sums of some render passes but not of all (exact.albedo*, exact.normal*, exact.depth*, "
+                   "exact.square*)");
+    if (groupsFound != 0 && !exactRadiance) fail(path, "has the render passes' exact sums without the radiance's (exact.radiance*)");
+    if (groupsFound != 0) {
+        result.sampleSums.resize(3 * count);
+        if (groupsFound > 1) result.passSums.resize(count);
+        for (int g = 0; g < groupsFound; ++g) {
+            const ExactGroup& group = kExactGroups[g];
+            const int channels = int(std::strlen(group.channels));
+            for (size_t i = 0; i < count; ++i)
+                for (int c = 0; c < channels; ++c) {
+                    std::array<float, ExactSum::kFloatWords> w{};
+                    for (int k = 0; k < ExactSum::kFloatWords; ++k) w[size_t(k)] = asFloat(words[g][size_t(k * channels + c)], i);
+                    const std::optional<ExactSum> sum = ExactSum::fromFloatWords(w);
+                    if (!sum)
+                        fail(path, "pixel (" + std::to_string(i % size_t(spec.width)) + ", " + std::to_string(i / size_t(spec.width)) +
+                                       ") of the exact-sum channels exact." + group.name + "0-5." + group.channels[c] +
+                                       " holds a word that is not a whole number below 2^24 (the top word below 2^8)");
+                    exactSum(result, g, i, c) = *sum;
+                }
+        }
+    }
+    if (!result.sampleSums.empty() && result.sampleCount.empty()) fail(path, "has exact sums but no sample-count channel samples.N");
     if (const std::string problem = readSampleRange(spec, &result.samples); !problem.empty()) fail(path, problem);
     if (const std::string problem = readFrameIdentity(spec, &result.frame); !problem.empty()) fail(path, problem);
     return result;
@@ -169,23 +274,36 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         fail(path, "the sample-count channel does not match the image size");
     if (!exr.sampleSums.empty() && exr.sampleSums.size() != 3 * count)
         fail(path, "the sample sums do not match the image size");
+    if (!exr.passSums.empty() && (exr.passSums.size() != count || exr.sampleSums.empty() || exr.sampleCount.empty()))
+        fail(path, "the render passes' sums do not match the image size, or come without sample counts and sums");
+    if (exr.noisy && (exr.noisy->width != image.width || exr.noisy->height != image.height || exr.noisy->pixels.size() != count))
+        fail(path, "the noisy beauty does not match the image size");
+    const std::optional<RenderPasses> passes =
+        exr.passSums.empty() ? std::nullopt : std::optional<RenderPasses>(exr.passes());
 
-    // R, G, B (half or float), N (float), then the sums' words (32-bit unsigned), interleaved
-    // per pixel in their own types.
+    // Every channel half or float with a name of layer.pass.channel form (or R, G, B), so that
+    // compositors (Blender, Nuke) read the file as a multi-layer image: the beauty and the passes
+    // in `precision`, the count and the exact sums' words in float. Interleaved per pixel.
     const OIIO::TypeDesc colour = precision == ExrPrecision::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(image.width, image.height, 3, colour);
-    spec.channelnames = {"R", "G", "B"};
-    spec.channelformats = {colour, colour, colour};
-    if (!exr.sampleCount.empty()) {
-        spec.channelnames.push_back("N");
-        spec.channelformats.push_back(OIIO::TypeDesc::FLOAT);
-    }
-    if (!exr.sampleSums.empty())
-        for (int c = 0; c < 3; ++c)
-            for (int w = 0; w < 4; ++w) {
-                spec.channelnames.push_back(sumChannelName(c, w));
-                spec.channelformats.push_back(OIIO::TypeDesc::UINT32);
-            }
+    OIIO::ImageSpec spec(image.width, image.height, 0, colour);
+    spec.channelnames.clear();
+    spec.channelformats.clear();
+    const auto channel = [&](const std::string& name, OIIO::TypeDesc type) {
+        spec.channelnames.push_back(name);
+        spec.channelformats.push_back(type);
+    };
+    for (const char* c : {"R", "G", "B"}) channel(c, colour);
+    if (exr.noisy)
+        for (const char* c : {"R", "G", "B"}) channel(std::string("noisy.") + c, colour);
+    if (passes)
+        for (const PassLayer& layer : kPassLayers)
+            for (const char* c = layer.channels; *c; ++c) channel(std::string(layer.name) + "." + *c, colour);
+    if (!exr.sampleCount.empty()) channel(kCountChannel, OIIO::TypeDesc::FLOAT);
+    const int exactGroups = passes ? int(std::size(kExactGroups)) : exr.sampleSums.empty() ? 0 : 1;
+    for (int g = 0; g < exactGroups; ++g)
+        for (int w = 0; w < ExactSum::kFloatWords; ++w)
+            for (int c = 0; c < int(std::strlen(kExactGroups[g].channels)); ++c)
+                channel(exactChannelName(kExactGroups[g], w, c), OIIO::TypeDesc::FLOAT);
     spec.nchannels = int(spec.channelnames.size());
     spec.attribute("compression", "zip");
     if (exr.samples) {
@@ -203,25 +321,30 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     std::vector<unsigned char> data(count * pixelBytes);
     for (size_t i = 0; i < count; ++i) {
         unsigned char* p = &data[i * pixelBytes];
-        const auto put = [&](const void* value, size_t bytes) {
-            std::memcpy(p, value, bytes);
-            p += bytes;
-        };
-        for (int c = 0; c < 3; ++c) {
-            const float v = image.pixels[i][c];
-            if (precision == ExrPrecision::Half) {
+        const auto put = [&](float v, OIIO::TypeDesc type) {
+            if (type == OIIO::TypeDesc::HALF) {
                 const half h(v);  // Imath's, through OpenImageIO
-                put(&h, sizeof h);
+                std::memcpy(p, &h, sizeof h);
+                p += sizeof h;
             } else {
-                put(&v, sizeof v);
+                std::memcpy(p, &v, sizeof v);
+                p += sizeof v;
             }
+        };
+        for (int c = 0; c < 3; ++c) put(image.pixels[i][c], colour);
+        if (exr.noisy)
+            for (int c = 0; c < 3; ++c) put(exr.noisy->pixels[i][c], colour);
+        if (passes)
+            for (int l = 0; l < int(std::size(kPassLayers)); ++l)
+                for (int c = 0; c < int(std::strlen(kPassLayers[l].channels)); ++c) put(passValue(*passes, l, i, c), colour);
+        if (!exr.sampleCount.empty()) put(exr.sampleCount[i], OIIO::TypeDesc::FLOAT);
+        for (int g = 0; g < exactGroups; ++g) {
+            const int channels = int(std::strlen(kExactGroups[g].channels));
+            std::array<float, ExactSum::kFloatWords> w[3];
+            for (int c = 0; c < channels; ++c) w[c] = exactSum(exr, g, i, c).floatWords();
+            for (int k = 0; k < ExactSum::kFloatWords; ++k)
+                for (int c = 0; c < channels; ++c) put(w[c][size_t(k)], OIIO::TypeDesc::FLOAT);
         }
-        if (!exr.sampleCount.empty()) put(&exr.sampleCount[i], sizeof(float));
-        if (!exr.sampleSums.empty())
-            for (int c = 0; c < 3; ++c) {
-                const std::array<uint32_t, 4> w = exr.sampleSums[3 * i + size_t(c)].words();
-                put(w.data(), sizeof w);
-            }
     }
     writeFileAtomically(path, [&](const std::string& tmp) {
         // The temporary name has no .exr ending: name the plugin.

@@ -11,6 +11,7 @@
 #include "exact_sum.h"
 #include "frame_identity.h"
 #include "image_io.h"
+#include "render_passes.h"
 #include "sample_range.h"
 
 namespace woven {
@@ -24,6 +25,10 @@ struct ExrImage {
     std::vector<ExactSum> sampleSums{};    // empty, or three per pixel: R, G, B
     std::optional<SampleRange> samples{};  // the same for every pixel
     std::optional<FrameIdentity> frame{};  // none in files of other tools and of woven before it
+    std::vector<PassSums> passSums{};      // empty, or one per pixel: the render passes' exact sums
+    std::optional<Image> noisy{};          // where `image` is denoised, the noisy beauty it was made from
+
+    RenderPasses passes() const { return meanPasses(image.width, image.height, sampleCount, sampleSums, passSums); }
 };
 enum class ExrPrecision { Half, Float };
 

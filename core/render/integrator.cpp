@@ -10,4 +10,12 @@ void addFootprint(SurfaceHit& hit, const RenderScene& scene, const CameraModel& 
     setUvFootprint(hit, f.dpdx, f.dpdy);
 }
 
+FirstHit firstHitOf(const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye) {
+    FirstHit f;
+    f.depth = glm::length(hit.p - eye);
+    f.normal = bsdf ? bsdf->shadingNormal() : hit.ns;
+    if (bsdf) f.albedo = bsdf->albedo();
+    return f;
+}
+
 }  // namespace woven

@@ -2,6 +2,7 @@
 // What both integrators share: one camera sample in, a radiance estimate for its pixel out, plus
 // contributions that land on other pixels (BDPT's t = 1 strategies) and a count of rays traced.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "render_scene.h"
@@ -16,10 +17,20 @@ struct Splat {
     glm::vec3 L;
 };
 
+// What the camera ray of a sample first hit, for the render passes (render_passes.h) that guide
+// a denoiser: the BSDF's albedo() (the weave's thread colours included), its shading normal (the
+// yarn bump included) and the distance from the camera. Woven's lobes have no delta (specular)
+// lobes, so the first hit is the first non-specular one. All zero where the ray hits nothing.
+struct FirstHit {
+    glm::vec3 albedo{0.0f}, normal{0.0f};
+    float depth = 0.0f;
+};
+
 // Per-sample output besides the returned radiance. Owned by one tile, so no locking.
 struct SampleSink {
     std::vector<Splat> splats;
     uint64_t rays = 0;  // intersection and shadow rays traced
+    FirstHit firstHit;  // of the latest sample: set by Li(), reset by its caller before each
 };
 
 class Integrator {
@@ -33,6 +44,10 @@ public:
 // Gives a hit its pixel footprint (CameraModel::footprint() through setUvFootprint()) where its
 // material filters by one; other hits cost nothing more.
 void addFootprint(SurfaceHit& hit, const RenderScene& scene, const CameraModel& camera);
+
+// The render passes' record of a camera ray from `eye` that first hit `hit`, with its BSDF there
+// (none: an emitter alone, albedo zero).
+FirstHit firstHitOf(const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye);
 
 // Whether the BSDF at a hit may connect wo and wi. A reflecting BSDF only connects directions on
 // the same side of the geometric surface, which keeps shading normals from leaking light (Veach

@@ -39,6 +39,7 @@ bool renderPass(const Integrator& integrator, int width, int height, SamplerKind
     pass->width = width;
     pass->height = height;
     pass->radiance.assign(size_t(width) * height, glm::vec3(0.0f));
+    pass->firstHits.assign(size_t(width) * height, FirstHit{});
     pass->tileSplats.assign(size_t(tilesX) * tilesY, {});
     pass->sampled = sampled;
     const size_t pixels = size_t(width) * height;
@@ -56,9 +57,11 @@ bool renderPass(const Integrator& integrator, int width, int height, SamplerKind
                         if (!pass->samples(pixel)) continue;
                         Sampler sampler(samplerKind, seed, pixel, sampleIndex);
                         const glm::vec2 pRaster = glm::vec2(float(x), float(y)) + sampler.get2D(kPixelDimension);
+                        sink.firstHit = FirstHit{};
                         const glm::vec3 L = integrator.Li(pRaster, sampler, sink);
                         // A rare non-finite sample would poison the pixel for good: drop it.
                         pass->radiance[pixel] = std::isfinite(L.x + L.y + L.z) ? L : glm::vec3(0.0f);
+                        pass->firstHits[pixel] = sink.firstHit;
                     }
                 pass->tileSplats[size_t(tile)] = std::move(sink.splats);
                 rayCount.fetch_add(sink.rays, std::memory_order_relaxed);

@@ -23,9 +23,11 @@ struct ImageError : std::runtime_error {
 // of 16k on a side with 128 Mpixels and 1 GiB of file cover every real asset.
 constexpr int kMaxImageSide = 32768;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
-constexpr int kMaxImageChannels = 64;
-// All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or an 8k x 8k EXR part
-// with its 16 channels of colour, count and sums (4 GiB).
+// A frame file of woven's has 95 channels (frame_io.h): beauty, noisy beauty, passes, count and
+// the exact sums' words.
+constexpr int kMaxImageChannels = 128;
+// All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or a 3840 x 2160
+// frame file with its 95 channels (3 GiB).
 constexpr int64_t kMaxImageDecodedBytes = int64_t(4) << 30;
 constexpr size_t kMaxImageFileBytes = size_t(1) << 30;
 

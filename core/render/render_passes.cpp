@@ -1,0 +1,58 @@
+#include "render_passes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace woven {
+
+PassSums& PassSums::operator+=(const PassSums& other) {
+    for (int c = 0; c < 3; ++c) {
+        albedo[c] += other.albedo[c];
+        normal[c] += other.normal[c];
+        square[c] += other.square[c];
+    }
+    depth += other.depth;
+    return *this;
+}
+
+bool PassSums::operator==(const PassSums& other) const {
+    for (int c = 0; c < 3; ++c)
+        if (albedo[c] != other.albedo[c] || normal[c] != other.normal[c] || square[c] != other.square[c]) return false;
+    return depth == other.depth;
+}
+
+RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
+                        const std::vector<ExactSum>& radianceSums, const std::vector<PassSums>& sums) {
+    const size_t pixels = size_t(width) * size_t(height);
+    if (count.size() != pixels || radianceSums.size() != 3 * pixels || sums.size() != pixels)
+        throw std::invalid_argument("render passes: the sample counts, radiance sums and pass sums do not match the frame");
+    RenderPasses p;
+    for (Image* image : {&p.albedo, &p.normal, &p.variance}) {
+        image->width = width;
+        image->height = height;
+        image->pixels.resize(pixels);
+    }
+    p.depth.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+        const PassSums& s = sums[i];
+        const float n = count[i];
+        glm::vec3 normal(0.0f);
+        for (int c = 0; c < 3; ++c) {
+            p.albedo.pixels[i][c] = s.albedo[c].mean(n);
+            normal[c] = s.normal[c].mean(n);
+            if (n >= 2.0f) {
+                // (sum x^2 - (sum x)^2 / n) / (n - 1) is one sample's variance; the mean's is 1/n of it.
+                const double sum = radianceSums[3 * i + size_t(c)].value();
+                const double spread = std::max(0.0, s.square[c].value() - sum * sum / double(n));
+                p.variance.pixels[i][c] = float(spread / (double(n) - 1.0) / double(n));
+            }
+        }
+        const float length = glm::length(normal);
+        p.normal.pixels[i] = length > 0.0f ? normal / length : normal;
+        p.depth[i] = s.depth.mean(n);
+    }
+    return p;
+}
+
+}  // namespace woven
