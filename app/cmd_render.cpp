@@ -1,7 +1,6 @@
 // `woven render SCENE`: a final frame of a scene file with either integrator, to EXR or PNG.
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -12,9 +11,11 @@
 #include "commands.h"
 #include "number_checks.h"
 #include "frame_limits.h"
+#include "frame_denoise.h"
 #include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
+#include "interrupt_guard.h"
 #include "output_path.h"
 #include "progress_bar.h"
 #include "render_options.h"
@@ -32,28 +33,6 @@ struct RenderCommand {
     double time = 0.0;
     int64_t firstSample = 0;
     bool list = false;
-};
-
-// Set by SIGINT; the render stops after its current pass. The handler resets itself, so a second
-// Ctrl-C ends the process at once.
-std::atomic<bool> interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
-extern "C" void onInterrupt(int) { interrupted.store(true); }
-
-class InterruptGuard {
-public:
-    InterruptGuard() {
-        interrupted.store(false);
-        struct sigaction action {};
-        action.sa_handler = onInterrupt;
-        action.sa_flags = SA_RESETHAND;
-        sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &previous_);
-    }
-    ~InterruptGuard() { sigaction(SIGINT, &previous_, nullptr); }
-
-private:
-    struct sigaction previous_ {};
 };
 
 std::string formatSeconds(double seconds) {
@@ -97,7 +76,8 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
     out << "meshes:" << (scene.meshes.empty() ? " none" : "") << "\n";
     for (const Mesh& m : scene.meshes) {
         const bool hasMaterial = m.material >= 0 && m.material < int(scene.materials.size());
-        out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles  material "
+        out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles"
+            << (m.instances ? " x " + std::to_string(m.instances->size()) + " instances" : "") << "  material "
             << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default") << "\n";
     }
     out << "lights:" << (scene.lights.empty() ? " none" : "") << "\n";
@@ -120,6 +100,9 @@ int runRender(RenderCommand o) {
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
     refuseOverwritingInputs(o.out, scene->inputFiles);
+    if (scene->photo)
+        std::cerr << "render: " << o.scene << " is a shot: its photo " << scene->photo->image
+                  << " is for woven fit; the render does not use it\n";
     applySceneOptions(*scene, o.options.frame);
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);
@@ -144,7 +127,7 @@ int runRender(RenderCommand o) {
         InterruptGuard guard;
         ProgressBar bar("render");
         if (settings.integrator == autoIntegrator().name) std::cerr << "render: choosing the integrator (a short pilot of each)\n";
-        job.run(interrupted, [&](const RenderProgress& p) {
+        job.run(interrupted(), [&](const RenderProgress& p) {
             last = p;
             const double fraction = p.activeFraction == 0.0           ? 1.0  // every pixel below the noise threshold
                                     : timeLimited && !sppGiven ? p.elapsed / o.time
@@ -153,13 +136,15 @@ int runRender(RenderCommand o) {
         });
         bar.finish();
     }
-    const bool wasInterrupted = interrupted.load();
+    const bool wasInterrupted = interrupted().load();
     if (last.samplesDone == 0) {
         std::cerr << "woven render: interrupted before the first pass finished; nothing written\n";
         return wasInterrupted ? 130 : 1;
     }
     const std::string path = wasInterrupted ? partialFrameName(o.out) : o.out;
-    const FilmImage film = job.snapshot();
+    FilmImage film = job.snapshot();
+    // An interrupted frame is written at once, as rendered: it is for looking at or merging.
+    if (o.options.frame.denoise && !wasInterrupted) denoiseFilm(film);
     writeFrame(path, film.exr(), o.options.frame.display);
     std::cerr << (wasInterrupted ? "interrupted: wrote " : "wrote ") << path << "\n";
     std::cout << "integrator " << job.integratorName() << ", " << last.samplesDone << " spp";

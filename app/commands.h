@@ -13,5 +13,6 @@ void addConvergeCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
 void addSubmitCommand(CLI::App& app);  // docs/CLUSTER.md
 void addExportCommands(CLI::App& app);  // export, bake (docs/EXPORT.md)
+void addFitCommand(CLI::App& app);  // docs/FIT.md
 
 }  // namespace woven

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     woven::addMergeCommand(app);
     woven::addSubmitCommand(app);
     woven::addExportCommands(app);
+    woven::addFitCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -171,6 +171,11 @@ struct Mesh {
     std::vector<glm::vec4> tangents;
     std::vector<glm::uvec3> triangles;
     int material = -1;  // index into SceneDescription::materials; -1 = default material
+    // EXT_mesh_gpu_instancing (mesh_instances.h). Null: the arrays above are in world space.
+    // Otherwise they are in the mesh's own space and each matrix places one copy of it in the
+    // world, drawn as an Embree instance and by one instanced draw, so that a million copies cost
+    // what one mesh does. The primitives of one instanced node share the list.
+    std::shared_ptr<const std::vector<glm::mat4>> instances;
 };
 
 struct PunctualLight {
@@ -206,6 +211,16 @@ struct RenderHints {
     int width = 0, height = 0;
     int spp = 0;
     std::string integrator;  // a name in integrators.h's table, checked where a render takes it
+    std::string sampler;     // a name in sampler.h's kSamplerNames, checked where a render takes it
+};
+
+// A shot's photograph (docs/FIT.md): the scene file's "photo" key, which `woven fit` compares
+// the scene's render with. Nothing else uses it; it changes no pixel of a render.
+struct ShotPhoto {
+    std::string image;  // as resolved against the scene file's folder; not opened by the loader
+    enum class Encoding { Srgb, Gamma22, Linear } encoding = Encoding::Srgb;
+    float vignetteSigmaPx = 0.0f;  // 0: no vignette
+    std::optional<float> exposure = 1.0f;  // nullopt: "free", fitted
 };
 
 struct SceneDescription {
@@ -231,6 +246,7 @@ struct SceneDescription {
     // from the scene's roots; `camera` is the first unless a scene file sets its own), for
     // --camera to choose from (scene_camera.h).
     std::vector<NamedCamera> cameras;
+    std::optional<ShotPhoto> photo;  // a shot's photograph (woven fit only)
 };
 
 }  // namespace woven

@@ -32,7 +32,7 @@ public:
 
     SceneDescription read() {
         const json root = parse();
-        requireKeys(root, "", {"gltf", "materials", "environment", "lights", "camera", "render"});
+        requireKeys(root, "", {"gltf", "materials", "environment", "lights", "camera", "render", "photo"});
         if (!root.contains("gltf")) fail("gltf", "is missing (the glTF file to load)");
         SceneDescription scene;
         try {
@@ -50,6 +50,7 @@ public:
         if (root.contains("lights")) readLights(root["lights"], scene.lights);
         if (root.contains("camera")) readCamera(root["camera"], scene);
         if (root.contains("render")) readRender(root["render"], scene.render);
+        if (root.contains("photo")) scene.photo = readPhoto(root["photo"]);
         return scene;
     }
 
@@ -226,13 +227,52 @@ private:
     }
 
     void readRender(const json& render, RenderHints& hints) const {
-        requireKeys(render, "render", {"width", "height", "spp", "integrator"});
+        requireKeys(render, "render", {"width", "height", "spp", "integrator", "sampler"});
         if (render.contains("width")) hints.width = positiveInt(render["width"], "render.width", 16384);
         if (render.contains("height")) hints.height = positiveInt(render["height"], "render.height", 16384);
         if (render.contains("spp")) hints.spp = positiveInt(render["spp"], "render.spp", 1 << 20);
         // Its name is checked against the integrators' table where a render takes it
         // (defaultRenderSettings()), in the render layer above this one.
         if (render.contains("integrator")) hints.integrator = string(render["integrator"], "render.integrator");
+        // "sobol" (the default) or "independent", as --sampler; checked as the integrator is.
+        if (render.contains("sampler")) hints.sampler = string(render["sampler"], "render.sampler");
+    }
+
+    // A shot's photograph, for `woven fit` (docs/FIT.md):
+    //   image               the photo's file (PNG, JPEG, EXR, HDR), relative to the scene file; the
+    //                       frame at the render's size, opened by the fit only
+    //   encoding            "srgb" (default), "gamma2.2" or "linear": how its 8- or 16-bit values
+    //                       are linear light (EXR and HDR are linear whatever it says)
+    //   vignette_sigma_px   the lens's fall-off toward the corners, a Gaussian of that many pixels
+    //                       about the centre, applied to the render before comparing (absent: none)
+    //   exposure            a positive number the render is multiplied by (default 1), or "free":
+    //                       one exposure, shared by all the fit's free shots, is fitted
+    ShotPhoto readPhoto(const json& photo) const {
+        requireKeys(photo, "photo", {"image", "encoding", "vignette_sigma_px", "exposure"});
+        if (!photo.contains("image")) fail("photo", "needs \"image\": the photograph's file");
+        ShotPhoto shot;
+        shot.image = resolve(string(photo["image"], "photo.image"));
+        if (photo.contains("encoding")) {
+            const std::string e = string(photo["encoding"], "photo.encoding");
+            if (e == "srgb") shot.encoding = ShotPhoto::Encoding::Srgb;
+            else if (e == "gamma2.2") shot.encoding = ShotPhoto::Encoding::Gamma22;
+            else if (e == "linear") shot.encoding = ShotPhoto::Encoding::Linear;
+            else fail("photo.encoding", "must be \"srgb\", \"gamma2.2\" or \"linear\", not \"" + e + "\"");
+        }
+        if (photo.contains("vignette_sigma_px")) {
+            shot.vignetteSigmaPx = number(photo["vignette_sigma_px"], "photo.vignette_sigma_px");
+            if (!(shot.vignetteSigmaPx > 0.0f)) fail("photo.vignette_sigma_px", "must be positive");
+        }
+        if (photo.contains("exposure")) {
+            const json& e = photo["exposure"];
+            if (e.is_string() && e.get<std::string>() == "free") shot.exposure.reset();
+            else if (!e.is_number()) fail("photo.exposure", "must be a positive number or \"free\"");
+            else {
+                shot.exposure = number(e, "photo.exposure");
+                if (!(*shot.exposure > 0.0f)) fail("photo.exposure", "must be positive");
+            }
+        }
+        return shot;
     }
 
     std::string path_;

@@ -1,0 +1,386 @@
+#include "fabric_fit.h"
+
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+#include "image_stats.h"
+#include "photo_model.h"
+#include "power_spectrum.h"
+#include "weave_candidates.h"
+
+namespace woven {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// How far from a thread direction the photo's peak may lie: a swatch laid a few degrees off the
+// camera's axes still finds its threads, while a twill's or satin's off-axis peaks (14 degrees
+// and more from the axes at the thread counts of real cloth) are left alone.
+constexpr double kPeakHalfAngle = 4.0 * M_PI / 180.0;
+// Colour renders per weave candidate (stage 2): BOBYQA needs 2n + 1 = 13 to set up its model of
+// six colours; this leaves it as many again to converge on renders that cost no rendering.
+constexpr int kColourEvaluations = 60;
+
+struct ThreadPeaks {
+    std::optional<SpectralPeak> ends, picks;  // across u (warp ends) and across v (weft picks)
+};
+
+ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel) {
+    std::vector<float> lum(image.pixels.size());
+    for (size_t i = 0; i < lum.size(); ++i) lum[i] = luminance(image.pixels[i]);
+    const PowerSpectrum s = powerSpectrum(lum, image.width, image.height);
+    const double fMin = 3.0 / std::min(image.width, image.height);
+    const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+    return {fundamentalPeak(s, gradU, kPeakHalfAngle, fMin, 0.5), fundamentalPeak(s, gradV, kPeakHalfAngle, fMin, 0.5)};
+}
+
+double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
+    // Peaks are defined up to sign (the spectrum of a real image is symmetric).
+    const double c = std::abs(glm::dot(a, b)) / (glm::length(a) * glm::length(b));
+    return std::acos(std::min(1.0, c)) * 180.0 / M_PI;
+}
+
+// A fit parameter as NLopt sees it: x in [0, 1], mapped linearly or in log10 onto [lo, hi].
+struct Axis {
+    double lo, hi;
+    bool log;
+    double value(double x) const { return log ? std::pow(10.0, lo + x * (hi - lo)) : lo + x * (hi - lo); }
+    double unit(double v) const {
+        const double u = log ? (std::log10(std::max(v, 1e-30)) - lo) / (hi - lo) : (v - lo) / (hi - lo);
+        return std::clamp(u, 0.0, 1.0);
+    }
+};
+
+// Stage 4's parameters: weft and warp colour, rs, ex and ey (the warp's following the weft's:
+// one photo under one light cannot tell them apart), both widths and cy.
+constexpr int kColourAxes = 6;
+const std::vector<Axis>& fullAxes() {
+    static const std::vector<Axis> axes{
+        {0.002, 1.0, false}, {0.002, 1.0, false}, {0.002, 1.0, false},  // weft_color
+        {0.002, 1.0, false}, {0.002, 1.0, false}, {0.002, 1.0, false},  // warp_color
+        {-3.0, -0.3, true},                                             // rs: 0.001 to 0.5
+        {0.0, 3.5, true},                                               // ex: 1 to 3000
+        {-1.0, 2.0, true},                                              // ey: 0.1 to 100
+        {0.3, 1.0, false}, {0.3, 1.0, false},                           // yarn_width, warp_width
+        {0.0, 1.0, false},                                              // cy
+    };
+    return axes;
+}
+
+std::vector<double> encode(const WovenParams& p) {
+    const std::vector<double> v{p.weft_color.r, p.weft_color.g, p.weft_color.b, p.warp_color.r, p.warp_color.g,
+                                p.warp_color.b, p.rs,           p.ex,           p.ey,           p.yarn_width,
+                                p.warp_width,   p.cy};
+    std::vector<double> x(v.size());
+    for (size_t i = 0; i < v.size(); ++i) x[i] = fullAxes()[i].unit(v[i]);
+    return x;
+}
+
+WovenParams decode(const std::vector<double>& x, WovenParams p) {
+    std::vector<double> v(x.size());
+    for (size_t i = 0; i < x.size(); ++i) v[i] = fullAxes()[i].value(std::clamp(x[i], 0.0, 1.0));
+    p.weft_color = glm::vec3(float(v[0]), float(v[1]), float(v[2]));
+    p.warp_color = glm::vec3(float(v[3]), float(v[4]), float(v[5]));
+    if (x.size() > kColourAxes) {
+        p.rs = float(v[6]);
+        p.ex = p.warp_ex = float(v[7]);
+        p.ey = p.warp_ey = float(v[8]);
+        p.yarn_width = float(v[9]);
+        p.warp_width = float(v[10]);
+        p.cy = float(v[11]);
+    }
+    return p;
+}
+
+using Objective = std::function<double(const std::vector<double>&)>;
+
+double trampoline(const std::vector<double>& x, std::vector<double>&, void* data) {
+    return (*static_cast<const Objective*>(data))(x);
+}
+
+class Fitter {
+public:
+    Fitter(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
+           const std::function<void(const FitProgress&)>& onProgress)
+        : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()) {
+        for (const Shot& s : shots_) photoStats_.push_back(imageStats(s.image));
+        result_.shots.resize(shots_.size());
+        result_.loss = INFINITY;
+    }
+
+    FitResult run() {
+        WovenParams p = shots_[0].scene->materials[size_t(shots_[0].materials.at(0))].woven.value_or(WovenParams{});
+        p.tile.clear();  // the fit tries (i, j, k) weaves
+        p.warp_colors.clear();
+        p.weft_colors.clear();
+        p.warp_ex = p.ex;
+        p.warp_ey = p.ey;
+
+        stage_ = "thread counts";
+        p.repeat = threadCountsFromPhotos(p.repeat);
+        p = initialColours(p);
+        const bool weaveDone = chooseWeave(p);
+        bool calibrated = false;
+        if (weaveDone && !stop()) {
+            stage_ = "thread counts";
+            p = result_.params;
+            calibrated = calibrateThreadCounts(p);
+        }
+        int refined = 0;
+        if (calibrated && !stop()) refined = refine();
+        measureThreads();
+        result_.complete = weaveDone && calibrated && refined >= 2 * int(fullAxes().size()) + 1 && !cancel_;
+        return std::move(result_);
+    }
+
+private:
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    bool stop() const { return cancel_.load() || elapsed() >= options_.seconds; }
+
+    void progress() {
+        if (!onProgress_) return;
+        FitProgress p;
+        p.stage = stage_;
+        p.evaluations = result_.evaluations;
+        p.elapsed = elapsed();
+        p.budget = options_.seconds;
+        p.bestLoss = result_.loss;
+        onProgress_(p);
+    }
+
+    std::vector<Image> render(const WovenParams& p) {
+        std::vector<Image> images;
+        for (const Shot& s : shots_) {
+            images.push_back(renderShot(s, p, options_.render, cancel_));
+            applyVignette(images.back(), s.photo.vignetteSigmaPx);
+        }
+        ++result_.evaluations;
+        return images;
+    }
+
+    // The loss of renders (vignetted, before exposure); with `record`, kept if the best so far.
+    double evaluate(const WovenParams& p, std::vector<Image> images, bool record) {
+        std::vector<float> photoMeans, renderMeans;
+        std::vector<ImageStats> stats(shots_.size());
+        bool anyFree = false;
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (shots_[i].photo.exposure) continue;
+            anyFree = true;
+            const std::vector<float>& pm = photoStats_[i].values[kStatBlockMeans];
+            photoMeans.insert(photoMeans.end(), pm.begin(), pm.end());
+            stats[i] = imageStats(images[i]);
+            const std::vector<float>& rm = stats[i].values[kStatBlockMeans];
+            renderMeans.insert(renderMeans.end(), rm.begin(), rm.end());
+        }
+        const double free = anyFree ? bestExposure(photoMeans, renderMeans) : 1.0;
+        double total = 0.0;
+        std::vector<LossTerms> terms(shots_.size());
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            const float e = float(shots_[i].photo.exposure.value_or(float(free)));
+            if (e != 1.0f)
+                for (glm::vec3& v : images[i].pixels) v *= e;
+            stats[i] = imageStats(images[i]);
+            terms[i] = loss(photoStats_[i], stats[i]);
+            total += terms[i].total;
+        }
+        if (record) {
+            if (total < result_.loss) {
+                result_.loss = total;
+                result_.params = p;
+                result_.exposure = free;
+                for (size_t i = 0; i < shots_.size(); ++i) {
+                    result_.shots[i].terms = terms[i];
+                    result_.shots[i].render = std::move(images[i]);
+                }
+            }
+            result_.history.emplace_back(elapsed(), result_.loss);
+            progress();
+        }
+        return total;
+    }
+
+    double evaluate(const WovenParams& p) { return evaluate(p, render(p), true); }
+
+    // Stage 1: each direction's peak in the first shot that shows one.
+    glm::vec2 threadCountsFromPhotos(glm::vec2 repeat) {
+        bool ends = false, picks = false;
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            const Shot& s = shots_[i];
+            const ThreadPeaks peaks = threadPeaks(s.image, s.uvPerPixel);
+            const glm::dvec2 gradU(s.uvPerPixel[0][0], s.uvPerPixel[1][0]), gradV(s.uvPerPixel[0][1], s.uvPerPixel[1][1]);
+            if (peaks.ends) result_.shots[i].photoFrequency.x = glm::length(peaks.ends->frequency);
+            if (peaks.picks) result_.shots[i].photoFrequency.y = glm::length(peaks.picks->frequency);
+            photoPeaks_.push_back(peaks);
+            if (!ends && peaks.ends) {
+                repeat.x = float(glm::length(peaks.ends->frequency) / glm::length(gradU));
+                ends = true;
+            }
+            if (!picks && peaks.picks) {
+                repeat.y = float(glm::length(peaks.picks->frequency) / glm::length(gradV));
+                picks = true;
+            }
+        }
+        if (!ends || !picks)
+            result_.warnings.push_back(std::string("no photo shows the threads ") + (!ends ? "across u (warp ends)" : "") +
+                                       (!ends && !picks ? " or " : "") + (!picks ? "across v (weft picks)" : "") +
+                                       " as a peak of its spectrum: the thread count there stays the shot's material's (" +
+                                       std::to_string(!ends ? repeat.x : repeat.y) +
+                                       " per UV unit); a sharper or closer photo resolves them");
+        return repeat;
+    }
+
+    // Grey yarns scaled so the first shot's mean colour is the photo's.
+    WovenParams initialColours(WovenParams p) {
+        p.weft_color = p.warp_color = glm::vec3(0.5f);
+        const std::vector<Image> images = render(p);
+        glm::dvec3 photo(0.0), rendered(0.0);
+        for (const glm::vec3& v : shots_[0].image.pixels) photo += glm::dvec3(v);
+        for (const glm::vec3& v : images[0].pixels) rendered += glm::dvec3(v);
+        const double e = shots_[0].photo.exposure.value_or(1.0f);
+        for (int c = 0; c < 3; ++c)
+            p.weft_color[c] = float(std::clamp(0.5 * photo[c] / std::max(e * rendered[c], 1e-9), 0.02, 0.9));
+        p.warp_color = p.weft_color;
+        evaluate(p, images, true);
+        return p;
+    }
+
+    // Stage 2. False when the budget ran out before every weave was tried.
+    bool chooseWeave(const WovenParams& start) {
+        const auto& candidates = weaveCandidates();
+        for (size_t c = 0; c < candidates.size(); ++c) {
+            if (stop()) {
+                result_.warnings.push_back("the time ran out during the weave search (" + std::to_string(c) + " of " +
+                                           std::to_string(candidates.size()) + " weaves tried)");
+                return false;
+            }
+            stage_ = "weave " + std::to_string(c + 1) + "/" + std::to_string(candidates.size());
+            WovenParams p = start;
+            p.pattern = candidates[c].pattern;
+            // Renders linear in the yarn colours: black, white weft, white warp.
+            WovenParams basis = p;
+            basis.weft_color = basis.warp_color = glm::vec3(0.0f);
+            const std::vector<Image> black = render(basis);
+            basis.weft_color = glm::vec3(1.0f);
+            const std::vector<Image> weft = render(basis);
+            basis.weft_color = glm::vec3(0.0f);
+            basis.warp_color = glm::vec3(1.0f);
+            const std::vector<Image> warp = render(basis);
+            const Objective objective = [&](const std::vector<double>& x) {
+                if (cancel_.load()) throw nlopt::forced_stop();
+                const WovenParams q = decode(x, p);
+                std::vector<Image> images = black;
+                for (size_t s = 0; s < images.size(); ++s)
+                    for (size_t i = 0; i < images[s].pixels.size(); ++i)
+                        images[s].pixels[i] += q.weft_color * (weft[s].pixels[i] - black[s].pixels[i]) +
+                                               q.warp_color * (warp[s].pixels[i] - black[s].pixels[i]);
+                return evaluate(q, std::move(images), false);
+            };
+            std::vector<double> x = encode(p);
+            x.resize(kColourAxes);
+            minimise(x, objective, kColourEvaluations);
+            evaluate(decode(x, p));
+        }
+        return true;
+    }
+
+    // Runs NLopt's BOBYQA from x within [0, 1]^n, at most `evaluations` (0: until the budget is
+    // spent or it converges); x becomes the best point it met. Returns the evaluations it took.
+    int minimise(std::vector<double>& x, const Objective& objective, int evaluations) {
+        nlopt::opt opt(nlopt::LN_BOBYQA, unsigned(x.size()));
+        opt.set_lower_bounds(std::vector<double>(x.size(), 0.0));
+        opt.set_upper_bounds(std::vector<double>(x.size(), 1.0));
+        int count = 0;
+        std::vector<double> best = x;
+        double bestValue = INFINITY;
+        const Objective counted = [&](const std::vector<double>& v) {
+            if (cancel_.load() || elapsed() >= options_.seconds) throw nlopt::forced_stop();
+            ++count;
+            const double f = objective(v);
+            if (f < bestValue) {
+                bestValue = f;
+                best = v;
+            }
+            return f;
+        };
+        opt.set_min_objective(trampoline, const_cast<Objective*>(&counted));
+        if (evaluations > 0) opt.set_maxeval(evaluations);
+        opt.set_initial_step(0.08);
+        opt.set_xtol_rel(1e-4);
+        for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+        double f = 0.0;
+        try {
+            opt.optimize(x, f);
+        } catch (const std::runtime_error&) {
+            // forced_stop (the budget, Ctrl-C) or roundoff_limited: the best point so far stands.
+        }
+        if (std::isfinite(bestValue)) x = best;
+        return count;
+    }
+
+    // Stage 3: the photo's peaks against the same peaks of a render of the chosen weave, measured
+    // the same way, so what the window, the lens and the weave do to a peak cancels.
+    bool calibrateThreadCounts(WovenParams& p) {
+        for (int iteration = 0; iteration < 2; ++iteration) {
+            if (stop()) return false;
+            const std::vector<Image> images = render(p);
+            const ThreadPeaks r = threadPeaks(images[0], shots_[0].uvPerPixel);
+            const ThreadPeaks& photo = photoPeaks_[0];
+            if (photo.ends && r.ends) p.repeat.x *= float(glm::length(photo.ends->frequency) / glm::length(r.ends->frequency));
+            if (photo.picks && r.picks)
+                p.repeat.y *= float(glm::length(photo.picks->frequency) / glm::length(r.picks->frequency));
+        }
+        // The calibrated counts replace the best so far even where their loss is higher: the
+        // loss's spectrum bins are too coarse to see a shift of a few percent, the peaks are not.
+        result_.loss = INFINITY;
+        evaluate(p);
+        return true;
+    }
+
+    // Stage 4.
+    int refine() {
+        stage_ = "gloss, widths, bump";
+        const WovenParams base = result_.params;
+        std::vector<double> x = encode(base);
+        const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, base)); };
+        return minimise(x, objective, 0);
+    }
+
+    void measureThreads() {
+        for (size_t i = 0; i < shots_.size() && i < photoPeaks_.size(); ++i) {
+            ShotFit& f = result_.shots[i];
+            if (f.render.pixels.empty()) continue;
+            const ThreadPeaks r = threadPeaks(f.render, shots_[i].uvPerPixel);
+            const ThreadPeaks& p = photoPeaks_[i];
+            if (r.ends) f.renderFrequency.x = glm::length(r.ends->frequency);
+            if (r.picks) f.renderFrequency.y = glm::length(r.picks->frequency);
+            if (r.ends && p.ends) f.directionError.x = angleDegrees(r.ends->frequency, p.ends->frequency);
+            if (r.picks && p.picks) f.directionError.y = angleDegrees(r.picks->frequency, p.picks->frequency);
+        }
+    }
+
+    const std::vector<Shot>& shots_;
+    FitOptions options_;
+    const std::atomic<bool>& cancel_;
+    std::function<void(const FitProgress&)> onProgress_;
+    Clock::time_point start_;
+    std::vector<ImageStats> photoStats_;
+    std::vector<ThreadPeaks> photoPeaks_;
+    std::string stage_;
+    FitResult result_;
+};
+
+}  // namespace
+
+FitResult fitFabric(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
+                    const std::function<void(const FitProgress&)>& onProgress) {
+    if (shots.empty()) throw FitError("woven fit: no shots");
+    return Fitter(shots, options, cancel, onProgress).run();
+}
+
+}  // namespace woven

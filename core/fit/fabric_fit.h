@@ -1,0 +1,59 @@
+#pragma once
+// woven fit's optimiser (docs/FIT.md): the woven material whose renders of the shots have the
+// photos' statistics. In stages, each starting from the last one's best:
+//   1. thread counts from the photo's spectrum (power_spectrum.h): the peak of each thread
+//      direction, which the shot's camera turns into threads per UV unit (Shot::uvPerPixel);
+//   2. the weave: each of weaveCandidates() rendered, its yarn colours fitted (by NLopt, on
+//      renders that are linear in the colours: a render with white weft, one with white warp and
+//      one with both black, which direct light from point lights makes exact), the best kept;
+//   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
+//   4. colours, gloss (ex, ey, rs), yarn widths and bump (cy) by NLopt's BOBYQA on full renders,
+//      until the time budget is spent.
+// The best parameters met are kept throughout: a cancelled or timed-out fit returns them.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fit_loss.h"
+#include "shot.h"
+#include "shot_render.h"
+
+namespace woven {
+
+struct FitOptions {
+    double seconds = 180.0;  // the time budget
+    FitRenderSettings render;
+};
+
+struct FitProgress {
+    std::string stage;
+    int evaluations = 0;  // renders so far
+    double elapsed = 0.0, budget = 0.0;
+    double bestLoss = 0.0;
+};
+
+struct ShotFit {
+    LossTerms terms;  // of the best parameters
+    Image render;     // the best parameters' render, vignette and exposure applied
+    // The photo's and the render's thread frequencies, cycles per pixel (0: no peak found), and the
+    // angle between the photo's thread directions and the render's, degrees.
+    glm::dvec2 photoFrequency{0.0}, renderFrequency{0.0};
+    glm::dvec2 directionError{0.0};
+};
+
+struct FitResult {
+    WovenParams params;
+    double exposure = 1.0;  // the free shots' exposure (1 when none is free)
+    double loss = 0.0;
+    std::vector<ShotFit> shots;
+    std::vector<std::pair<double, double>> history;  // (seconds, best loss) after each evaluation
+    int evaluations = 0;
+    bool complete = false;  // every stage ran (not cancelled, the budget was enough)
+    std::vector<std::string> warnings;
+};
+
+FitResult fitFabric(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
+                    const std::function<void(const FitProgress&)>& onProgress = {});
+
+}  // namespace woven

@@ -1,0 +1,73 @@
+#include "fit_loss.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace woven {
+
+namespace {
+
+// Mean of ((render - photo) / scale of the photo's channel)^2, for values laid out with the
+// channel varying as (index / stride) % 3.
+double colourError(const std::vector<float>& photo, const std::vector<float>& render, size_t stride) {
+    std::array<double, 3> mean{};
+    std::array<double, 3> n{};
+    for (size_t i = 0; i < photo.size(); ++i) {
+        mean[(i / stride) % 3] += photo[i];
+        n[(i / stride) % 3] += 1.0;
+    }
+    for (int c = 0; c < 3; ++c) mean[size_t(c)] = std::max(mean[size_t(c)] / std::max(n[size_t(c)], 1.0), 1e-4);
+    double e = 0.0;
+    for (size_t i = 0; i < photo.size(); ++i) {
+        const double d = (double(render[i]) - photo[i]) / mean[(i / stride) % 3];
+        e += d * d;
+    }
+    return e / double(std::max<size_t>(photo.size(), 1));
+}
+
+double spectrumError(const std::vector<float>& photo, const std::vector<float>& render) {
+    const size_t perChannel = photo.size() / 3;
+    double e = 0.0;
+    for (size_t c = 0; c < 3; ++c) {
+        std::vector<float> sorted(photo.begin() + std::ptrdiff_t(c * perChannel), photo.begin() + std::ptrdiff_t((c + 1) * perChannel));
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(perChannel / 2), sorted.end());
+        const double floor = std::max(double(sorted[perChannel / 2]), 1e-12);
+        for (size_t i = c * perChannel; i < (c + 1) * perChannel; ++i) {
+            const double d = std::log10(render[i] + floor) - std::log10(photo[i] + floor);
+            e += d * d;
+        }
+    }
+    return e / double(std::max<size_t>(photo.size(), 1));
+}
+
+double relativeError(const std::vector<float>& photo, const std::vector<float>& render) {
+    double e = 0.0;
+    for (size_t i = 0; i < photo.size(); ++i) {
+        const double d = (double(render[i]) - photo[i]) / std::max(std::abs(double(photo[i])), 1e-9);
+        e += d * d;
+    }
+    return e / double(std::max<size_t>(photo.size(), 1));
+}
+
+}  // namespace
+
+const std::array<double, kStatGroupCount>& lossWeights() {
+    // Colours first: they are what a designer sees. The spectrum's log error is larger by nature
+    // (a factor of 2 in power is 0.09), so it weighs less; it decides the weave all the same,
+    // as a wrong weave puts its peaks in other bins altogether.
+    static const std::array<double, kStatGroupCount> w{1.0, 1.0, 0.05, 0.1};
+    return w;
+}
+
+LossTerms loss(const ImageStats& photo, const ImageStats& render) {
+    LossTerms t;
+    t.error[kStatBlockMeans] = colourError(photo.values[kStatBlockMeans], render.values[kStatBlockMeans], 1);
+    t.error[kStatQuantiles] = colourError(photo.values[kStatQuantiles], render.values[kStatQuantiles], 5);
+    t.error[kStatSpectrum] = spectrumError(photo.values[kStatSpectrum], render.values[kStatSpectrum]);
+    t.error[kStatGram] = relativeError(photo.values[kStatGram], render.values[kStatGram]);
+    for (int g = 0; g < kStatGroupCount; ++g) t.total += lossWeights()[size_t(g)] * t.error[size_t(g)];
+    return t;
+}
+
+}  // namespace woven

@@ -1,0 +1,28 @@
+#pragma once
+// Statistics of an image that need no alignment (docs/FIT.md, "How it compares"): the threads of
+// a photo and of a render never line up, so the fit compares what stays when they are shifted.
+//   block means    the mean colour over an 8 x 8 grid: the light's fall-off and the highlight
+//   quantiles      each channel's 10 ... 90 % quantiles over a 4 x 4 grid: how the yarns' colours
+//                  and the highlight spread within a region, whatever the threads' phase
+//   spectrum       each channel's power spectrum (power_spectrum.h), summed over bins of 1/32
+//                  cycle per pixel, in log10: the weave's class, direction and thread counts
+//   gram           the second moments of the features (R, G, B, |d/dx|, |d/dy|) over the image,
+//                  as a Gram matrix of image features does for texture: which colour the edges
+//                  across each direction have
+#include <array>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+enum StatGroup { kStatBlockMeans, kStatQuantiles, kStatSpectrum, kStatGram, kStatGroupCount };
+const std::array<const char*, kStatGroupCount>& statGroupNames();  // "block means", ...
+
+struct ImageStats {
+    std::array<std::vector<float>, kStatGroupCount> values;
+};
+
+ImageStats imageStats(const Image& image);
+
+}  // namespace woven

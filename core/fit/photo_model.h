@@ -1,0 +1,23 @@
+#pragma once
+// How a photograph relates to a render of the same shot (docs/FIT.md): the encoding of its
+// values, the lens's vignette, and the exposure. The fit applies the vignette and exposure to
+// its renders, so that it compares the photo with what the camera would have recorded.
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+// The photo's pixels as linear RGB: sRGB or gamma 2.2 decoded, or taken as they are
+// ("linear"; float formats always). Throws ImageError naming the file.
+Image readPhoto(const ShotPhoto& photo);
+
+// The render darkened toward the corners by the Gaussian of `sigmaPx` pixels about the image
+// centre; unchanged for sigmaPx = 0.
+void applyVignette(Image& image, float sigmaPx);
+
+// The exposure s minimising sum |photo_i - s render_i|^2 over paired values (block means of
+// every shot whose exposure is free): one scale for all of them.
+double bestExposure(const std::vector<float>& photo, const std::vector<float>& render);
+
+}  // namespace woven
