@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "material_json.h"
+#include "transmitting_yarn.h"
 #include "untrusted_json.h"
 #include "uv_precision.h"
 #include "woven_material.h"
@@ -118,9 +119,14 @@ nlohmann::json evalQuery(const WovenMaterial& material, const nlohmann::json& qu
         out["yarn"] = "gap";
         return out;
     }
-    const glm::vec3 f = shading->bsdf.eval(wo, wi);
-    out["f"] = {f.r, f.g, f.b};
-    out["pdf"] = shading->bsdf.pdf(wo, wi);
+    // A yarn that transmits answers for wi on either side, as the renderer's BSDF does.
+    const auto answer = [&](const auto& bsdf) {
+        const glm::vec3 f = bsdf.eval(wo, wi);
+        out["f"] = {f.r, f.g, f.b};
+        out["pdf"] = bsdf.pdf(wo, wi);
+    };
+    if (shading->transmission) answer(transmittingYarn(shading->bsdf, *shading->transmission));
+    else answer(shading->bsdf);
     out["yarn"] = yarnName(shading->yarn);
     return out;
 }

@@ -1,7 +1,7 @@
 // Cost of one BSDF query: the bare Ashikhmin-Shirley lobe against the full woven material
 // (pattern lookup, yarn geometry, bump frame, noise, then the lobe), with the woven features
 // off and on, and a 1024 x 1024-thread draft against the plain weave (1,1,1). The full/bare
-// ratio is what the weave adds per shading point.
+// ratio is what the weave adds per shading point; and the same with yarns that transmit.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ashikhmin_shirley.h"
+#include "transmitting_yarn.h"
 #include "woven_material.h"
 
 using namespace woven;
@@ -166,6 +167,22 @@ void BM_WovenShadeSample(benchmark::State& state, const WovenParams& params) {
     }
 }
 
+// A material whose yarns transmit (docs/MODEL_TRANSMISSION.md): shade() also looks up the other
+// face's yarn, and the point's BSDF evaluates reflection and transmission, wi on either side.
+void BM_WovenTransmittingShadeEval(benchmark::State& state, WovenParams params) {
+    params.transmission = 0.5f;
+    const WovenMaterial material(params);
+    const Queries& q = queries();
+    size_t i = 0;
+    for (auto _ : state) {
+        auto s = material.shade(hitAt(q.uv[i]));
+        const glm::vec3 wi = (i & 1) ? q.wi[i] : -q.wi[i];
+        if (s && s->transmission) benchmark::DoNotOptimize(transmittingYarn(s->bsdf, *s->transmission).eval(q.wo[i], wi));
+        benchmark::DoNotOptimize(s);
+        i = (i + 1) & (kQueries - 1);
+    }
+}
+
 // The weave filter's BSDF (shadeFiltered + eval) over a footprint of `elements` weave elements:
 // from one element on the far field alone (a mixture of 8 cross-section lobes per yarn, fewer for
 // flat yarns), below it blended with the exact lobe.
@@ -200,6 +217,7 @@ BENCHMARK_CAPTURE(BM_WovenShadeEval, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_off, featuresOff());
 BENCHMARK_CAPTURE(BM_WovenShadeEval, features_on, featuresOn());
 BENCHMARK_CAPTURE(BM_WovenShadeSample, features_on, featuresOn());
+BENCHMARK_CAPTURE(BM_WovenTransmittingShadeEval, features_on, featuresOn());
 BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, far_flat, featuresOff(), 4.0);
 BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, far_cy_075, featuresOn(), 4.0);
 BENCHMARK_CAPTURE(BM_WovenFilteredShadeEval, blend_cy_075, featuresOn(), 0.5);

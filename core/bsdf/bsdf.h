@@ -6,6 +6,7 @@
 #include "filtered_weave_lobe.h"
 #include "gltf_bxdf.h"
 #include "surface_bsdf.h"
+#include "transmitting_yarn.h"
 
 namespace woven {
 
@@ -14,6 +15,7 @@ public:
     Bxdf(const AshikhminShirley& lobe) : lobe_(lobe) {}
     Bxdf(const GltfBxdf& lobe) : lobe_(lobe) {}
     Bxdf(const FilteredWeaveLobe& lobe) : lobe_(lobe) {}
+    Bxdf(const TransmittingYarn& lobe) : lobe_(lobe) {}
 
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
         return std::visit([&](const auto& l) { return l.eval(wo, wi); }, lobe_);
@@ -32,7 +34,7 @@ public:
     }
 
 private:
-    std::variant<AshikhminShirley, GltfBxdf, FilteredWeaveLobe> lobe_;
+    std::variant<AshikhminShirley, GltfBxdf, FilteredWeaveLobe, TransmittingYarn> lobe_;
 };
 
 using Bsdf = FramedLobe<Bxdf>;
@@ -41,5 +43,7 @@ using Bsdf = FramedLobe<Bxdf>;
 inline Bsdf toBsdf(const SurfaceBsdf& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
 // The woven model filtered over a footprint as a Bsdf.
 inline Bsdf toBsdf(const FramedLobe<FilteredWeaveLobe>& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
+// A yarn that reflects and transmits as a Bsdf.
+inline Bsdf toBsdf(const FramedLobe<TransmittingYarn>& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
 
 }  // namespace woven

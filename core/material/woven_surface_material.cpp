@@ -36,10 +36,14 @@ ShadingInput WovenSurfaceMaterial::shadingInput(const SurfaceHit& hit, const glm
 
 std::optional<Bsdf> WovenSurfaceMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
     const ShadingInput in = shadingInput(hit, wo);
-    if (in.duvdx != glm::dvec2(0.0) || in.duvdy != glm::dvec2(0.0) || in.uvSpacing != glm::dvec2(0.0))
+    // The filtered weave reflects only (MODEL_TRANSMISSION.md section 6): a material whose yarns
+    // transmit is filtered only where its uv cannot resolve a thread, where nothing else can shade it.
+    const bool footprint = !model_.transmits() && (in.duvdx != glm::dvec2(0.0) || in.duvdy != glm::dvec2(0.0));
+    if (footprint || in.uvSpacing != glm::dvec2(0.0))
         if (const auto filtered = model_.shadeFiltered(in)) return toBsdf(*filtered);
     const auto shading = model_.shade(in);
     if (!shading) return std::nullopt;
+    if (shading->transmission) return toBsdf(transmittingYarn(shading->bsdf, *shading->transmission));
     return toBsdf(shading->bsdf);
 }
 

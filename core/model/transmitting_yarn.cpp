@@ -18,29 +18,46 @@ float chooseTransmission(const AshikhminShirley& r, const YarnTransmission& t) {
 }
 }  // namespace
 
-TransmittingYarn::TransmittingYarn(const AshikhminShirley& reflection, const YarnTransmission& transmission)
-    : reflection_(reflection), transmission_(transmission), transmitProb_(chooseTransmission(reflection, transmission)) {}
+TransmittingYarn::TransmittingYarn(const AshikhminShirley& reflection, const YarnTransmission& transmission,
+                                   const Frame& transmissionFrame)
+    : reflection_(reflection),
+      transmission_(transmission),
+      transmissionFrame_(transmissionFrame),
+      transmitProb_(chooseTransmission(reflection, transmission)) {}
 
 glm::vec3 TransmittingYarn::eval(const glm::vec3& wo, const glm::vec3& wi) const {
-    // Each part is zero on the other's side.
-    return wo.z * wi.z > 0.0f ? reflection_.eval(wo, wi) : transmission_.eval(wo, wi);
+    const Frame& t = transmissionFrame_;
+    return reflection_.eval(wo, wi) + transmission_.eval(t.toLocal(wo), t.toLocal(wi));
 }
 
 float TransmittingYarn::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
-    return wo.z * wi.z > 0.0f ? (1.0f - transmitProb_) * reflection_.pdf(wo, wi) : transmitProb_ * transmission_.pdf(wo, wi);
+    const Frame& t = transmissionFrame_;
+    return (1.0f - transmitProb_) * reflection_.pdf(wo, wi) + transmitProb_ * transmission_.pdf(t.toLocal(wo), t.toLocal(wi));
 }
 
 std::optional<BsdfSample> TransmittingYarn::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
     // uc chooses the part and, rescaled to [0, 1), that part's own lobe.
     const bool transmit = uc < transmitProb_;
-    auto s = transmit ? transmission_.sample(wo, u, uc / transmitProb_)
-                      : reflection_.sample(wo, u, std::min((uc - transmitProb_) / (1.0f - transmitProb_), 0x1.fffffep-1f));
+    std::optional<BsdfSample> s;
+    if (transmit) {
+        s = transmission_.sample(transmissionFrame_.toLocal(wo), u, uc / transmitProb_);
+        if (s) s->wi = transmissionFrame_.toWorld(s->wi);
+    } else {
+        s = reflection_.sample(wo, u, std::min((uc - transmitProb_) / (1.0f - transmitProb_), 0x1.fffffep-1f));
+    }
     if (!s) return std::nullopt;
     s->pdf = pdf(wo, s->wi);
     if (!(s->pdf > 0.0f) || !std::isfinite(s->pdf)) return std::nullopt;
     s->f = eval(wo, s->wi);
     s->weight = s->f * (std::fabs(s->wi.z) / s->pdf);
     return s;
+}
+
+FramedLobe<TransmittingYarn> transmittingYarn(const SurfaceBsdf& reflection, const FramedLobe<YarnTransmission>& transmission) {
+    const Frame& r = reflection.frame();
+    const Frame& t = transmission.frame();
+    const Frame relative{r.toLocal(t.x), r.toLocal(t.y), r.toLocal(t.z)};
+    return FramedLobe<TransmittingYarn>(r, TransmittingYarn(reflection.lobe(), transmission.lobe(), relative));
 }
 
 }  // namespace woven

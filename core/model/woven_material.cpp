@@ -42,7 +42,10 @@ WovenMaterial::WovenMaterial(const WovenParams& params)
     : params_((validate(params), params)),
       weave_(params),
       farField_{WeaveFarField(weave_, params_, false), WeaveFarField(weave_, params_, true)},
-      mayHaveGaps_(mayShowGaps(params) && params.backing == 0) {}
+      mayHaveGaps_(mayShowGaps(params) && params.backing == 0),
+      transmits_(false) {
+    for (int i = 0; i < weave_.yarnCount(); ++i) transmits_ = transmits_ || weave_.yarn(i).transmission() > 0.0f;
+}
 
 bool WovenMaterial::isSeeThrough(const glm::dvec2& uv) const {
     if (!mayHaveGaps_) return false;
@@ -99,6 +102,31 @@ std::optional<FramedLobe<FilteredWeaveLobe>> WovenMaterial::shadeFiltered(const 
     return FramedLobe<FilteredWeaveLobe>(tangent, lobe);
 }
 
+namespace {
+// A yarn point as shading sees it: its yarn and lobe shape, its colour (noise and print applied)
+// and its frame.
+struct YarnLook {
+    const Yarn* yarn;
+    const LobeShape* shape;
+    glm::vec3 color;
+    Frame frame;
+};
+YarnLook look(const Weave& weave, const WovenParams& params, const YarnPoint& y, const Frame& tangent, const glm::vec3& print) {
+    const bool weft = y.type == YarnType::Weft;
+    const Yarn& yarn = weave.yarn(y.yarn);
+    glm::vec3 color = (weft ? weave.weft() : weave.warp()).color(y.slot);
+    if (yarn.noise() > 0.0f) {
+        // The seed wraps the yarn index to 32 bits, as the GLSL twin does.
+        const uint32_t seed = uint32_t(y.yarnIndex) * 2U + (weft ? 0U : 1U);
+        const float n01 = yarnNoise(y.along * params.noise_scale, seed);
+        color = glm::clamp(color * (1.0f + yarn.noise() * n01), 0.0f, 1.0f);
+    }
+    color *= print;
+    const glm::vec3 bumped = tangent.toWorld(y.normal);
+    return {&yarn, &weave.lobeShape(y.yarn), color, Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y)};
+}
+}  // namespace
+
 std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in, const Frame& tangent) const {
     const YarnPoint y = yarnAt(weave_, params_, in.backSide, in.uv);
 
@@ -106,22 +134,21 @@ std::optional<WovenShading> WovenMaterial::shade(const ShadingInput& in, const F
         if (!params_.backing) return std::nullopt;
         return WovenShading{YarnType::Gap, SurfaceBsdf(tangent, AshikhminShirley(0.0f, 0.0f, 0.0f, params_.backing_color))};
     }
-    const bool weft = y.type == YarnType::Weft;
-    const Yarn& yarn = weave_.yarn(y.yarn);
-    glm::vec3 color = (weft ? weave_.weft() : weave_.warp()).color(y.slot);
-    if (yarn.noise() > 0.0f) {
-        // The seed wraps the yarn index to 32 bits, as the GLSL twin does.
-        const uint32_t seed = uint32_t(y.yarnIndex) * 2U + (weft ? 0U : 1U);
-        const float n01 = yarnNoise(y.along * params_.noise_scale, seed);
-        color = glm::clamp(color * (1.0f + yarn.noise() * n01), 0.0f, 1.0f);
-    }
-    color *= in.print;
-    const glm::vec3 bumped = tangent.toWorld(y.normal);
-    const Frame frame = Frame::fromNormalAndAxis(bumped, weft ? tangent.x : tangent.y);
-    const AshikhminShirley lobe(weave_.lobeShape(y.yarn), color);
-    if (!(yarn.transmission() > 0.0f)) return WovenShading{y.type, SurfaceBsdf(frame, lobe)};
-    return WovenShading{y.type, SurfaceBsdf(frame, lobe),
-                        YarnTransmission(lobe.shape(), yarnTransmittance(color, yarn.transmission()), yarn.transmissionGloss())};
+    const YarnLook seen = look(weave_, params_, y, tangent, in.print);
+    const AshikhminShirley lobe(*seen.shape, seen.color);
+    if (!(seen.yarn->transmission() > 0.0f)) return WovenShading{y.type, SurfaceBsdf(seen.frame, lobe)};
+    // Light crosses both faces' yarns at the point: it passes what the one that passes less
+    // does, through the front face's yarn lobe, whichever face is seen (MODEL_TRANSMISSION.md 3).
+    const YarnPoint o = yarnAt(weave_, params_, !in.backSide, in.uv);
+    if (o.type == YarnType::Gap || !(weave_.yarn(o.yarn).transmission() > 0.0f))
+        return WovenShading{y.type, SurfaceBsdf(seen.frame, lobe)};
+    const Frame otherTangent = tangentFrame(in.backSide ? in.ns : -in.ns, in.dpdu, in.dpdv);
+    const YarnLook other = look(weave_, params_, o, otherTangent, in.print);
+    const glm::vec3 passed = glm::min(yarnTransmittance(seen.color, seen.yarn->transmission()),
+                                      yarnTransmittance(other.color, other.yarn->transmission()));
+    const YarnLook& front = in.backSide ? other : seen;
+    const YarnTransmission through(*front.shape, passed, front.yarn->transmissionGloss());
+    return WovenShading{y.type, SurfaceBsdf(seen.frame, lobe), FramedLobe<YarnTransmission>(front.frame, through)};
 }
 
 }  // namespace woven

@@ -33,9 +33,11 @@ struct ShadingInput {
 struct WovenShading {
     YarnType yarn;
     SurfaceBsdf bsdf;
-    // The light the yarn passes to the other side, in bsdf's frame (TransmittingYarn composes the
-    // two); absent for yarns of transmission 0, which stay exactly the reflecting lobe of before.
-    std::optional<YarnTransmission> transmission = std::nullopt;
+    // The light the point passes to the other side, in its own frame: the same lobe whichever
+    // face is seen, so that it is reciprocal (docs/MODEL_TRANSMISSION.md section 3);
+    // transmittingYarn() composes it with bsdf. Absent where a yarn of transmission 0 is on
+    // either face: the point stays exactly the reflecting lobe of before.
+    std::optional<FramedLobe<YarnTransmission>> transmission = std::nullopt;
 };
 
 class WovenMaterial {
@@ -58,12 +60,14 @@ public:
     bool isSeeThrough(const glm::dvec2& uv) const;
     // Whether any uv is see-through: both yarns narrower than their element, and no backing.
     bool hasSeeThroughGaps() const { return mayHaveGaps_; }
+    // Whether any yarn type has transmission > 0: only then may shade() give a transmission.
+    bool transmits() const { return transmits_; }
 
 private:
     WovenParams params_;
     Weave weave_;
     WeaveFarField farField_[2];  // front, back
-    bool mayHaveGaps_;
+    bool mayHaveGaps_, transmits_;
 
     // shade() in a given tangent frame (x = +u, y = +v, z = the normal of the face seen).
     std::optional<WovenShading> shade(const ShadingInput& in, const Frame& tangent) const;

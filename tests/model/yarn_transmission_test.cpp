@@ -1,6 +1,7 @@
 // Light through the yarns (docs/MODEL_TRANSMISSION.md): the furnace, the bound R + T <= 1,
-// reciprocity, the sampler's chi-square over both hemispheres, no NaN at grazing angles, and a
-// material of transmission 0 keeping exactly the reflecting lobe of before.
+// reciprocity, the sampler's chi-square over both hemispheres, no NaN at grazing angles, a
+// material of transmission 0 keeping exactly the reflecting lobe of before, and a point's
+// transmission being one reciprocal function whichever face sees it.
 //
 // Quadrature: each hemisphere over the half-vector domain of direction_domain.h (the lower one
 // mirrored up, where the glossy transmission has the reflection's shape), whose error on these
@@ -179,28 +180,128 @@ TEST(YarnTransmission, FiniteAtGrazingAndOppositeDirections) {
         }
 }
 
-TEST(YarnTransmission, OnlyYarnsThatTransmitGetTheLobe) {
+TEST(YarnTransmission, OnlyPointsWhoseYarnsBothTransmitGetTheLobe) {
     WovenParams p;
     EXPECT_FALSE(WovenMaterial(p).shade(ShadingInput{})->transmission.has_value());
     p.transmission = 0.5f;
     const auto shading = WovenMaterial(p).shade(ShadingInput{});
     ASSERT_TRUE(shading->transmission.has_value());
-    EXPECT_EQ(shading->transmission->transmittance(), yarnTransmittance(shading->bsdf.lobe().rd(), 0.5f));
-    EXPECT_EQ(shading->transmission->gloss(), p.transmission_gloss);
-    // A yarn type sets its own: here the weft passes nothing while the material's warp does.
+    // Warp and weft of one colour: the smaller of the two faces' T is that colour's.
+    EXPECT_EQ(shading->transmission->lobe().transmittance(), yarnTransmittance(shading->bsdf.lobe().rd(), 0.5f));
+    EXPECT_EQ(shading->transmission->lobe().gloss(), p.transmission_gloss);
+    // A yarn type sets its own: here the weft passes nothing while the material's warp does. At a
+    // crossing the light goes through both, so only where the warp alone covers does any pass.
     p.yarns.resize(1);
     p.yarns[0].value[kYarnTransmission] = 0.0f;
     p.yarns[0].set[kYarnTransmission] = true;
     p.weft_yarns = {0};
-    ShadingInput weft;
-    weft.uv = {0.5, 0.5};  // plain weave: the weft is on top in element (0, 0)
-    const auto w = WovenMaterial(p).shade(weft);
-    ASSERT_EQ(w->yarn, YarnType::Weft);
-    EXPECT_FALSE(w->transmission.has_value());
-    weft.uv = {1.5, 0.5};
-    const auto warp = WovenMaterial(p).shade(weft);
-    ASSERT_EQ(warp->yarn, YarnType::Warp);
-    EXPECT_TRUE(warp->transmission.has_value());
+    p.yarn_width = 0.5f;  // the weft covers v in [0.25, 0.75] of each element
+    const WovenMaterial m(p);
+    ShadingInput in;
+    in.uv = {0.5, 0.5};  // plain weave: the weft is on top in element (0, 0)
+    ASSERT_EQ(m.shade(in)->yarn, YarnType::Weft);
+    EXPECT_FALSE(m.shade(in)->transmission.has_value());
+    in.uv = {1.5, 0.5};  // the warp on top, the weft under it
+    ASSERT_EQ(m.shade(in)->yarn, YarnType::Warp);
+    EXPECT_FALSE(m.shade(in)->transmission.has_value());
+    in.uv = {1.5, 0.9};  // the warp alone
+    ASSERT_EQ(m.shade(in)->yarn, YarnType::Warp);
+    EXPECT_TRUE(m.shade(in)->transmission.has_value());
+    in.backSide = true;
+    EXPECT_TRUE(m.shade(in)->transmission.has_value());
+}
+
+// A satin whose faces differ (warp-faced front in one colour, weft-faced back in another), with
+// round yarns so each face's bumped frames differ, and the point's BSDF from either face.
+WovenParams twoFacedSatin() {
+    WovenParams p;
+    p.pattern = {5, 1, 2};
+    p.warp_color = {0.7f, 0.6f, 0.2f};
+    p.weft_color = {0.2f, 0.3f, 0.6f};
+    p.cy = 0.9f;
+    p.transmission = 0.9f;
+    p.transmission_gloss = 0.6f;
+    return p;
+}
+FramedLobe<TransmittingYarn> pointBsdf(const WovenMaterial& m, const glm::dvec2& uv, bool backSide) {
+    ShadingInput in;
+    in.uv = uv;
+    in.backSide = backSide;
+    const auto s = m.shade(in);
+    EXPECT_TRUE(s && s->transmission);
+    return transmittingYarn(s->bsdf, *s->transmission);
+}
+
+TEST(YarnTransmission, APointPassesTheSameLightFromEitherFace) {
+    // f(wo, wi) for wo at the front and wi at the back, from the front face's BSDF, equals
+    // f(wi, wo) from the back face's: one reciprocal function of the point, which BDPT's light
+    // subpaths (evaluating from the light's side) and the path tracer both see.
+    const WovenMaterial m(twoFacedSatin());
+    std::mt19937_64 gen(7);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    const auto direction = [&](float side) {
+        glm::vec3 w = sampleUniformSphere({u01(gen), u01(gen)});
+        w.z = side * std::max(std::fabs(w.z), 0.05f);
+        return glm::normalize(w);
+    };
+    int differentFaces = 0, compared = 0;
+    for (int k = 0; k < 40; ++k) {
+        const glm::dvec2 uv(5.0 * u01(gen), 5.0 * u01(gen));
+        ShadingInput in;
+        in.uv = uv;
+        const YarnType frontYarn = m.shade(in)->yarn;
+        in.backSide = true;
+        differentFaces += m.shade(in)->yarn != frontYarn;
+        const auto front = pointBsdf(m, uv, false), back = pointBsdf(m, uv, true);
+        for (int n = 0; n < 50; ++n) {
+            const glm::vec3 wo = direction(1.0f), wi = direction(-1.0f);
+            // Pairs that a face's bumped normal puts on one side are reflections there, which
+            // the integrators never connect across the geometric surface (connects()).
+            const auto across = [](const FramedLobe<TransmittingYarn>& f, const glm::vec3& a, const glm::vec3& c) {
+                return glm::dot(a, f.shadingNormal()) * glm::dot(c, f.shadingNormal()) < 0.0f;
+            };
+            if (!across(front, wo, wi) || !across(back, wi, wo)) continue;
+            ++compared;
+            const glm::vec3 a = front.eval(wo, wi), b = back.eval(wi, wo);
+            for (int c = 0; c < 3; ++c)  // the two faces' frames agree to float rounding
+                EXPECT_NEAR(a[c], b[c], 1e-4f * std::max(1.0f, a[c])) << "uv " << uv.x << "," << uv.y << " channel " << c;
+        }
+    }
+    EXPECT_GT(differentFaces, 20) << "the faces show the same yarn: the test would prove nothing";
+    EXPECT_GT(compared, 1000);
+}
+
+TEST(YarnTransmission, ReflectedPlusTransmittedAtMostOneFromEitherFace) {
+    // Each face reflects with its own yarn and passes the point's light through the front yarn's
+    // frame: R + T by Monte Carlo over the composite's own sampler (the mean of its weights), at
+    // most 1 within 4 standard errors. Grey yarns of t = 1 reach R_d + T = 1, the worst case;
+    // c_y = 1 tilts the two faces' frames apart the most.
+    WovenParams p = twoFacedSatin();
+    p.warp_color = p.weft_color = glm::vec3(0.5f);
+    p.transmission = 1.0f;
+    p.cy = 1.0f;
+    for (float gloss : {0.0f, 1.0f}) {
+        p.transmission_gloss = gloss;
+        const WovenMaterial m(p);
+        for (double u : {0.1, 0.3, 0.5, 0.7, 0.9})
+            for (bool backSide : {false, true})
+                for (double theta : {0.0, 0.8, 1.3, 1.5}) {
+                    const auto b = pointBsdf(m, {u, 0.37}, backSide);
+                    const glm::vec3 wo = b.frame().toWorld(sphericalDirection(theta, 0.4));
+                    std::mt19937_64 gen(11);
+                    std::uniform_real_distribution<float> u01(0.0f, 0x1.fffffep-1f);
+                    constexpr int kN = 20000;
+                    double sum = 0.0, sumSq = 0.0;
+                    for (int n = 0; n < kN; ++n) {
+                        const auto smp = b.sample(wo, {u01(gen), u01(gen)}, u01(gen));
+                        const double w = smp ? smp->weight.x : 0.0;
+                        sum += w;
+                        sumSq += w * w;
+                    }
+                    const double mean = sum / kN, se = std::sqrt(std::max(0.0, sumSq / kN - mean * mean) / kN);
+                    EXPECT_LE(mean, 1.0 + 4.0 * se) << "g " << gloss << " u " << u << " back " << backSide << " theta " << theta;
+                }
+    }
 }
 
 }  // namespace
