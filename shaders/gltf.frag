@@ -2,7 +2,8 @@
 // map applied) and gltf_bxdf.glsl lit by lighting.glsl, plus the occlusion texture, which only
 // the preview uses. The C++ side (gltf_gl_material.cpp) defines MAP_<NAME> as the index into
 // maps[] (texture_maps.glsl) of each texture the material has, MAP_COUNT, ALPHA_MASK or
-// ALPHA_BLEND, UNLIT and PREVIEW_SHADOWS. BLEND alpha and transmission become screen-door coverage (screen_door.glsl).
+// ALPHA_BLEND, UNLIT, PREVIEW_SHADOWS and DIFFUSE_TRANSMISSION (KHR_materials_diffuse_transmission:
+// the lights behind the surface shine through). BLEND alpha and transmission become screen-door coverage (screen_door.glsl).
 layout(location = 0) out vec4 outRadiance;
 
 uniform vec3 cameraPosition;
@@ -83,6 +84,20 @@ void main() {
 #ifdef MAP_TRANSMISSION
     g.transmission *= lookup(MAP_TRANSMISSION).r;
 #endif
+    g.diffuseTransmission = 0.0;
+    g.diffuseTransmissionColor = vec3(0.0);
+#ifdef DIFFUSE_TRANSMISSION
+    g.diffuseTransmission = diffuseTransmissionFactor;
+    g.diffuseTransmissionColor = diffuseTransmissionColorFactor;
+#ifdef MAP_DIFFUSE_TRANSMISSION
+    g.diffuseTransmission *= lookup(MAP_DIFFUSE_TRANSMISSION).a;
+#endif
+#ifdef MAP_DIFFUSE_TRANSMISSION_COLOR
+    g.diffuseTransmissionColor *= lookup(MAP_DIFFUSE_TRANSMISSION_COLOR).rgb;
+#endif
+    g.diffuseTransmission = clamp(g.diffuseTransmission, 0.0, 1.0);
+    g.diffuseTransmissionColor = clamp(g.diffuseTransmissionColor, 0.0, 1.0);
+#endif
     g.sheenColor = sheenColorFactor;
     float sheenRoughness = sheenRoughnessFactor;
 #ifdef MAP_SHEEN_COLOR
@@ -143,6 +158,16 @@ void main() {
         vec3 wiLocal = toLocal(f, wi);
         radiance += gltfBsdf(g, woLocal, wiLocal) * L * max(wiLocal.z, 0.0);
     }
+#ifdef DIFFUSE_TRANSMISSION
+    // The lights on the other side (of -ng), through the surface.
+    for (int i = 0; i < lightCount; ++i) {
+        vec3 wi;
+        vec3 L = incidentLight(i, p, -ng, wi);
+        if (L == vec3(0.0)) continue;
+        vec3 wiLocal = toLocal(f, wi);
+        radiance += gltfDiffuseBtdf(g, woLocal, wiLocal) * L * max(-wiLocal.z, 0.0);
+    }
+#endif
     if (!backSide) {
         vec3 e = emission;
 #ifdef MAP_EMISSIVE

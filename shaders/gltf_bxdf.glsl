@@ -1,5 +1,6 @@
-// core/bsdf/gltf_bxdf.cpp's eval() in GLSL (reflection; the preview draws transmission as
-// partial coverage): Lambert + GGX (anisotropic) with the height-correlated Smith term, dielectric
+// core/bsdf/gltf_bxdf.cpp's eval() in GLSL (reflection, and KHR_materials_diffuse_transmission's
+// Lambertian BTDF for lights behind the surface; the preview draws thin transmission as partial
+// coverage): Lambert + GGX (anisotropic) with the height-correlated Smith term, dielectric
 // and metal Fresnel, the Charlie sheen layer with its albedo scaling (the albedo table is core's,
 // uploaded as a texture), the clearcoat layer and the iridescent film (gltf_iridescence.glsl). Local frame: z = the shading normal, x = the
 // anisotropy direction.
@@ -10,6 +11,8 @@ struct GltfInputs {
     vec3 f0;                   // dielectric F0 (KHR_materials_ior, KHR_materials_specular)
     float f90;
     float transmission;
+    float diffuseTransmission;      // KHR_materials_diffuse_transmission's factor x texture
+    vec3 diffuseTransmissionColor;
     vec3 sheenColor;
     float sheenRoughness;      // clamped to [0.07, 1] as core's SheenLobe
     float clearcoat, clearcoatAlpha;
@@ -73,7 +76,8 @@ vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
     vec3 dielectricF, metalF;
     gltfFresnel(g, 0.5 * len, dielectricF, metalF);
     float specular = ggxD(g.alphaX, g.alpha, h) * ggxVisibility(g.alphaX, g.alpha, wo, wi);
-    vec3 dielectric = (1.0 - dielectricF) * (1.0 - g.transmission) * g.baseColor / PI + dielectricF * specular;
+    vec3 dielectric = (1.0 - dielectricF) * (1.0 - g.transmission) * (1.0 - g.diffuseTransmission) * g.baseColor / PI +
+                      dielectricF * specular;
     vec3 metal = metalF * specular;
     vec3 f = mix(dielectric, metal, g.metallic);
     float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
@@ -91,6 +95,27 @@ vec3 gltfBsdf(GltfInputs g, vec3 wo, vec3 wi) {
                      ggxVisibility(g.clearcoatAlpha, g.clearcoatAlpha, wo, wi);
         f = f * (1.0 - g.clearcoat * max(coatFresnel(wo.z), coatFresnel(wi.z))) + vec3(coat);
     }
+    return f;
+}
+
+// The diffuse transmission towards wo of light from wi on the other side (wi.z < 0), as core's
+// eval(): Fresnel at the half vector of wo and wi mirrored, the sheen's and the coat's scaling of
+// the layer below at |wi.z|.
+vec3 gltfDiffuseBtdf(GltfInputs g, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0 || wi.z >= 0.0) return vec3(0.0);
+    vec3 w = vec3(wi.xy, -wi.z);
+    float len = length(wo + w);
+    vec3 dielectricF, metalF;
+    gltfFresnel(g, 0.5 * len, dielectricF, metalF);
+    vec3 f = (1.0 - g.metallic) * (1.0 - g.transmission) * g.diffuseTransmission / PI * (1.0 - dielectricF) *
+             g.diffuseTransmissionColor;
+    float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
+    if (sheenMax > 0.0) {
+        float scaleO = clamp(1.0 - sheenMax * sheenAlbedo(wo.z, g.sheenRoughness), 0.0, 1.0);
+        float scaleI = clamp(1.0 - sheenMax * sheenAlbedo(w.z, g.sheenRoughness), 0.0, 1.0);
+        f *= min(scaleO, scaleI);
+    }
+    if (g.clearcoat > 0.0) f *= 1.0 - g.clearcoat * max(coatFresnel(wo.z), coatFresnel(w.z));
     return f;
 }
 
@@ -121,7 +146,9 @@ vec3 gltfAlbedo(GltfInputs g, float cosO) {
         dielectricSpec += (filmDielectric - plainDielectric) * (terms.x + terms.y);
         metal += (filmMetal - plainMetal) * (terms.x + terms.y);
     }
-    vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * g.baseColor + dielectricSpec;
+    // A constant ambient lights the other side as much: the diffuse transmission passes its share.
+    vec3 diffuse = (1.0 - g.diffuseTransmission) * g.baseColor + g.diffuseTransmission * g.diffuseTransmissionColor;
+    vec3 dielectric = (1.0 - dielectricSpec) * (1.0 - g.transmission) * diffuse + dielectricSpec;
     vec3 albedo = mix(dielectric, metal, g.metallic);
     float sheenMax = max(g.sheenColor.r, max(g.sheenColor.g, g.sheenColor.b));
     if (sheenMax > 0.0) {

@@ -20,6 +20,8 @@ std::vector<MapUse> gltfMaps(const Material& m) {
         {"MAP_CLEARCOAT", &m.clearcoat.texture},
         {"MAP_CLEARCOAT_ROUGHNESS", &m.clearcoat.roughnessTexture},
         {"MAP_TRANSMISSION", &m.transmission.texture},
+        {"MAP_DIFFUSE_TRANSMISSION", &m.diffuseTransmission.texture},
+        {"MAP_DIFFUSE_TRANSMISSION_COLOR", &m.diffuseTransmission.colorTexture},
         {"MAP_ANISOTROPY", &m.anisotropy.texture},
         {"MAP_IRIDESCENCE", &m.iridescence.texture},
         {"MAP_IRIDESCENCE_THICKNESS", &m.iridescence.thicknessTexture},
@@ -65,6 +67,8 @@ const std::vector<GltfUniform>& gltfUniformTable() {
         {"clearcoatFactor", 1, [](M m) { return glm::vec4(m.clearcoat.factor); }},
         {"clearcoatRoughnessFactor", 1, [](M m) { return glm::vec4(m.clearcoat.roughness); }},
         {"transmissionFactor", 1, [](M m) { return glm::vec4(m.transmission.factor); }},
+        {"diffuseTransmissionFactor", 1, [](M m) { return glm::vec4(m.diffuseTransmission.factor); }},
+        {"diffuseTransmissionColorFactor", 3, [](M m) { return glm::vec4(m.diffuseTransmission.color, 0.0f); }},
         {"iridescenceFactor", 1, [](M m) { return glm::vec4(m.iridescence.factor); }},
         {"iridescenceIor", 1, [](M m) { return glm::vec4(m.iridescence.ior); }},
         // KHR_materials_iridescence's minimum and maximum thickness, nm
@@ -85,6 +89,7 @@ std::string gltfUniformsGlsl() {
 std::string gltfProgramPreamble(const Material& m, bool shadows) {
     std::string defines = mapDefines(gltfMaps(m)) + alphaDefines(m);
     if (m.unlit) defines += "#define UNLIT\n";
+    if (m.diffuseTransmission.factor > 0.0f) defines += "#define DIFFUSE_TRANSMISSION\n";
     if (shadows) defines += "#define PREVIEW_SHADOWS\n";
     return defines + gltfUniformsGlsl();
 }

@@ -29,7 +29,8 @@ std::vector<MapUse> gltfMaps(const Material& material);
 // ALPHA_MASK or ALPHA_BLEND as the material's alphaMode says (nothing when opaque).
 std::string alphaDefines(const Material& material);
 
-// MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, PREVIEW_SHADOWS
+// MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, DIFFUSE_TRANSMISSION
+// (a diffuse transmission factor above 0), PREVIEW_SHADOWS
 // when `shadows`, and the factors' declarations.
 std::string gltfProgramPreamble(const Material& material, bool shadows);
 // shaders/mesh.vert + the gltf.frag chain, compiled with `preamble`.

@@ -18,6 +18,7 @@ struct NamedMaterial {
     const char* name;
     Material material;
     std::vector<TextureImage> textures;
+    bool backlit = false;  // a third light behind the square, which only a transmitting material passes
 };
 void PrintTo(const NamedMaterial& m, std::ostream* os) { *os << m.name; }
 
@@ -109,6 +110,31 @@ std::vector<NamedMaterial> cases() {
     beetle.iridescence.thicknessTexture.mipmaps = false;
     all.push_back({"iridescence_metal_thickness_texture", beetle,
                    {texture4x4([](int x, int y) { return glm::u8vec4(0, 17 * (x + 4 * y), 0, 255); })}});
+
+    // KHR_materials_diffuse_transmission, lit from behind as well: a leaf, a curtain under sheen
+    // and a clearcoat, and the factor (A) and colour (RGB, sRGB) from textures.
+    Material leaf = dielectric({0.2f, 0.5f, 0.1f}, 0.5f);
+    leaf.diffuseTransmission.factor = 0.6f;
+    leaf.diffuseTransmission.color = {0.7f, 0.9f, 0.2f};
+    all.push_back({"diffuse_transmission_backlit", leaf, {}, true});
+    Material curtain = dielectric({0.8f, 0.7f, 0.6f}, 0.7f);
+    curtain.diffuseTransmission.factor = 1.0f;
+    curtain.sheen.color = {0.5f, 0.5f, 0.5f};
+    curtain.sheen.roughness = 0.4f;
+    curtain.clearcoat.factor = 0.5f;
+    curtain.clearcoat.roughness = 0.3f;
+    curtain.ior = 1.4f;
+    all.push_back({"diffuse_transmission_sheen_clearcoat_backlit", curtain, {}, true});
+    Material printed = dielectric({0.6f, 0.6f, 0.6f}, 0.6f);
+    printed.diffuseTransmission.factor = 0.9f;
+    printed.diffuseTransmission.texture.image = 0;
+    printed.diffuseTransmission.colorTexture.image = 0;
+    printed.diffuseTransmission.colorTexture.srgb = true;
+    all.push_back({"diffuse_transmission_textures_backlit", printed,
+                   {texture4x4([](int x, int y) {
+                       return glm::u8vec4(60 * x + 40, 200 - 40 * y, 120, 255 - 50 * ((x + y) % 4));
+                   })},
+                   true});
     return all;
 }
 
@@ -118,6 +144,13 @@ TEST_P(GltfGlslVsCore, DirectLightingMatchesCoreWithinBounds) {
     SceneDescription scene = flatScene(GetParam().material);
     scene.textures = GetParam().textures;
     scene.environment.color = glm::vec3(0.3f, 0.0f, 0.3f);
+    if (GetParam().backlit) {
+        PunctualLight behind;
+        behind.type = PunctualLight::Type::Point;
+        behind.position = {0.4f, -1.2f, -0.3f};
+        behind.intensity = glm::vec3(4.0f, 3.5f, 3.0f);
+        scene.lights.push_back(behind);
+    }
     const Image gpu = previewRadiance(scene, kWidth, kHeight, true, false);
     std::vector<uint8_t> onSurface;
     const Image cpu = coreDirectLighting(scene, kWidth, kHeight, 1, &onSurface);

@@ -164,6 +164,8 @@ TEST(GltfUniforms, UploadedValuesReadBackPerEntry) {
     m.clearcoat.factor = 0.61f;
     m.clearcoat.roughness = 0.62f;
     m.transmission.factor = 0.71f;
+    m.diffuseTransmission.factor = 0.72f;
+    m.diffuseTransmission.color = {0.73f, 0.74f, 0.75f};
     m.iridescence.factor = 0.81f;
     m.iridescence.ior = 1.31f;
     m.iridescence.thicknessMin = 120.0f;
