@@ -7,6 +7,7 @@
 #include "frame.h"
 #include "piecewise_constant.h"
 #include "sampling.h"
+#include "spherical_triangle.h"
 
 namespace woven {
 
@@ -93,10 +94,28 @@ glm::vec3 TriangleLight::radiance(const glm::vec2& bary) const {
 
 glm::vec3 TriangleLight::power() const { return L * area * kPi * (twoSided ? 2.0f : 1.0f); }
 
+float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
+    // Area sampling's density in solid angle, d^2 / (cos_light area), varies little over the
+    // triangle while ref is far from its plane compared with its size (Cycles' test), and is
+    // then as good and cheaper; nearer, it grows without bound towards the edges.
+    const float height = glm::dot(n, ref - a);
+    if (height * height >= longestEdge2) return 0.0f;
+    const float solidAngle = triangleSolidAngle(a, b, c, ref);
+    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+}
+
 std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
     if (!(area > 0.0f)) return std::nullopt;
     LightLiSample s;
-    const glm::vec2 bary = sampleTriangleBarycentrics(u);
+    const float solidAngle = solidAngleSampled(ref);
+    glm::vec2 bary;
+    if (solidAngle > 0.0f) {
+        const auto sampled = sampleSphericalTriangle(a, b, c, ref, solidAngle, u);
+        if (!sampled) return std::nullopt;
+        bary = *sampled;
+    } else {
+        bary = sampleTriangleBarycentrics(u);
+    }
     s.pLight = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
     s.nLight = n;
     const glm::vec3 toLight = s.pLight - ref;
@@ -105,15 +124,18 @@ std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const
     s.wi = toLight / std::sqrt(dist2);
     const float cosLight = std::abs(glm::dot(n, s.wi));
     if (!(cosLight > 0.0f)) return std::nullopt;
-    s.pdf = dist2 / (cosLight * area);
+    s.pdf = solidAngle > 0.0f ? 1.0f / solidAngle : dist2 / (cosLight * area);
     s.L = twoSided || glm::dot(n, -s.wi) > 0.0f ? radiance(bary) : glm::vec3(0.0f);
     return s;
 }
 
 float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
+    if (!(area > 0.0f)) return 0.0f;
+    const float solidAngle = solidAngleSampled(ref);
+    if (solidAngle > 0.0f) return 1.0f / solidAngle;
     const glm::vec3 toLight = pLight - ref;
     const float cosLight = std::abs(glm::dot(nLight, glm::normalize(wi)));
-    if (!(cosLight > 0.0f) || !(area > 0.0f)) return 0.0f;
+    if (!(cosLight > 0.0f)) return 0.0f;
     return glm::dot(toLight, toLight) / (cosLight * area);
 }
 
@@ -298,6 +320,8 @@ Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     const glm::vec3 cr = glm::cross(b - a, c - a);
     t.area = 0.5f * glm::length(cr);
     t.n = t.area > 0.0f ? glm::normalize(cr) : glm::vec3(0.0f);
+    const glm::vec3 e0 = b - a, e1 = c - b, e2 = a - c;
+    t.longestEdge2 = std::max({glm::dot(e0, e0), glm::dot(e1, e1), glm::dot(e2, e2)});
     t.L = L;
     t.twoSided = twoSided;
     return Light(t);

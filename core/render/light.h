@@ -54,10 +54,13 @@ struct SpotCone {
 
 // An emissive triangle: radiance L from its front face (and its back when twoSided), or the
 // emission of a material (which must outlive the light) at the corners' texture coordinates.
+// sampleLi() samples it by area from afar and by solid angle (spherical_triangle.h) near its
+// plane.
 struct TriangleLight {
     static constexpr bool kDeltaPosition = false, kDeltaDirection = false, kInfinite = false;
     glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
     float area = 0.0f;
+    float longestEdge2 = 0.0f;  // squared
     bool twoSided = false;
     const SurfaceMaterial* emitter = nullptr;  // else the constant L
     std::array<TexCoords, 3> corners;
@@ -69,6 +72,8 @@ struct TriangleLight {
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
     std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
     void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+    // The solid angle sampleLi() samples uniformly from ref, 0 where it samples by area.
+    float solidAngleSampled(const glm::vec3& ref) const;
 };
 
 // Intensity I (W/sr) from a point, the same every way.
