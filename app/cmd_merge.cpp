@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "atomic_file.h"
+#include "frame_denoise.h"
 #include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
@@ -151,7 +152,7 @@ void checkFiles(const std::vector<std::string>& inputs, const std::string& out) 
     }
 }
 
-void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int64_t> expected) {
+void runMerge(const std::vector<std::string>& inputs, const std::string& out, std::optional<int64_t> expected, bool denoise) {
     checkFiles(inputs, out);
     // One part in memory at a time: the sum is added up as they are read, and the ranges are
     // checked once all are known (a merge with overlapping parts writes nothing).
@@ -201,6 +202,12 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         throw std::runtime_error(out + " not written: " + describe(missing) + " missing (no part holds them); wrote " +
                                  partial + " from " + describe(held));
     }
+    // The merged frame is denoised once, from the merged sums: the beauty the union's render
+    // would have, its noisy one kept beside it. The parts' own beauties (denoised or not) are not read.
+    if (denoise && !sum.passSums.empty()) {
+        sum.noisy = sum.image;
+        sum.image = denoiseBeauty(sum.image, sum.passes());
+    }
     writeExr(out, sum, ExrPrecision::Float);
     // A partial frame left by an earlier merge that found parts missing is out of date now.
     std::filesystem::remove(partial);
@@ -214,6 +221,7 @@ void addMergeCommand(CLI::App& app) {
         std::vector<std::string> inputs;
         std::string out;
         std::optional<int64_t> expected;
+        bool denoise = true;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
@@ -225,7 +233,10 @@ void addMergeCommand(CLI::App& app) {
                     "the missing samples are named, the parts there are go to OUT.partial.exr and the exit status "
                     "is 1")
         ->check(sampleIndexCheck(1, kSampleIndexLimit));
-    cmd->callback([o] { runMerge(o->inputs, o->out, o->expected); });
+    cmd->add_flag("--denoise,!--no-denoise", o->denoise,
+                  "denoise the merged frame, as woven render denoises a frame (default: on; the noisy beauty is kept "
+                  "as noisy.R/G/B)");
+    cmd->callback([o] { runMerge(o->inputs, o->out, o->expected, o->denoise); });
 }
 
 }  // namespace woven

@@ -47,7 +47,7 @@ void runHeadless(const PreviewCommandOptions& o) {
         RenderSettings settings = frameSettings(scene, o.frame);
         settings.camera = camera;
         FinalRender render;
-        render.start(scene, settings);
+        render.start(scene, settings, o.frame.denoise);
         render.wait();
         if (!render.error().empty()) throw std::runtime_error(render.error());
         const FilmImage film = *render.latest();

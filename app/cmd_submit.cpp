@@ -112,6 +112,7 @@ SlurmJob planJob(const SubmitOptions& o) {
     job.woven = fs::read_symlink("/proc/self/exe").string();
     job.tasks = o.tasks;
     job.renderArguments = o.renderArguments;
+    job.denoise = o.render.frame.denoise;
     job.sbatch = o.sbatch;
 
     // The first frame's scene, with the --woven edits: bad options fail here rather than in
@@ -284,10 +285,11 @@ void addSubmitCommand(CLI::App& app) {
                     "(default: OUT's name with .slurm)");
     // The render options, recorded as typed before CLI11's transforms rewrite them (--tone-map's
     // names become numbers), so that every task gets exactly what was given here; except --spp,
-    // the frame's samples per pixel, which the tasks split, and --noise-threshold, which each
-    // task gets for its share (SlurmJob::noiseThreshold).
+    // the frame's samples per pixel, which the tasks split, --noise-threshold, which each task
+    // gets for its share (SlurmJob::noiseThreshold), and --denoise, which is the merge's
+    // (SlurmJob::denoise).
     for (CLI::Option* option : addRenderOptions(*cmd, o->render)) {
-        if (option->check_lname("spp") || option->check_lname("noise-threshold")) continue;
+        if (option->check_lname("spp") || option->check_lname("noise-threshold") || option->check_lname("denoise")) continue;
         // A flag is passed on as itself: `woven render` reads "--strict true" as a stray argument.
         const bool flag = option->get_expected_max() == 0;
         option->transform([o, name = option->get_name(), flag](std::string value) {

@@ -75,7 +75,7 @@ std::string SlurmJob::renderScript() const {
          "first=$((spp * t / tasks))\n"
          "end=$((spp * (t + 1) / tasks))\n"
       << "exec " << shellQuote(woven) << " render \"${scenes[frame]}\" --first-sample \"$first\" --spp \"$((end - first))\" \\\n"
-      << "    -o \"${parts[frame]}/" << kPartPrefix << "${first}-$((end - 1)).exr\" --noise-threshold "
+      << "    -o \"${parts[frame]}/" << kPartPrefix << "${first}-$((end - 1)).exr\" --no-denoise --noise-threshold "
       << taskNoiseThreshold();
     if (!renderArguments.empty()) s << " \\\n    " << shellCommand(renderArguments);
     s << "\n";
@@ -94,7 +94,8 @@ std::string SlurmJob::mergeScript() const {
          "set -euo pipefail\n"
          "shopt -s nullglob extglob\n"
       << frameArray("outs", frames, &ClusterFrame::out) << frameArray("parts", frames, &ClusterFrame::parts) << "frame=${SLURM_ARRAY_TASK_ID:-0}\n"
-      << "exec " << shellQuote(woven) << " merge --expect-samples " << spp << " -o \"${outs[frame]}\" \\\n"
+      << "exec " << shellQuote(woven) << " merge --expect-samples " << spp << (denoise ? "" : " --no-denoise")
+      << " -o \"${outs[frame]}\" \\\n"
       << "    \"${parts[frame]}\"/" << kPartPrefix << "+([0-9])-+([0-9]).exr\n";
     return s.str();
 }

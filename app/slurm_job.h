@@ -38,6 +38,9 @@ struct SlurmJob {
     // noiseThreshold as relative error where one render of all the samples would stop.
     double noiseThreshold = 0.0;
     std::vector<std::string> renderArguments;  // given to every task's woven render as they are
+    // The merged frame is denoised (woven merge's --denoise), once; the tasks never denoise
+    // their parts, whose beauties the merge does not read.
+    bool denoise = true;
     SbatchOptions sbatch;
 
     int renderTasks() const { return int(frames.size()) * tasks; }

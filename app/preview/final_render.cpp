@@ -3,11 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "frame_denoise.h"
+
 namespace woven {
 
 FinalRender::~FinalRender() { cancel(); }
 
-void FinalRender::start(const SceneDescription& scene, const RenderSettings& settings) {
+void FinalRender::start(const SceneDescription& scene, const RenderSettings& settings, bool denoise) {
     cancel();
     cancel_ = false;
     running_ = true;
@@ -21,7 +23,7 @@ void FinalRender::start(const SceneDescription& scene, const RenderSettings& set
         error_.clear();
     }
     auto shared = std::make_shared<const SceneDescription>(scene);
-    worker_ = std::thread([this, shared, settings] {
+    worker_ = std::thread([this, shared, settings, denoise] {
         try {
             RenderJob job(shared, settings);
             {
@@ -35,6 +37,13 @@ void FinalRender::start(const SceneDescription& scene, const RenderSettings& set
                 snapshot_ = std::move(image);
                 fresh_ = true;
             });
+            if (denoise && !cancel_) {
+                FilmImage image = job.snapshot();
+                denoiseFilm(image);
+                std::lock_guard<std::mutex> lock(mutex_);
+                snapshot_ = std::move(image);
+                fresh_ = true;
+            }
         } catch (const std::exception& e) {
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = e.what();

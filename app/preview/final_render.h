@@ -20,8 +20,10 @@ public:
     FinalRender(const FinalRender&) = delete;
     FinalRender& operator=(const FinalRender&) = delete;
 
-    // Cancels a running render first. The scene is copied: the user may keep editing.
-    void start(const SceneDescription& scene, const RenderSettings& settings);
+    // Cancels a running render first. The scene is copied: the user may keep editing. With
+    // `denoise`, the last snapshot of a render that ran to its end is denoised (frame_denoise.h),
+    // as `woven render` denoises its frame.
+    void start(const SceneDescription& scene, const RenderSettings& settings, bool denoise);
     void cancel();
     // Blocks until the job has finished (or was cancelled).
     void wait();

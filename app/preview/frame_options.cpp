@@ -39,6 +39,9 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_flag("--filter", o.filterRender,
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
+    command.add_flag("--denoise,!--no-denoise", o.denoise,
+                     "denoise the final frame, guided by its albedo, normal and depth passes (the EXR keeps the "
+                     "noisy beauty as noisy.R/G/B; default: on; --no-denoise: the beauty as rendered)");
     command.add_flag("--allow-any-path", o.load.anyPath,
                      "let a glTF file's buffers and images come from anywhere, not only from its own folder");
     command.add_flag("--strict", o.load.strict,

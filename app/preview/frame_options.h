@@ -26,6 +26,7 @@ struct FrameOptions {
     std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
     bool noFilter = false;               // the preview point-samples the weave everywhere (preview's --no-filter)
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
+    bool denoise = true;                 // the final frame's beauty is denoised (--no-denoise: not; frame_denoise.h)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     LoadOptions load;                    // --allow-any-path, --strict
@@ -34,7 +35,7 @@ struct FrameOptions {
 };
 
 // Registers --width --height --spp --integrator --seed --sampler --max-depth --noise-threshold --filter
-// --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
+// --denoise/--no-denoise --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

@@ -46,7 +46,7 @@ void PreviewWindow::drawRenderControls() {
     if (ui::Button("Render")) {
         RenderSettings settings = render_;
         settings.camera = camera_.camera();
-        final_.start(scene(), settings);
+        final_.start(scene(), settings, options_.frame.denoise);
         finalImage_.reset();
         finalDone_ = false;
         showFinal_ = true;
