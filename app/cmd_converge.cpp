@@ -1,8 +1,10 @@
 // `woven converge`: error against a converged reference versus render time, per integrator, with
-// the weave filter on and off and adaptive sampling at each noise threshold asked for. It answers
-// "which integrator, and how long for a given error" on a user's own scene, checks that
-// `--integrator auto` picks the efficient one, and measures what the weave filter and adaptive
-// sampling gain (less noise) and cost (bias: the reference is unfiltered and uniformly sampled).
+// the weave filter on and off, adaptive sampling at each noise threshold asked for and the
+// denoiser on and off. It answers "which integrator, and how long for a given error" on a user's
+// own scene, checks that `--integrator auto` picks the efficient one, and measures what the weave
+// filter, adaptive sampling and the denoiser gain (less noise) and cost (bias: the reference is
+// unfiltered, uniformly sampled and not denoised). The denoiser's rows are the same renders as the
+// rows without it, denoised, their time the render's plus the denoiser's.
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -18,6 +20,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "frame_denoise.h"
 #include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
@@ -42,6 +45,7 @@ struct ConvergeOptions {
     std::vector<std::string> integrators = integratorNames();
     std::vector<std::string> filters{"on", "off"};  // the weave filter (--filter is "on")
     std::vector<double> thresholds{0.0, kDefaultNoiseThreshold};  // adaptive sampling; 0: off
+    std::vector<std::string> denoise{"on", "off"};                  // the denoiser (woven render's default is on)
     double referenceTime = 300;
     int width = 320, height = 240;
     int threads = 0;
@@ -66,6 +70,23 @@ ErrorMetrics compare(const Image& image, const Image& reference) {
         }
     mean /= 3.0 * n;
     return {rel / (3.0 * n), std::sqrt(sq / (3.0 * n)) / std::max(mean, 1e-12)};
+}
+
+// The energy of an image's fine detail: the sum over pixels (the border left out) and channels of
+// the squared difference between a pixel and the mean of the 3 x 3 pixels around it. Against the
+// reference's it tells whether a variant keeps the weave's threads (about 1), blurs them (below)
+// or adds noise (above).
+double detailEnergy(const Image& image) {
+    double sum = 0.0;
+    for (int y = 1; y + 1 < image.height; ++y)
+        for (int x = 1; x + 1 < image.width; ++x) {
+            glm::vec3 mean(0.0f);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) mean += image.at(x + dx, y + dy);
+            const glm::vec3 d = image.at(x, y) - mean / 9.0f;
+            sum += double(glm::dot(d, d));
+        }
+    return sum;
 }
 
 struct Timed {
@@ -161,19 +182,23 @@ void plot(const std::string& csv, const std::string& png, const std::string& tit
         std::cerr << "converge: gnuplot not available, wrote " << csv << " only\n";
 }
 
-// One integrator with the filter on or off and a noise threshold, as a row of the tables and a
-// line of the plot.
+// One integrator with the filter on or off, a noise threshold and the denoiser on or off, as a
+// row of the tables and a line of the plot.
 struct Variant {
     std::string integrator;
     bool filter;
     double threshold;  // 0: uniform sampling
+    bool denoise;
     std::string name() const {
         std::ostringstream n;
         n << integrator << (filter ? "-filter" : "");
         if (threshold > 0.0) n << "-adaptive" << threshold;
+        if (denoise) n << "-denoised";
         return n.str();
     }
 };
+
+std::string onOff(bool on) { return on ? "on" : "off"; }
 
 std::string adaptiveLabel(double threshold) {
     if (threshold <= 0.0) return "off";
@@ -236,16 +261,19 @@ void runConverge(const ConvergeOptions& o) {
     const std::string stem = fs::path(o.scene).stem().string();
     const Image ref = reference(scene, o, stem);
 
-    std::vector<Variant> variants;
+    std::vector<Variant> variants;  // the denoised ones right after the same render's undenoised ones
     for (const std::string& filter : o.filters)
         for (double threshold : o.thresholds)
-            for (const std::string& integrator : o.integrators) variants.push_back({integrator, filter == "on", threshold});
+            for (const std::string& integrator : o.integrators)
+                for (const std::string& denoise : o.denoise) variants.push_back({integrator, filter == "on", threshold, denoise == "on"});
+    const double referenceDetail = detailEnergy(ref);
 
     const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
     std::ofstream csv(csvPath);
-    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold\n";
-    std::cout << "| integrator | filter | adaptive | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) |\n"
-              << "|---|---|---|---:|---:|---:|---:|---:|\n";
+    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold,denoise,detail\n";
+    std::cout << "| integrator | filter | adaptive | denoise | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) | "
+                 "fine detail / reference's |\n"
+              << "|---|---|---|---|---:|---:|---:|---:|---:|---:|\n";
     struct Runs {
         std::vector<std::pair<double, double>> squaredError;  // (seconds, rel. RMSE^2)
         std::vector<double> relMse;                            // per budget
@@ -254,20 +282,35 @@ void runConverge(const ConvergeOptions& o) {
     };
     std::map<std::string, Runs> runs;
     uint64_t seed = 1;
+    std::map<std::pair<std::string, size_t>, Timed> rendered;  // (render's variant, budget): denoised and not share it
     for (const Variant& v : variants)
-        for (double budget : o.budgets) {
-            const Timed t = renderFor(scene, o, v.integrator, budget, seed++, v.filter, v.threshold);
-            const ErrorMetrics e = compare(t.film.radiance, ref);
-            const double efficiency = 1.0 / (e.relMse * t.seconds);
+        for (size_t b = 0; b < o.budgets.size(); ++b) {
+            Variant undenoised = v;
+            undenoised.denoise = false;
+            const auto key = std::make_pair(undenoised.name(), b);
+            if (rendered.find(key) == rendered.end())
+                rendered.emplace(key, renderFor(scene, o, v.integrator, o.budgets[b], seed++, v.filter, v.threshold));
+            const Timed& t = rendered.at(key);
+            Image image = t.film.radiance;
+            double seconds = t.seconds;
+            if (v.denoise) {
+                const auto start = std::chrono::steady_clock::now();
+                image = denoiseBeauty(t.film.radiance, t.film.passes());
+                seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            }
+            const ErrorMetrics e = compare(image, ref);
+            const double efficiency = 1.0 / (e.relMse * seconds);
             const double spp = meanSpp(t.film);
-            csv << v.name() << "," << t.seconds << "," << spp << "," << e.relMse << "," << e.relRmse << ","
-                << efficiency << "," << v.integrator << "," << (v.filter ? "on" : "off") << "," << v.threshold << "\n";
+            const double detail = detailEnergy(image) / referenceDetail;
+            csv << v.name() << "," << seconds << "," << spp << "," << e.relMse << "," << e.relRmse << "," << efficiency << ","
+                << v.integrator << "," << onOff(v.filter) << "," << v.threshold << "," << onOff(v.denoise) << "," << detail << "\n";
             std::cout << "| " << v.integrator << (v.integrator == autoIntegrator().name ? " (" + t.integrator + ")" : "") << " | "
-                      << (v.filter ? "on" : "off") << " | " << adaptiveLabel(v.threshold) << " | " << std::fixed
-                      << std::setprecision(2) << t.seconds << " | " << std::setprecision(1) << spp << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
-                      << e.relRmse << " | " << efficiency << " |\n" << std::defaultfloat << std::flush;
+                      << onOff(v.filter) << " | " << adaptiveLabel(v.threshold) << " | " << onOff(v.denoise) << " | " << std::fixed
+                      << std::setprecision(2) << seconds << " | " << std::setprecision(1) << spp << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
+                      << e.relRmse << " | " << efficiency << " | " << std::fixed << std::setprecision(2) << detail << " |\n"
+                      << std::defaultfloat << std::flush;
             Runs& r = runs[v.name()];
-            r.squaredError.emplace_back(t.seconds, e.relRmse * e.relRmse);
+            r.squaredError.emplace_back(seconds, e.relRmse * e.relRmse);
             r.relMse.push_back(e.relMse);
             r.efficiency = efficiency;
             r.picked = t.integrator;
@@ -278,21 +321,22 @@ void runConverge(const ConvergeOptions& o) {
     plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
 
     std::cout << "\nTime to a relative RMSE, from the fit e^2(t) = B + V/t over the runs above (B: what does not "
-                 "fall with time: the filter's bias, the error at which adaptive sampling stops a pixel, and the reference's "
-                 "noise)\n\n"
-              << "| integrator | filter | adaptive | time to 5% (s) | time to 1% (s) | floor sqrt(B) |\n"
-              << "|---|---|---|---:|---:|---:|\n";
+                 "fall with time: the filter's and the denoiser's bias, the error at which adaptive sampling stops a pixel, "
+                 "and the reference's noise)\n\n"
+              << "| integrator | filter | adaptive | denoise | time to 5% (s) | time to 1% (s) | floor sqrt(B) |\n"
+              << "|---|---|---|---|---:|---:|---:|\n";
     std::map<std::string, ErrorFit> fits;
     for (const Variant& v : variants) {
         const ErrorFit f = fits[v.name()] = fitError(runs[v.name()].squaredError);
-        std::cout << "| " << v.integrator << " | " << (v.filter ? "on" : "off") << " | " << adaptiveLabel(v.threshold)
-                  << " | " << seconds(f.timeTo(0.05))
+        std::cout << "| " << v.integrator << " | " << onOff(v.filter) << " | " << adaptiveLabel(v.threshold) << " | "
+                  << onOff(v.denoise) << " | " << seconds(f.timeTo(0.05))
                   << " | " << seconds(f.timeTo(0.01)) << " | " << std::setprecision(3) << std::sqrt(f.B) << " |\n";
     }
 
-    // The default settings against the filter and adaptive sampling off, one at a time, from the
-    // same run: relMSE at equal time (per budget).
+    // The default settings against the filter, adaptive sampling and the denoiser off, one at a
+    // time, from the same run: relMSE at equal time (per budget).
     const bool defaultFilter = std::find(o.filters.begin(), o.filters.end(), "off") == o.filters.end();
+    const bool defaultDenoise = std::find(o.denoise.begin(), o.denoise.end(), "on") != o.denoise.end();
     const double defaultThreshold =
         std::find(o.thresholds.begin(), o.thresholds.end(), kDefaultNoiseThreshold) != o.thresholds.end()
             ? kDefaultNoiseThreshold
@@ -323,24 +367,31 @@ void runConverge(const ConvergeOptions& o) {
             std::cout << "\n";
         }
     };
-    compareVariants("The weave filter: off (before) against on (after), uniform sampling; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, 0.0}; },
-                    [&](const std::string& i) { return Variant{i, true, 0.0}; }, true);
+    compareVariants("The weave filter: off (before) against on (after), uniform sampling, not denoised; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return Variant{i, true, 0.0, false}; }, true);
+    compareVariants("The weave filter under the denoiser: off (before) against on (after), T = " +
+                        std::to_string(defaultThreshold).substr(0, 4) + ", denoised; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, true}; },
+                    [&](const std::string& i) { return Variant{i, true, defaultThreshold, true}; }, true);
     compareVariants("Adaptive sampling: uniform (before) against T = " + std::to_string(defaultThreshold).substr(0, 4) +
-                        " (after), filter off",
-                    [&](const std::string& i) { return Variant{i, false, 0.0}; },
-                    [&](const std::string& i) { return Variant{i, false, defaultThreshold}; }, false);
-    if (defaultFilter)  // else the table above is this one
-        compareVariants("The default settings (after) against --noise-threshold 0 without the filter (before)",
-                        [&](const std::string& i) { return Variant{i, false, 0.0}; },
-                        [&](const std::string& i) { return Variant{i, defaultFilter, defaultThreshold}; }, false);
+                        " (after), filter off, not denoised",
+                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, false}; }, false);
+    compareVariants("The denoiser: off (before) against on (after), filter off, T = " +
+                        std::to_string(defaultThreshold).substr(0, 4) + "; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, false}; },
+                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, true}; }, true);
+    compareVariants("The default settings (after) against --noise-threshold 0 --no-denoise without the filter (before)",
+                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return Variant{i, defaultFilter, defaultThreshold, defaultDenoise}; }, false);
 
     // Which integrator is most efficient with the default settings, and what auto picks.
     std::string winner;
     double top = -1;
     for (const IntegratorKind& kind : integratorKinds()) {
         if (!kind.make) continue;
-        const auto r = runs.find(Variant{kind.name, defaultFilter, defaultThreshold}.name());
+        const auto r = runs.find(Variant{kind.name, defaultFilter, defaultThreshold, defaultDenoise}.name());
         if (r != runs.end() && r->second.efficiency > top) {
             top = r->second.efficiency;
             winner = kind.name;
@@ -348,7 +399,7 @@ void runConverge(const ConvergeOptions& o) {
     }
     if (winner.empty()) return;
     const std::string autoName = autoIntegrator().name;
-    const auto autoRuns = runs.find(Variant{autoName, defaultFilter, defaultThreshold}.name());
+    const auto autoRuns = runs.find(Variant{autoName, defaultFilter, defaultThreshold, defaultDenoise}.name());
     const std::string picked = autoRuns != runs.end()
                                    ? autoRuns->second.picked
                                    : renderFor(scene, o, autoName, 0.5, 99, defaultFilter, defaultThreshold).integrator;
@@ -362,8 +413,9 @@ void addConvergeCommand(CLI::App& app) {
     auto o = std::make_shared<ConvergeOptions>();
     CLI::App* cmd = app.add_subcommand(
         "converge",
-        "Error against an unfiltered, uniformly sampled converged reference versus time for each integrator, with "
-        "the weave filter on and off and adaptive sampling off and on (tables, CSV, log-log PNG)");
+        "Error against an unfiltered, uniformly sampled, undenoised converged reference versus time for each "
+        "integrator, with the weave filter on and off, adaptive sampling off and on and the denoiser on and off "
+        "(tables, CSV, log-log PNG)");
     cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
     const CLI::Validator timeCheck = finiteNumber(kMinSeconds, kMaxSeconds);
     cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',')->check(timeCheck);
@@ -371,6 +423,9 @@ void addConvergeCommand(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::IsMember(integratorNames()));
     cmd->add_option("--filter", o->filters, "the weave filter: on, off or on,off (both, compared)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--denoise", o->denoise, "the denoiser: on, off or on,off (both, from the same renders)")
         ->delimiter(',')
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--noise-thresholds", o->thresholds,
