@@ -1,11 +1,15 @@
-// World-space meshes: the scene description's vertices are already in world space. Attributes
-// a mesh lacks are zero (uv1, tangent) or white (colour).
+// A mesh's vertices placed in world space by instanceMatrix: an instanced mesh's copy's matrix
+// (gpu_mesh.h), the identity for any other mesh, whose vertices are already there (the identity
+// changes no value). Normals go by the inverse transpose, tangents by the matrix, the handedness
+// turns with a mirroring copy, as core places a copy's hit (render_scene.cpp's hitCorners).
+// Attributes a mesh lacks are zero (uv1, tangent) or white (colour).
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
 layout(location = 3) in vec2 uv1;
 layout(location = 4) in vec4 color;
 layout(location = 5) in vec4 tangent;
+layout(location = 6) in mat4 instanceMatrix;  // locations 6 to 9
 
 uniform mat4 viewProjection;
 
@@ -17,11 +21,12 @@ out vec4 vColor;
 out vec4 vTangent;
 
 void main() {
-    vPosition = position;
-    vNormal = normal;
+    mat3 linear = mat3(instanceMatrix);
+    vPosition = (instanceMatrix * vec4(position, 1.0)).xyz;
+    vNormal = transpose(inverse(linear)) * normal;
     vUv = uv;
     vUv1 = uv1;
     vColor = color;
-    vTangent = tangent;
-    gl_Position = viewProjection * vec4(position, 1.0);
+    vTangent = vec4(linear * tangent.xyz, determinant(linear) < 0.0 ? -tangent.w : tangent.w);
+    gl_Position = viewProjection * vec4(vPosition, 1.0);
 }

@@ -16,6 +16,13 @@ void attribute(GLuint location, int size, size_t offset) {
     glEnableVertexAttribArray(location);
     glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offset));
 }
+
+// The instance matrices from instance `first` on, a column per location.
+void instanceMatrices(GLsizei first) {
+    for (GLuint c = 0; c < 4; ++c)
+        glVertexAttribPointer(GpuMesh::kInstanceMatrixLocation + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
+                              reinterpret_cast<void*>(size_t(first) * sizeof(glm::mat4) + c * sizeof(glm::vec4)));
+}
 }  // namespace
 
 GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
@@ -44,10 +51,29 @@ GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
     attribute(3, 2, offsetof(Vertex, uv1));
     attribute(4, 4, offsetof(Vertex, color));
     attribute(5, 4, offsetof(Vertex, tangent));
+    if (mesh.instances) {
+        std::vector<glm::mat4> matrices;
+        matrices.reserve(mesh.instances->size());
+        for (const glm::mat4& m : *mesh.instances)
+            if (glm::determinant(glm::mat3(m)) >= 0.0f) matrices.push_back(m);
+        kept_ = GLsizei(matrices.size());
+        for (const glm::mat4& m : *mesh.instances)
+            if (glm::determinant(glm::mat3(m)) < 0.0f) matrices.push_back(m);
+        mirrored_ = GLsizei(matrices.size()) - kept_;
+        glGenBuffers(1, &instanceBuffer_);
+        glBindBuffer(GL_ARRAY_BUFFER, instanceBuffer_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(matrices.size() * sizeof(glm::mat4)), matrices.data(), GL_STATIC_DRAW);
+        for (GLuint c = 0; c < 4; ++c) {
+            glEnableVertexAttribArray(kInstanceMatrixLocation + c);
+            glVertexAttribDivisor(kInstanceMatrixLocation + c, 1);
+        }
+        instanceMatrices(0);
+    }
     glBindVertexArray(0);
 }
 
 GpuMesh::~GpuMesh() {
+    glDeleteBuffers(1, &instanceBuffer_);
     glDeleteBuffers(1, &indexBuffer_);
     glDeleteBuffers(1, &vertexBuffer_);
     glDeleteVertexArrays(1, &vao_);
@@ -55,7 +81,22 @@ GpuMesh::~GpuMesh() {
 
 void GpuMesh::draw() const {
     glBindVertexArray(vao_);
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    if (!instanceBuffer_) {
+        // A disabled attribute reads the context's current value, which the VAO does not keep.
+        for (GLuint c = 0; c < 4; ++c)
+            glVertexAttrib4f(kInstanceMatrixLocation + c, c == 0, c == 1, c == 2, c == 3);
+        glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    } else {
+        if (kept_) glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, kept_);
+        if (mirrored_) {
+            glBindBuffer(GL_ARRAY_BUFFER, instanceBuffer_);
+            instanceMatrices(kept_);
+            glFrontFace(GL_CW);
+            glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, mirrored_);
+            glFrontFace(GL_CCW);
+            instanceMatrices(0);
+        }
+    }
     glBindVertexArray(0);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // One scene mesh in GPU buffers: interleaved position, normal, both uv sets, colour and tangent
 // (zeros where the mesh has none, white for colour: the shader then falls back to the geometric
-// normal and one weave element).
+// normal and one weave element). An instanced mesh (Mesh::instances) also keeps its copies'
+// matrices, one per instance (mesh.vert's instanceMatrix), and is drawn by one instanced draw per
+// handedness; any other has the identity there, which places each vertex exactly where it is.
 #include <epoxy/gl.h>
 
 #include "scene_description.h"
@@ -18,9 +20,15 @@ public:
     void draw() const;
     int material() const { return material_; }
 
+    // The attribute locations mesh.vert and shadow_depth.vert read the instance's matrix from.
+    static constexpr GLuint kInstanceMatrixLocation = 6;
+
 private:
-    GLuint vao_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0;
+    GLuint vao_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, instanceBuffer_ = 0;
     GLsizei indexCount_ = 0;
+    // Instanced: the copies that keep the winding first, then the mirrored ones, whose front is
+    // clockwise on screen (the glTF rule for a negative determinant).
+    GLsizei kept_ = 0, mirrored_ = 0;
     int material_ = -1;
 };
 

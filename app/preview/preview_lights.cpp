@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "environment_mapping.h"
+#include "mesh_instances.h"
 
 namespace woven {
 
@@ -167,8 +168,15 @@ PreviewLights PreviewLights::fromScene(const SceneDescription& scene) {
         if (m.material < 0 || m.material >= int(scene.materials.size())) continue;
         const Material& mat = scene.materials[m.material];
         if (mat.emission == glm::vec3(0.0f)) continue;
-        for (const glm::uvec3& t : m.triangles)
-            emissive.push_back({m.positions[t.x], m.positions[t.y], m.positions[t.z], mat.emission, mat.doubleSided});
+        // Each copy of an instanced emitter where it is placed, a mirrored one's winding swapped
+        // so that its front (the side a single-sided light shines to) stays the glTF rule's.
+        for (size_t i = 0; i < copies(m); ++i) {
+            const glm::mat4 place = m.instances ? (*m.instances)[i] : glm::mat4(1.0f);
+            const auto at = [&](unsigned v) { return m.instances ? glm::vec3(place * glm::vec4(m.positions[v], 1.0f)) : m.positions[v]; };
+            const bool mirrored = glm::determinant(glm::mat3(place)) < 0.0f;
+            for (const glm::uvec3& t : m.triangles)
+                emissive.push_back({at(t.x), at(mirrored ? t.z : t.y), at(mirrored ? t.y : t.z), mat.emission, mat.doubleSided});
+        }
     }
     const int budget = kMaxLights - int(out.lights.size());
     if (emissive.empty() || budget <= 0) return out;

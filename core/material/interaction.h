@@ -23,6 +23,7 @@ struct SurfaceHit {
     // when degenerate; an arbitrary tangent frame around ng when the mesh has no UVs).
     glm::vec3 dpdu{0.0f}, dpdv{0.0f};
     int mesh = -1, triangle = -1;
+    int instance = -1;  // which of an instanced mesh's copies (Mesh::instances), or -1
     int material = -1;
     float pError = 0.0f;  // bound on p's rounding error along ng: how far spawnRay lifts the origin
     // The pixel's footprint at this point in TEXCOORD_0: how uv changes from one pixel to the next

@@ -8,7 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include "frame.h"
 #include "light_sampler.h"
+#include "mesh_instances.h"
 #include "sampling.h"
 #include "scene_loader.h"
 #include "scene_validation.h"
@@ -81,6 +83,8 @@ CullContext intersectContext(std::optional<Cull> cull) {
 // function of the path, so a frame stays a pure function of (scene, seed, sample range).
 float transparencyRandom(const RTCFilterFunctionNArguments* args, unsigned i) {
     uint64_t h = mix64(uint64_t(RTCHitN_primID(args->hit, args->N, i)) * 0x9e3779b97f4a7c15ULL);
+    // Copies of an instanced mesh see the ray in their own space; their instance keeps them apart.
+    if (args->context->instID[0] != RTC_INVALID_GEOMETRY_ID) h = mix64(h ^ args->context->instID[0]);
     const float values[] = {RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i),
                             RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
                             RTCRayN_dir_z(args->ray, args->N, i), RTCRayN_org_x(args->ray, args->N, i)};
@@ -120,6 +124,12 @@ struct RenderScene::Impl {
 
     std::optional<SceneMaterials> materials;
     std::vector<HitFilter> hitFilters;  // per mesh, referenced by Embree
+    // An instanced mesh's triangles are one Embree scene that each of its copies instances; the
+    // copies have the top scene's IDs from meshes.size() on (the other meshes keep their index).
+    struct InstanceRef {
+        unsigned mesh, instance;
+    };
+    std::vector<InstanceRef> instanceRefs;  // by instance ID - meshes.size()
 
     std::vector<Light> lights;
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
@@ -135,9 +145,52 @@ struct RenderScene::Impl {
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
 
     void buildGeometry();
+    RTCGeometry triangleGeometry(size_t m);
+    void addInstances(size_t m, RTCGeometry triangles);
     void buildLights();
-    SurfaceHit makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t, const glm::vec3& dir) const;
+    SurfaceHit makeHit(unsigned meshIndex, int instance, unsigned prim, float b1, float b2, float t,
+                       const glm::vec3& dir) const;
 };
+
+namespace {
+// A hit triangle's corners in world space: the mesh's own, or an instanced copy's placed by its
+// matrix as the loader places a node's mesh (gltf_loader.cpp's addPrimitive: normals by the
+// inverse transpose, tangents by the matrix and made perpendicular again, the winding swapped
+// under a mirroring matrix), so that a copy shades as the same mesh expanded into the world would.
+struct Corners {
+    glm::uvec3 tri;  // the vertex indices in the world's winding
+    float b1, b2;    // the hit's barycentrics in that winding
+    glm::vec3 p[3];
+    glm::vec3 n[3];  // where the mesh has normals
+    glm::vec4 t[3];  // where it has tangents
+};
+
+Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
+    Corners c;
+    c.tri = mesh.triangles[prim];
+    c.b1 = b1;
+    c.b2 = b2;
+    const glm::mat4* m = instance >= 0 ? &(*mesh.instances)[size_t(instance)] : nullptr;
+    const bool mirrored = m && glm::determinant(glm::mat3(*m)) < 0.0f;
+    if (mirrored) {
+        std::swap(c.tri.y, c.tri.z);
+        std::swap(c.b1, c.b2);
+    }
+    const glm::mat3 normalMatrix = m ? glm::transpose(glm::inverse(glm::mat3(*m))) : glm::mat3(1.0f);
+    for (int k = 0; k < 3; ++k) {
+        const unsigned v = c.tri[k];
+        c.p[k] = m ? glm::vec3(*m * glm::vec4(mesh.positions[v], 1.0f)) : mesh.positions[v];
+        if (!mesh.normals.empty()) c.n[k] = m ? glm::normalize(normalMatrix * mesh.normals[v]) : mesh.normals[v];
+        if (!mesh.tangents.empty()) {
+            const glm::vec4& t = mesh.tangents[v];
+            c.t[k] = m ? glm::vec4(Frame::fromNormalAndAxis(c.n[k], glm::mat3(*m) * glm::vec3(t)).x,
+                                   mirrored ? -t.w : t.w)
+                       : t;
+        }
+    }
+    return c;
+}
+}  // namespace
 
 void RenderScene::Impl::buildGeometry() {
     device = rtcNewDevice(nullptr);
@@ -155,33 +208,64 @@ void RenderScene::Impl::buildGeometry() {
     for (size_t m = 0; m < scene->meshes.size(); ++m) {
         const Mesh& mesh = scene->meshes[m];
         if (mesh.triangles.empty()) continue;
-        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), mesh.positions.size()));
-        auto* indices = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(glm::uvec3), mesh.triangles.size()));
-        if (!vertices || !indices) fail("mesh '" + mesh.name + "': Embree cannot allocate it: " + embreeMessage);
-        std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
-        std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
-        const SurfaceMaterial& material = (*materials)[mesh.material];
-        const bool singleSided = mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
-        hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided};
-        rtcSetGeometryUserData(geom, &hitFilters[m]);
-        // Only meshes whose material can let rays through pay for the geometry's filter.
-        if (material.mayPassThrough(mesh)) {
-            rtcSetGeometryIntersectFilterFunction(geom, rejectPassThrough);
-            rtcSetGeometryOccludedFilterFunction(geom, rejectPassThrough);
+        RTCGeometry geom = triangleGeometry(m);
+        if (mesh.instances) {
+            addInstances(m, geom);
+        } else {
+            rtcAttachGeometryByID(rtcScene, geom, unsigned(m));
+            rtcReleaseGeometry(geom);
         }
-        rtcCommitGeometry(geom);
-        rtcAttachGeometryByID(rtcScene, geom, unsigned(m));
-        rtcReleaseGeometry(geom);
-        for (const glm::vec3& p : mesh.positions) {
-            bounds.lo = glm::min(bounds.lo, p);
-            bounds.hi = glm::max(bounds.hi, p);
-        }
+        const MeshBox box = worldBox(mesh);
+        bounds.lo = glm::min(bounds.lo, box.lo);
+        bounds.hi = glm::max(bounds.hi, box.hi);
     }
     rtcCommitScene(rtcScene);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE) fail("Embree cannot build the scene: " + embreeMessage);
+}
+
+RTCGeometry RenderScene::Impl::triangleGeometry(size_t m) {
+    const Mesh& mesh = scene->meshes[m];
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), mesh.positions.size()));
+    auto* indices = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(glm::uvec3), mesh.triangles.size()));
+    if (!vertices || !indices) fail("mesh '" + mesh.name + "': Embree cannot allocate it: " + embreeMessage);
+    std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
+    std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
+    const SurfaceMaterial& material = (*materials)[mesh.material];
+    const bool singleSided = mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
+    hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided};
+    rtcSetGeometryUserData(geom, &hitFilters[m]);
+    // Only meshes whose material can let rays through pay for the geometry's filter.
+    if (material.mayPassThrough(mesh)) {
+        rtcSetGeometryIntersectFilterFunction(geom, rejectPassThrough);
+        rtcSetGeometryOccludedFilterFunction(geom, rejectPassThrough);
+    }
+    rtcCommitGeometry(geom);
+    return geom;
+}
+
+// The filters see an instanced copy's rays in the mesh's own space, where its winding is the
+// file's: a mirroring matrix turns both the ray and the front, so the cull's sign holds.
+void RenderScene::Impl::addInstances(size_t m, RTCGeometry triangles) {
+    RTCScene own = rtcNewScene(device);
+    rtcSetSceneFlags(own, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneBuildQuality(own, RTC_BUILD_QUALITY_HIGH);
+    rtcAttachGeometryByID(own, triangles, 0);
+    rtcReleaseGeometry(triangles);
+    rtcCommitScene(own);
+    const std::vector<glm::mat4>& placements = *scene->meshes[m].instances;
+    for (size_t i = 0; i < placements.size(); ++i) {
+        RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(instance, own);
+        rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &placements[i][0][0]);
+        rtcCommitGeometry(instance);
+        rtcAttachGeometryByID(rtcScene, instance, unsigned(scene->meshes.size() + instanceRefs.size()));
+        rtcReleaseGeometry(instance);
+        instanceRefs.push_back({unsigned(m), unsigned(i)});
+    }
+    rtcReleaseScene(own);  // its instances hold it
 }
 
 void RenderScene::Impl::buildLights() {
@@ -190,18 +274,23 @@ void RenderScene::Impl::buildLights() {
         const Mesh& mesh = scene->meshes[m];
         const SurfaceMaterial& material = (*materials)[mesh.material];
         if (!material.emits()) continue;
-        triangleLights[m].assign(mesh.triangles.size(), -1);
-        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const glm::uvec3 tri = mesh.triangles[t];
-            const std::array<TexCoords, 3> corners = {interpolateTexCoords(mesh, unsigned(t), 0.0f, 0.0f),
-                                                      interpolateTexCoords(mesh, unsigned(t), 1.0f, 0.0f),
-                                                      interpolateTexCoords(mesh, unsigned(t), 0.0f, 1.0f)};
-            Light light = Light::triangle(mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z],
-                                          material, corners);
-            if (!(light.power() != glm::vec3(0.0f))) continue;  // degenerate: never hit, never sampled
-            triangleLights[m][t] = int(lights.size());
-            lights.push_back(std::move(light));
-        }
+        // An instanced emitter's copies are each a light (by instance, then triangle).
+        const size_t n = mesh.triangles.size();
+        triangleLights[m].assign(copies(mesh) * n, -1);
+        for (size_t i = 0; i < copies(mesh); ++i)
+            for (size_t t = 0; t < n; ++t) {
+                const int instance = mesh.instances ? int(i) : -1;
+                const Corners c = hitCorners(mesh, instance, unsigned(t), 0.0f, 0.0f);
+                const std::array<TexCoords, 3> corners = {interpolateTexCoords(mesh, unsigned(t), 0.0f, 0.0f),
+                                                          interpolateTexCoords(mesh, unsigned(t), 1.0f, 0.0f),
+                                                          interpolateTexCoords(mesh, unsigned(t), 0.0f, 1.0f)};
+                const bool mirrored = c.tri != mesh.triangles[t];
+                Light light = Light::triangle(c.p[0], c.p[1], c.p[2], material,
+                                              mirrored ? std::array<TexCoords, 3>{corners[0], corners[2], corners[1]} : corners);
+                if (!(light.power() != glm::vec3(0.0f))) continue;  // degenerate: never hit, never sampled
+                triangleLights[m][i * n + t] = int(lights.size());
+                lights.push_back(std::move(light));
+            }
     }
     for (const PunctualLight& p : scene->lights) lights.push_back(Light::punctual(p));
     const Environment& env = scene->environment;
@@ -217,17 +306,20 @@ void RenderScene::Impl::buildLights() {
     lightSampler.emplace(lights);
 }
 
-SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b1, float b2, float t,
+SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, int instance, unsigned prim, float u, float v, float t,
                                       const glm::vec3& dir) const {
     const Mesh& mesh = scene->meshes[meshIndex];
-    const glm::uvec3 tri = mesh.triangles[prim];
+    const Corners c = hitCorners(mesh, instance, prim, u, v);
+    const glm::uvec3 tri = c.tri;
+    const float b1 = c.b1, b2 = c.b2;
     const float b0 = 1.0f - b1 - b2;
-    const glm::vec3 &p0 = mesh.positions[tri.x], &p1 = mesh.positions[tri.y], &p2 = mesh.positions[tri.z];
+    const glm::vec3 &p0 = c.p[0], &p1 = c.p[1], &p2 = c.p[2];
 
     SurfaceHit hit;
     hit.t = t;
     hit.mesh = int(meshIndex);
     hit.triangle = int(prim);
+    hit.instance = instance;
     hit.material = mesh.material;
     hit.p = b0 * p0 + b1 * p1 + b2 * p2;
     const glm::vec3 cr = glm::cross(p1 - p0, p2 - p0);
@@ -240,13 +332,13 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
 
     glm::vec3 nFile = hit.ng;  // the file's normal, unflipped: glTF's bitangent is built from it
     if (!mesh.normals.empty()) {
-        const glm::vec3 n = b0 * mesh.normals[tri.x] + b1 * mesh.normals[tri.y] + b2 * mesh.normals[tri.z];
+        const glm::vec3 n = b0 * c.n[0] + b1 * c.n[1] + b2 * c.n[2];
         const float len = glm::length(n);
         if (len > 0.0f && std::isfinite(len)) nFile = n / len;
     }
     hit.nsFlipped = glm::dot(nFile, hit.ng) < 0.0f;
     hit.ns = hit.nsFlipped ? -nFile : nFile;
-    hit.tex = interpolateTexCoords(mesh, prim, b1, b2);
+    hit.tex = interpolateTexCoords(mesh, prim, u, v);
 
     if (mesh.uvs.empty()) {
         // No UVs: tangents from an arbitrary frame around ng.
@@ -271,7 +363,7 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, unsigned prim, float b
     if (!mesh.tangents.empty()) {
         // Smoothly interpolated tangents keep an anisotropic highlight continuous across
         // triangles; the per-triangle dp/du would facet it.
-        const glm::vec4 &t0 = mesh.tangents[tri.x], &t1 = mesh.tangents[tri.y], &t2 = mesh.tangents[tri.z];
+        const glm::vec4 &t0 = c.t[0], &t1 = c.t[1], &t2 = c.t[2];
         glm::vec3 tangent = b0 * glm::vec3(t0) + b1 * glm::vec3(t1) + b2 * glm::vec3(t2);
         tangent -= glm::dot(tangent, nFile) * nFile;
         const float len = glm::length(tangent);
@@ -331,7 +423,10 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->rtcScene, &context.embree, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return impl_->makeHit(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.d);
+    if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID)
+        return impl_->makeHit(rh.hit.geomID, -1, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.d);
+    const Impl::InstanceRef& copy = impl_->instanceRefs[rh.hit.instID[0] - impl_->scene->meshes.size()];
+    return impl_->makeHit(copy.mesh, int(copy.instance), rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.d);
 }
 
 namespace {
@@ -355,9 +450,8 @@ Ray RenderScene::spawnRay(const SurfaceHit& from, const glm::vec3& d) const {
     // onto the far side of an edge where two walls meet (a box's corner seen from inside) would
     // otherwise start outside the closed surface and escape through the seam.
     if (from.mesh >= 0 && from.triangle >= 0 && from.mesh < int(impl_->scene->meshes.size())) {
-        const Mesh& mesh = impl_->scene->meshes[size_t(from.mesh)];
-        const glm::uvec3 t = mesh.triangles[size_t(from.triangle)];
-        const glm::vec3 toCentroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0f - from.p;
+        const Corners c = hitCorners(impl_->scene->meshes[size_t(from.mesh)], from.instance, unsigned(from.triangle), 0.0f, 0.0f);
+        const glm::vec3 toCentroid = (c.p[0] + c.p[1] + c.p[2]) / 3.0f - from.p;
         const float length = glm::length(toCentroid);
         if (length > offset) ray.o += toCentroid * (offset / length);
     }
@@ -387,7 +481,9 @@ const SceneMaterials& RenderScene::materials() const { return *impl_->materials;
 int RenderScene::lightIndex(const SurfaceHit& hit) const {
     if (hit.mesh < 0 || hit.mesh >= int(impl_->triangleLights.size())) return -1;
     const std::vector<int>& perTriangle = impl_->triangleLights[hit.mesh];
-    return perTriangle.empty() ? -1 : perTriangle[hit.triangle];
+    if (perTriangle.empty()) return -1;
+    const size_t triangles = impl_->scene->meshes[size_t(hit.mesh)].triangles.size();
+    return perTriangle[size_t(std::max(hit.instance, 0)) * triangles + size_t(hit.triangle)];
 }
 
 glm::vec3 RenderScene::emitted(const SurfaceHit& hit, const glm::vec3& w) const {
@@ -407,6 +503,13 @@ int RenderScene::sampleLight(float u, float* pmf) const {
 }
 
 float RenderScene::lightPmf(int index) const { return impl_->lightSampler ? impl_->lightSampler->pmf(index) : 0.0f; }
+
+RenderScene::GeometryCounts RenderScene::geometryCounts() const {
+    GeometryCounts counts;
+    for (const Mesh& mesh : impl_->scene->meshes) counts.triangles += mesh.triangles.size();
+    counts.instances = impl_->instanceRefs.size();
+    return counts;
+}
 
 const Bounds& RenderScene::bounds() const { return impl_->bounds; }
 const SceneDescription& RenderScene::description() const { return *impl_->scene; }

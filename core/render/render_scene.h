@@ -50,6 +50,13 @@ public:
     int sampleLight(float u, float* pmf) const;
     float lightPmf(int index) const;
 
+    // What Embree holds: each mesh's triangles once, and one instance per copy of an instanced
+    // mesh (Mesh::instances); an instanced scene's memory follows these, not the copies' triangles.
+    struct GeometryCounts {
+        size_t triangles = 0, instances = 0;
+    };
+    GeometryCounts geometryCounts() const;
+
     const Bounds& bounds() const;
     const SceneDescription& description() const;
 

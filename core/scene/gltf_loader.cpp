@@ -30,6 +30,7 @@
 #include "image_io.h"
 #include "light_limits.h"
 #include "mesh_attributes.h"
+#include "mesh_instances.h"
 #include "meshopt_decoding.h"
 #include "scene_loader.h"
 #include "woven_params_json.h"
@@ -45,8 +46,8 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_unlit", "KHR_materials_anisotropy", "WOVEN_fabric",
     "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp", "EXT_mesh_gpu_instancing",
     "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness", "KHR_materials_dispersion",
-};
     "KHR_materials_diffuse_transmission",
+};
 // Supported with an approximation that the user is told about once.
 const std::map<std::string, std::string> kApproximatedExtensions = {
     {"KHR_materials_volume", "rendered thin-walled: the attenuation applies, refraction does not"},
@@ -121,12 +122,6 @@ constexpr float kLumensPerWatt = 683.0f;
 // A camera's aspectRatio (width / height) outside [kMinCameraAspect, 1 / kMinCameraAspect] is
 // no picture anyone means: a line of pixels.
 constexpr double kMinCameraAspect = 1.0 / 64.0;
-
-// EXT_mesh_gpu_instancing is expanded into one world-space mesh per instance (Mesh is world
-// space for every consumer: Embree, lights, the preview, export), so the instances' triangles
-// cost what as many copies do. A file's instances x triangles beyond this (16 M: about 3 GiB of
-// vertices and BVH) is refused before anything is expanded.
-constexpr size_t kMaxInstancedTriangles = size_t(1) << 24;
 
 bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -463,34 +458,32 @@ private:
         // A node's weights override its mesh's; missing ones are 0.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         const std::vector<glm::mat4> joints = node.skin >= 0 ? GltfPrimitiveReader(model_, path_).skinMatrices(node.skin, nodeWorld_, nodeName) : std::vector<glm::mat4>{};
-        const std::optional<std::vector<glm::mat4>> instances = instanceMatrices(node, mesh, nodeName);
-        for (size_t k = 0; k < (instances ? instances->size() : 1); ++k) {
-            // An instance's TRS applies in the node's space; a skin, which ignores the node, is placed by it alone.
-            const glm::mat4 placement = instances ? (*instances)[k] : glm::mat4(1.0f);
-            std::vector<glm::mat4> placedJoints = joints;
-            for (glm::mat4& j : placedJoints) j = placement * j;
-            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-                const std::string name = nodeName + "/" + nameOr(mesh.name, "mesh", node.mesh) + "/" + std::to_string(p) +
-                                         (instances ? " instance " + std::to_string(k) : "");
-                try {
-                    addPrimitive(mesh.primitives[p], placedJoints, world * placement, weights, name);
-                } catch (const AccessorError& e) {
-                    fail("mesh '" + name + "': " + e.what());
-                }
+        std::shared_ptr<std::vector<glm::mat4>> instances = instanceMatrices(node, nodeName);
+        // An instanced mesh stays in its own space and each instance places it: world x TRS, or
+        // the TRS alone after a skin, which ignores the node (and, being linear, commutes with it).
+        if (instances && joints.empty())
+            for (glm::mat4& m : *instances) m = world * m;
+        const glm::mat4 transform = instances ? glm::mat4(1.0f) : world;
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const std::string name = nodeName + "/" + nameOr(mesh.name, "mesh", node.mesh) + "/" + std::to_string(p);
+            try {
+                addPrimitive(mesh.primitives[p], joints, transform, weights, name);
+            } catch (const AccessorError& e) {
+                fail("mesh '" + name + "': " + e.what());
             }
         }
         for (size_t m = first; m < scene_.meshes.size(); ++m) {
             scene_.meshes[m].meshName = nameOr(mesh.name, "mesh", node.mesh);
             scene_.meshes[m].nodePath = nodePath;
         }
+        if (instances) placeInstances(std::move(instances), first, nodeName);
     }
 
     // EXT_mesh_gpu_instancing's per-instance TRANSLATION, ROTATION (a quaternion, perhaps normalized
-    // integers) and SCALE as matrices, or none when the node is not instanced.
-    std::optional<std::vector<glm::mat4>> instanceMatrices(const tinygltf::Node& node, const tinygltf::Mesh& mesh,
-                                                           const std::string& nodeName) {
+    // integers) and SCALE as matrices in the node's space, or none when the node is not instanced.
+    std::shared_ptr<std::vector<glm::mat4>> instanceMatrices(const tinygltf::Node& node, const std::string& nodeName) {
         const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
-        if (it == node.extensions.end()) return std::nullopt;
+        if (it == node.extensions.end()) return nullptr;
         const std::string where = "node '" + nodeName + "': EXT_mesh_gpu_instancing";
         const tinygltf::Value& attributes = it->second.Get("attributes");
         if (!attributes.IsObject()) fail(where + " has no attributes object");
@@ -501,6 +494,12 @@ private:
             const tinygltf::Value& index = attributes.Get(semantics[a]);
             if (!index.IsInt() && !index.IsNumber()) continue;  // absent: identity
             const int accessor = index.IsInt() ? index.Get<int>() : int(index.GetNumberAsDouble());
+            // Before reading it: the accessor's count is what the limit bounds.
+            if (accessor >= 0 && size_t(accessor) < model_.accessors.size() &&
+                model_.accessors[size_t(accessor)].count > kMaxInstances - instances_)
+                fail(where + " " + semantics[a] + ": " + std::to_string(model_.accessors[size_t(accessor)].count) +
+                     " instances bring the file's past woven's limit of " + std::to_string(kMaxInstances) +
+                     " (docs/LIMITS.md)");
             try {
                 trs[a] = readAccessor(model_, accessor);
             } catch (const AccessorError& e) {
@@ -516,22 +515,8 @@ private:
                 if (!std::isfinite(v)) fail(where + " " + semantics[a] + " holds a NaN or infinite value");
         }
         if (count == size_t(-1)) fail(where + " names none of TRANSLATION, ROTATION and SCALE");
-        // Each primitive's triangles as its index (or vertex) count gives them, before any is read.
-        size_t triangles = 0;
-        for (const tinygltf::Primitive& primitive : mesh.primitives) {
-            const auto position = primitive.attributes.find("POSITION");
-            const int elements = primitive.indices >= 0 ? primitive.indices
-                                 : position != primitive.attributes.end() ? position->second : -1;
-            if (elements < 0 || size_t(elements) >= model_.accessors.size()) continue;
-            const size_t n = model_.accessors[size_t(elements)].count;
-            triangles += primitive.mode < 0 || primitive.mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : n;
-        }
-        if (triangles && count > (kMaxInstancedTriangles - instancedTriangles_) / triangles)
-            fail(where + ": " + std::to_string(count) + " instances of up to " + std::to_string(triangles) +
-                 " triangles bring the file's instanced triangles past woven's limit of " +
-                 std::to_string(kMaxInstancedTriangles) + " (instances are expanded into copies; docs/LIMITS.md)");
-        instancedTriangles_ += count * triangles;
-        std::vector<glm::mat4> matrices(count);
+        instances_ += count;
+        auto matrices = std::make_shared<std::vector<glm::mat4>>(count);
         for (size_t i = 0; i < count; ++i) {
             glm::vec3 t(0.0f), s(1.0f);
             glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
@@ -542,9 +527,44 @@ private:
                 r = glm::normalize(r);
             }
             if (trs[2].count) s = glm::vec3(trs[2].at(i, 0), trs[2].at(i, 1), trs[2].at(i, 2));
-            matrices[i] = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+            (*matrices)[i] = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
         }
         return matrices;
+    }
+
+    // Gives the node's primitives (scene_.meshes from `first`) their instances. One with a zero
+    // scale (glTF's way to hide a copy) draws nothing and has no inverse for Embree: dropped, in
+    // one warning for the node. One placed past the coordinate limit is refused, as a vertex is.
+    void placeInstances(std::shared_ptr<std::vector<glm::mat4>> instances, size_t first, const std::string& nodeName) {
+        MeshBox box;
+        for (size_t m = first; m < scene_.meshes.size(); ++m) {
+            const MeshBox own = ownBox(scene_.meshes[m]);
+            box.add(own.lo);
+            box.add(own.hi);
+        }
+        size_t kept = 0, flat = 0;
+        for (size_t i = 0; i < instances->size(); ++i) {
+            const glm::mat4& m = (*instances)[i];
+            if (const std::string problem = placementProblem(m, box); !problem.empty()) {
+                const bool finite = allFinite(glm::vec3(m[0])) && allFinite(glm::vec3(m[1])) &&
+                                    allFinite(glm::vec3(m[2])) && allFinite(glm::vec3(m[3]));
+                if (!finite || invertible(m))
+                    fail("node '" + nodeName + "': EXT_mesh_gpu_instancing instance " + std::to_string(i) + ": " + problem);
+                ++flat;
+                continue;
+            }
+            (*instances)[kept++] = m;
+        }
+        instances->resize(kept);
+        if (flat)
+            warn("node '" + nodeName + "': " + std::to_string(flat) + " of its " + std::to_string(flat + kept) +
+                 " EXT_mesh_gpu_instancing instances have a zero scale (or flattened axes) and are not drawn");
+        if (kept == 0) {
+            scene_.meshes.resize(first);
+            return;
+        }
+        const std::shared_ptr<const std::vector<glm::mat4>> shared = std::move(instances);
+        for (size_t m = first; m < scene_.meshes.size(); ++m) scene_.meshes[m].instances = shared;
     }
 
     void addPrimitive(const tinygltf::Primitive& primitive, const std::vector<glm::mat4>& joints, const glm::mat4& world,
@@ -671,7 +691,7 @@ private:
     EncodedImages encodedImages_;
     ImageSink imageSink_{&encodedImages_, &model_};
     std::vector<glm::mat4> nodeWorld_;
-    size_t instancedTriangles_ = 0;  // so far, against kMaxInstancedTriangles
+    size_t instances_ = 0;  // so far, against kMaxInstances
     DroppedTriangles degenerate_, duplicate_;
     SceneDescription scene_;
 };

@@ -4,18 +4,18 @@
 #include <cctype>
 #include <cmath>
 
+#include "mesh_instances.h"
 #include "scene_loader.h"
 
 namespace woven {
 
 SceneBox sceneBounds(const SceneDescription& scene) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const Mesh& m : scene.meshes)
-        for (const glm::vec3& p : m.positions)
-            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
+    for (const Mesh& m : scene.meshes) {
+        const MeshBox box = worldBox(m);
+        lo = glm::min(lo, box.lo);
+        hi = glm::max(hi, box.hi);
+    }
     if (!(lo.x <= hi.x)) return {glm::vec3(-0.5f), glm::vec3(0.5f)};
     return {lo, hi};
 }

@@ -123,6 +123,8 @@ void add(Hasher& h, const Mesh& m) {
     h.add(m.tangents);
     h.add(m.triangles);
     h.add(m.material);
+    // Only where there are instances, so that every other scene keeps its hash.
+    if (m.instances) h.add(*m.instances);
 }
 
 void add(Hasher& h, const TextureImage& t) {

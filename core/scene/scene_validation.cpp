@@ -1,6 +1,7 @@
 #include "scene_validation.h"
 
 #include "coordinate_limits.h"
+#include "mesh_instances.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -26,6 +27,15 @@ void validateScene(const SceneDescription& s) {
         if (!mesh.tangents.empty() && mesh.tangents.size() != n) fail(name + "tangent count differs from vertex count");
         if (mesh.material < -1 || mesh.material >= int(s.materials.size()))
             fail(name + "material " + std::to_string(mesh.material) + " does not exist");
+        if (mesh.instances) {
+            if (mesh.instances->size() > kMaxInstances)
+                fail(name + std::to_string(mesh.instances->size()) + " instances, past woven's limit of " +
+                     std::to_string(kMaxInstances) + " (docs/LIMITS.md)");
+            const MeshBox box = ownBox(mesh);
+            for (size_t i = 0; i < mesh.instances->size(); ++i)
+                if (const std::string problem = placementProblem((*mesh.instances)[i], box); !problem.empty())
+                    fail(name + "instance " + std::to_string(i) + ": " + problem);
+        }
         triangles += mesh.triangles.size();
     }
     if (triangles == 0) fail("no triangles to render");

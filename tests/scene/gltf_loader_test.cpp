@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "gltf_builder.h"
+#include "mesh_instances.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
@@ -213,27 +214,48 @@ TEST(GltfMeshes, GpuInstancingPlacesEveryInstanceInTheNodesSpace) {
     b.setScene({instancedQuads(b, translations, rotations, scales)});
     b.writeGltf(dir.file("instanced.gltf"));
     const SceneDescription scene = loadScene(dir.file("instanced.gltf"));
-    ASSERT_EQ(scene.meshes.size(), 9u);  // one copy per instance, as many triangles as 9 quads
+    // One mesh in its own space, placed 9 times: the triangles of one quad, not of 9.
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const Mesh& m = scene.meshes[0];
+    ASSERT_EQ(m.triangles.size(), 2u);
+    EXPECT_EQ(m.name, "node0/Quad/0");
+    EXPECT_EQ(m.nodePath, std::vector<std::string>{"node0"});  // woven by the node's name, every instance
+    ASSERT_TRUE(m.instances);
+    ASSERT_EQ(m.instances->size(), 9u);
+    const auto placed = [&](int i, int v) { return glm::vec3((*m.instances)[size_t(i)] * glm::vec4(m.positions[size_t(v)], 1.0f)); };
     for (int i = 0; i < 9; ++i) {
-        const Mesh& m = scene.meshes[size_t(i)];
-        ASSERT_EQ(m.triangles.size(), 2u);
-        EXPECT_EQ(m.name, "node0/Quad/0 instance " + std::to_string(i));
-        EXPECT_EQ(m.nodePath, std::vector<std::string>{"node0"});  // woven by the node's name, every instance
         if (i == 4) continue;
         // Corner (1,1,0) of instance i: its translation, then the node's (0,0,-5).
-        expectNear(m.positions[2], translations[size_t(i)] + glm::vec3(1, 1, -5));
+        expectNear(placed(i, 2), translations[size_t(i)] + glm::vec3(1, 1, -5));
     }
     // The centre: (1,0,0) scaled to (0.5,0,0), turned to (0,0.5,0), moved to (2,2.5,-5).
-    expectNear(scene.meshes[4].positions[1], {2, 2.5f, -5});
-    expectNear(scene.meshes[4].positions[2], {1.5f, 2.5f, -5});  // (1,1,0) -> (0.5,0.5) -> (-0.5,0.5)
-    for (const glm::vec3& n : scene.meshes[4].normals) expectNear(n, {0, 0, 1});
+    expectNear(placed(4, 1), {2, 2.5f, -5});
+    expectNear(placed(4, 2), {1.5f, 2.5f, -5});  // (1,1,0) -> (0.5,0.5) -> (-0.5,0.5)
+    for (const glm::vec3& n : m.normals) expectNear(n, {0, 0, 1});
     // The 9 quads do not overlap: each instance's bounds are apart from every other's.
     for (int i = 0; i < 9; ++i)
-        for (int j = i + 1; j < 9; ++j) {
-            const glm::vec3 a = scene.meshes[size_t(i)].positions[0] + scene.meshes[size_t(i)].positions[2];
-            const glm::vec3 c = scene.meshes[size_t(j)].positions[0] + scene.meshes[size_t(j)].positions[2];
-            EXPECT_GT(glm::length(a - c) / 2, 1.0f) << i << " and " << j;
-        }
+        for (int j = i + 1; j < 9; ++j)
+            EXPECT_GT(glm::length(placed(i, 0) + placed(i, 2) - placed(j, 0) - placed(j, 2)) / 2, 1.0f) << i << " and " << j;
+    // The world box holds every copy, and framing the scene without a camera sees them all.
+    const MeshBox box = worldBox(m);
+    expectNear(box.lo, {0, 0, -5});
+    expectNear(box.hi, {5, 5, -5});
+}
+
+// A zero SCALE hides a copy (glTF's way to leave one out): it is dropped, in one warning for the
+// node, since it has no inverse for Embree; a node whose copies are all hidden draws nothing.
+TEST(GltfMeshes, GpuInstancingDropsZeroScaledCopiesWithOneWarning) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec3> scales = {glm::vec3(1), glm::vec3(0), glm::vec3(1, 0, 1), glm::vec3(2)};
+    b.setScene({instancedQuads(b, std::vector<glm::vec3>(4), std::vector<glm::vec4>(4, glm::vec4(0, 0, 0, 1)), scales)});
+    b.writeGltf(dir.file("hidden.gltf"));
+    const SceneDescription scene = loadScene(dir.file("hidden.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.meshes[0].instances->size(), 2u);
+    EXPECT_FLOAT_EQ((*scene.meshes[0].instances)[1][0][0], 2.0f);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_THAT(scene.warnings[0], HasSubstr("node 'node0': 2 of its 4 EXT_mesh_gpu_instancing instances have a zero scale"));
 }
 
 TEST(GltfMeshes, GpuInstancingMistakesAndTheLimitNameTheNode) {
@@ -252,18 +274,25 @@ TEST(GltfMeshes, GpuInstancingMistakesAndTheLimitNameTheNode) {
         EXPECT_THAT(loadError(dir.file("zero.gltf")), HasSubstr("ROTATION 0 is a zero quaternion"));
     }
     {
-        // 4096 triangles (12288 one-byte indices) times 4097 instances: just past 2^24, refused
-        // from the counts before a triangle is read.
+        // One instance past the limit, refused from the accessor's count before it is read (a
+        // VEC3 accessor of kMaxInstances + 1 elements over a 12-byte view: the count alone).
         GltfBuilder b;
-        const std::vector<uint8_t> indices(12288, 0);
-        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(kTriangle)}}},
-                                    {"indices", b.addAccessor(indices.data(), indices.size(), test::kUnsignedByte, "SCALAR", indices.size())}});
+        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(kTriangle)}}}});
         b.useExtension("EXT_mesh_gpu_instancing", true);
-        const int t = b.addVec3(std::vector<glm::vec3>(4097));
+        const int t = b.addVec3(std::vector<glm::vec3>(1));
+        b.json()["accessors"][size_t(t)]["count"] = kMaxInstances + 1;
         b.setScene({b.addNode({{"mesh", mesh}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t}}}}}}}})});
         b.writeGltf(dir.file("many.gltf"));
         EXPECT_THAT(loadError(dir.file("many.gltf")),
-                    HasSubstr("4097 instances of up to 4096 triangles bring the file's instanced triangles past woven's limit of 16777216"));
+                    HasSubstr("node 'node0': EXT_mesh_gpu_instancing TRANSLATION: 4194305 instances bring the file's past "
+                              "woven's limit of 4194304"));
+    }
+    {
+        // A copy placed past the coordinate limit, as a vertex would be.
+        GltfBuilder b;
+        b.setScene({instancedQuads(b, {glm::vec3(0), glm::vec3(2e12f, 0, 0)}, {}, {})});
+        b.writeGltf(dir.file("far.gltf"));
+        EXPECT_THAT(loadError(dir.file("far.gltf")), HasSubstr("node 'node0': EXT_mesh_gpu_instancing instance 1: it places the mesh's box at"));
     }
 }
 
