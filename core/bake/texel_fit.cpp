@@ -47,6 +47,7 @@ void TexelSums::add(const std::optional<WovenShading>& shading) {
     const double ax = ggxAlphaForExponent(lobe.shape().ex), ay = ggxAlphaForExponent(lobe.shape().ey);
     spread += glm::outerProduct(glm::dvec2(n), glm::dvec2(n)) + 0.5 * ax * ax * glm::outerProduct(along, along) +
               0.5 * ay * ay * glm::outerProduct(across, across);
+    if (shading->transmission) transmitted += glm::dvec3(shading->transmission->lobe().transmittance());
 }
 
 TexelSums& TexelSums::operator+=(const TexelSums& o) {
@@ -56,6 +57,7 @@ TexelSums& TexelSums::operator+=(const TexelSums& o) {
     rs += o.rs;
     normal += o.normal;
     spread += o.spread;
+    transmitted += o.transmitted;
     return *this;
 }
 

@@ -19,6 +19,7 @@ struct TexelSums {
     double rs = 0.0;         //   its specular reflectance
     glm::dvec3 normal{0.0};  //   its bumped normal (tangent space: x = +u, y = +v, z = the surface's)
     glm::dmat2 spread{0.0};  //   n_xy n_xy^T plus its lobe's covariance of microfacet normals in the plane
+    glm::dvec3 transmitted{0.0};  //  its yarn's body transmittance T (yarn_transmission.h), 0 for opaque yarns
 
     // A point of the model: its shading at a flat surface with the tangent frame (+u, +v, n), or
     // nullopt where it is see-through.

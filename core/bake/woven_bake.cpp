@@ -177,9 +177,12 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
 
     const std::vector<TexelSums> sums = sampleTexels(model, size, extent, o.supersamples, o.progress);
     bool gaps = false;
-    double rsMin = 1.0, rsMax = 0.0;
+    double rsMin = 1.0, rsMax = 0.0, covered = 0.0;
+    glm::dvec3 transmitted(0.0);
     for (const TexelSums& s : sums) {
         gaps = gaps || s.covered < s.points;
+        covered += s.covered;
+        transmitted += s.transmitted;
         if (s.covered > 0.0) rsMin = std::min(rsMin, s.rs / s.covered), rsMax = std::max(rsMax, s.rs / s.covered);
     }
     std::vector<std::vector<TexelFit>> levels{fitAll(sums, size)};
@@ -222,6 +225,19 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     if (hasNoise(params))
         baked.notes.push_back("its colour noise never repeats: the bake holds the first " +
                               std::to_string(o.repeats) + " repeat(s) of it, tiled");
+    // The yarns' transmission (docs/MODEL_TRANSMISSION.md) as KHR_materials_diffuse_transmission:
+    // the light glTF's diffuse base passes, (1 - F) D colour, is the model's T (1 - R_s) at normal
+    // incidence, the mean over the covered points (the gaps stay alpha). D is T's largest channel,
+    // so the colour is at most 1; the far field's base scale below then takes up the (1 - D) that
+    // the diffuse reflection loses. Opaque yarns write no extension.
+    const glm::dvec3 meanTransmitted = covered > 0.0 ? transmitted / covered : glm::dvec3(0.0);
+    if (const double d = std::max({meanTransmitted.r, meanTransmitted.g, meanTransmitted.b}); d > 0.0) {
+        m.diffuseTransmission.factor = float(std::min(d, 1.0));
+        m.diffuseTransmission.color = glm::vec3(glm::clamp(meanTransmitted / d, 0.0, 1.0));
+        baked.notes.push_back("its yarns' transmission is baked as KHR_materials_diffuse_transmission, one factor and colour "
+                              "for the whole material and all of it diffuse: glTF has no forward (transmission_gloss) "
+                              "lobe and no texture per texel is written for it");
+    }
     // The factors no texel decides, from the far field; the base colour's scale goes into the textures.
     const FarFieldFit fit = fitFarField(params, m, baked.textures, baked.uvSize, o.sheen);
     m.specular = fit.specular;

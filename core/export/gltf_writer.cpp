@@ -243,6 +243,12 @@ private:
             texture(e, "thicknessTexture", t.thicknessTexture);
             extension(out, "KHR_materials_volume", e);
         }
+        if (const DiffuseTransmissionParams& d = m.diffuseTransmission; d.factor > 0.0f) {
+            json e = {{"diffuseTransmissionFactor", d.factor}, {"diffuseTransmissionColorFactor", vec(d.color)}};
+            texture(e, "diffuseTransmissionTexture", d.texture);
+            texture(e, "diffuseTransmissionColorTexture", d.colorTexture);
+            extension(out, "KHR_materials_diffuse_transmission", e);
+        }
         if (m.woven) extension(out, "WOVEN_fabric", paramsToJson(*m.woven));
         return out;
     }

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +82,36 @@ TEST(ExportCommand, TheExportedSatinPassesKhronossValidator) {
         EXPECT_EQ(v.errors, 0) << v.report;
         EXPECT_EQ(v.warnings, 0) << v.report;
     }
+}
+
+TEST(ExportCommand, YarnTransmissionIsWrittenAsDiffuseTransmissionAndPassesKhronossValidator) {
+    // A red satin whose yarns pass 80 % (MODEL_TRANSMISSION.md 1): T = t (1 - R_d) (R_d / max R_d)^2
+    // per channel, so the baked colour is red and the factor T's red, 0.8 (1 - 0.55) = 0.36,
+    // within the far field's mixing of both faces' yarns. Without transmission no extension.
+    TempDir dir;
+    const std::string scene = quoted(std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json");
+    const std::string red = R"("pattern": [9, 1, 3], "weft_color": [0.55, 0.12, 0.1], "warp_color": [0.55, 0.12, 0.1])";
+    const auto r = runWoven("export " + scene + " --woven 'Cloth={" + red + ", \"transmission\": 0.8}' --size 128 -o " +
+                            quoted(dir.file("sheer.gltf")) + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("baked as KHR_materials_diffuse_transmission"), std::string::npos) << r.out;
+    const SceneDescription sheer = loadGltf(dir.file("sheer.gltf"));
+    const auto cloth = std::find_if(sheer.materials.begin(), sheer.materials.end(), [](const Material& m) { return m.name == "Cloth"; });
+    ASSERT_NE(cloth, sheer.materials.end());
+    EXPECT_NEAR(cloth->diffuseTransmission.factor, 0.36f, 0.01f);
+    EXPECT_NEAR(cloth->diffuseTransmission.color.r, 1.0f, 1e-6f);
+    EXPECT_NEAR(cloth->diffuseTransmission.color.g, 0.8f * 0.88f * (0.12f / 0.55f) * (0.12f / 0.55f) / 0.36f, 0.01f);
+    EXPECT_EQ(cloth->alphaMode, AlphaMode::Opaque);  // a gap-free satin: alpha stays for gaps only
+    const auto opaque = runWoven("export " + scene + " --woven 'Cloth={" + red + "}' --size 128 -o " + quoted(dir.file("opaque.gltf")) + " 2>&1");
+    ASSERT_EQ(opaque.exitCode, 0) << opaque.out;
+    std::ifstream in(dir.file("opaque.gltf"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("KHR_materials_diffuse_transmission"), std::string::npos);
+    if (validator().empty()) return;
+    const Validation v = validate(dir.file("sheer.gltf"));
+    EXPECT_NE(v.report.find("code,message,severity,pointer"), std::string::npos) << "the validator did not run:\n" << v.report;
+    EXPECT_EQ(v.errors, 0) << v.report;
+    EXPECT_EQ(v.warnings, 0) << v.report;
 }
 
 TEST(ExportCommand, BakeWritesTheMapsAndASampleFileOtherToolsRead) {
