@@ -10,6 +10,7 @@
 #include <set>
 #include <tuple>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/quaternion.hpp>
 
@@ -83,8 +84,9 @@ private:
     }
 
     template <int N>
-    int floatAccessor(const std::vector<glm::vec<N, float>>& values, const char* type, bool bounds = false) {
-        json a = {{"bufferView", bufferView(values.data(), values.size() * sizeof(values[0]), kArrayBuffer)},
+    int floatAccessor(const std::vector<glm::vec<N, float>>& values, const char* type, bool bounds = false,
+                      int target = kArrayBuffer) {
+        json a = {{"bufferView", bufferView(values.data(), values.size() * sizeof(values[0]), target)},
                   {"componentType", kFloat}, {"count", values.size()}, {"type", type}};
         if (bounds) {
             glm::vec<N, float> lo(INFINITY), hi(-INFINITY);
@@ -116,11 +118,12 @@ private:
 
     // One node per node path the loader recorded (the hierarchy of names, identity transforms:
     // the meshes are in world space), holding one glTF mesh per (node, mesh name) with a
-    // primitive per woven Mesh. Returns the root nodes.
+    // primitive per woven Mesh; a node of an instanced mesh places its copies by
+    // EXT_mesh_gpu_instancing. Returns the root nodes.
     std::vector<int> meshNodes() {
         std::map<std::vector<std::string>, int> nodeOf;
         std::vector<int> roots;
-        std::map<std::pair<int, std::string>, int> meshOf;
+        std::map<std::tuple<int, std::string, const void*>, int> meshOf;
         for (const Mesh& mesh : scene_.meshes) {
             std::vector<std::string> path = mesh.nodePath.empty() ? std::vector<std::string>{mesh.name} : mesh.nodePath;
             int parent = -1;
@@ -136,7 +139,7 @@ private:
                 }
                 parent = it->second;
             }
-            const auto key = std::make_pair(parent, mesh.meshName);
+            const auto key = std::make_tuple(parent, mesh.meshName, static_cast<const void*>(mesh.instances.get()));
             auto m = meshOf.find(key);
             if (m == meshOf.end()) {
                 json gltfMesh = {{"primitives", json::array()}};
@@ -144,10 +147,44 @@ private:
                 doc_["meshes"].push_back(gltfMesh);
                 m = meshOf.emplace(key, int(doc_["meshes"].size()) - 1).first;
                 doc_["nodes"][size_t(parent)]["mesh"] = m->second;
+                if (mesh.instances)
+                    doc_["nodes"][size_t(parent)]["extensions"]["EXT_mesh_gpu_instancing"] = instancing(*mesh.instances);
             }
             doc_["meshes"][size_t(m->second)]["primitives"].push_back(primitive(mesh));
         }
         return roots;
+    }
+
+    // EXT_mesh_gpu_instancing's TRANSLATION, ROTATION and SCALE of each instance's matrix. A matrix
+    // that is no TRS (a shear, from a non-uniform scale above a rotation in the file's nodes) has
+    // no such form: it is written as its nearest TRS, and said once.
+    json instancing(const std::vector<glm::mat4>& matrices) {
+        std::vector<glm::vec3> t(matrices.size()), s(matrices.size());
+        std::vector<glm::vec4> r(matrices.size());
+        bool sheared = false;
+        for (size_t i = 0; i < matrices.size(); ++i) {
+            const glm::mat4& m = matrices[i];
+            const glm::mat3 linear(m);
+            glm::vec3 scale(glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2]));
+            if (glm::determinant(linear) < 0.0f) scale.x = -scale.x;  // a mirror as a negative scale
+            const glm::mat3 rotation(linear[0] / scale.x, linear[1] / scale.y, linear[2] / scale.z);
+            const glm::quat q = glm::normalize(glm::quat_cast(rotation));
+            const glm::mat3 back = glm::mat3_cast(q) * glm::mat3(glm::scale(glm::mat4(1.0f), scale));
+            for (int c = 0; c < 3; ++c) sheared |= glm::length(back[c] - linear[c]) > 1e-4f * glm::length(linear[c]);
+            t[i] = glm::vec3(m[3]);
+            r[i] = glm::vec4(q.x, q.y, q.z, q.w);
+            s[i] = scale;
+        }
+        if (sheared && !warnedShear_) {
+            warnedShear_ = true;
+            warnings_.push_back("EXT_mesh_gpu_instancing: instances sheared by their nodes' transforms are written as "
+                                "their nearest translation, rotation and scale");
+        }
+        used_.insert("EXT_mesh_gpu_instancing");
+        // Required: a viewer without it would draw one copy at the node, and the rest nowhere.
+        required_.insert("EXT_mesh_gpu_instancing");
+        return {{"attributes", {{"TRANSLATION", floatAccessor(t, "VEC3", false, 0)}, {"ROTATION", floatAccessor(r, "VEC4", false, 0)},
+                                {"SCALE", floatAccessor(s, "VEC3", false, 0)}}}};
     }
 
     json primitive(const Mesh& mesh) {
@@ -248,6 +285,13 @@ private:
             texture(e, "diffuseTransmissionTexture", d.texture);
             texture(e, "diffuseTransmissionColorTexture", d.colorTexture);
             extension(out, "KHR_materials_diffuse_transmission", e);
+        }
+        if (const IridescenceParams& i = m.iridescence; i.factor > 0.0f) {
+            json e = {{"iridescenceFactor", i.factor}, {"iridescenceIor", i.ior},
+                      {"iridescenceThicknessMinimum", i.thicknessMin}, {"iridescenceThicknessMaximum", i.thicknessMax}};
+            texture(e, "iridescenceTexture", i.texture);
+            texture(e, "iridescenceThicknessTexture", i.thicknessTexture);
+            extension(out, "KHR_materials_iridescence", e);
         }
         if (m.woven) extension(out, "WOVEN_fabric", paramsToJson(*m.woven));
         return out;
@@ -361,6 +405,7 @@ private:
 
     const SceneDescription& scene_;
     std::vector<std::string>& warnings_;
+    bool warnedShear_ = false;
     json doc_ = json::object();
     std::vector<unsigned char> bin_;
     std::set<std::string> used_, required_;

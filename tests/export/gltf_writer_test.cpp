@@ -5,6 +5,8 @@
 
 #include <filesystem>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gltf_loader.h"
 #include "gltf_writer.h"
 #include "scene_camera.h"
@@ -53,7 +55,16 @@ SceneDescription richScene() {
     c.meshName = "Lamp";
     c.nodePath = {"Root"};
     c.material = 1;
-    s.meshes = {a, b, c};
+    // Copies placed by EXT_mesh_gpu_instancing: moved, turned and scaled, and one mirrored.
+    Mesh d = b;
+    d.name = "Shelf/Crate/0";
+    d.meshName = "Crate";
+    d.nodePath = {"Shelf"};
+    d.instances = std::make_shared<const std::vector<glm::mat4>>(std::vector<glm::mat4>{
+        glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)),
+        glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1, 2, 0.5f))) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 2, 1)),
+        glm::translate(glm::mat4(1.0f), glm::vec3(-3, 0, 1)) * glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1))});
+    s.meshes = {a, b, c, d};
 
     Material m;
     m.name = "Rich";
@@ -90,6 +101,11 @@ SceneDescription richScene() {
     m.transmission.thickness = 0.1f;
     m.transmission.attenuationDistance = 2.0f;
     m.transmission.attenuationColor = {0.9f, 0.8f, 0.7f};
+    m.iridescence.factor = 0.8f;
+    m.iridescence.ior = 1.4f;
+    m.iridescence.thicknessMin = 150.0f;
+    m.iridescence.thicknessMax = 350.0f;
+    m.iridescence.thicknessTexture.image = 1;
     Material lamp;
     lamp.name = "Lamp";
     lamp.emission = {6.0f, 3.0f, 1.5f};  // above 1: the strength extension
@@ -150,6 +166,14 @@ void expectSameScene(const SceneDescription& got, const SceneDescription& want, 
         EXPECT_EQ(g.uvs1, w.uvs1);
         EXPECT_EQ(g.colors, w.colors);
         EXPECT_EQ(g.triangles, w.triangles);
+        ASSERT_EQ(bool(g.instances), bool(w.instances));
+        if (w.instances) {
+            ASSERT_EQ(g.instances->size(), w.instances->size());
+            for (size_t i = 0; i < w.instances->size(); ++i)
+                for (int c = 0; c < 4; ++c)
+                    for (int r = 0; r < 4; ++r)
+                        EXPECT_NEAR((*g.instances)[i][c][r], (*w.instances)[i][c][r], 1e-5f) << "instance " << i;
+        }
         if (w.material >= 0) {
             EXPECT_EQ(got.materials[size_t(g.material)].name, want.materials[size_t(w.material)].name);
         }
@@ -185,6 +209,11 @@ void expectSameScene(const SceneDescription& got, const SceneDescription& want, 
     EXPECT_FLOAT_EQ(g.transmission.thickness, w.transmission.thickness);
     EXPECT_FLOAT_EQ(g.transmission.attenuationDistance, w.transmission.attenuationDistance);
     EXPECT_EQ(g.transmission.attenuationColor, w.transmission.attenuationColor);
+    EXPECT_FLOAT_EQ(g.iridescence.factor, w.iridescence.factor);
+    EXPECT_FLOAT_EQ(g.iridescence.ior, w.iridescence.ior);
+    EXPECT_FLOAT_EQ(g.iridescence.thicknessMin, w.iridescence.thicknessMin);
+    EXPECT_FLOAT_EQ(g.iridescence.thicknessMax, w.iridescence.thicknessMax);
+    expectTextureRef(g.iridescence.thicknessTexture, w.iridescence.thicknessTexture, "iridescence thickness");
     expectTextureRef(g.baseColorTexture, w.baseColorTexture, "base colour");
     expectTextureRef(g.metallicRoughnessTexture, w.metallicRoughnessTexture, "metallic-roughness");
     expectTextureRef(g.normalTexture, w.normalTexture, "normal");
