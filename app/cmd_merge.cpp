@@ -77,6 +77,10 @@ std::string frameDifference(const Part& a, const Part& b) {
         differ("--integrator", x.integrator, y.integrator);
     if (x.maxDepth != y.maxDepth) differ("--max-depth", std::to_string(x.maxDepth), std::to_string(y.maxDepth));
     if (x.filterWeave != y.filterWeave) differ("--filter", x.filterWeave ? "on" : "off", y.filterWeave ? "on" : "off");
+    if (x.sampler != y.sampler) {
+        const auto name = [](const std::string& s) { return s.empty() ? std::string("unrecorded (an older woven)") : s; };
+        differ("--sampler", name(x.sampler), name(y.sampler));
+    }
     return text;
 }
 

@@ -28,7 +28,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_option("--seed", o.seed, "random seed");
     command.add_option("--sampler", o.sampler,
                        "sobol (Owen-scrambled Sobol points, converging faster) or independent (PCG numbers, as woven "
-                       "rendered before; default: sobol)")
+                       "rendered before; default: the scene's, else sobol)")
         ->check(CLI::IsMember(std::vector<std::string>(std::begin(kSamplerNames), std::end(kSamplerNames))));
     command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(CLI::Range(1, 1000));
     std::ostringstream threshold;
@@ -110,7 +110,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     if (o.spp > 0) settings.spp = o.spp;
     if (!o.integrator.empty()) settings.integrator = o.integrator;
     settings.seed = o.seed;
-    settings.sampler = samplerKind(o.sampler);
+    if (!o.sampler.empty()) settings.sampler = samplerKind(o.sampler);
     settings.maxDepth = o.maxDepth;
     if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
     settings.filterWeave = o.filterRender;

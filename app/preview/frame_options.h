@@ -21,7 +21,7 @@ struct FrameOptions {
     int width = 0, height = 0, spp = 0;  // 0: the scene's, else defaultRenderSettings()'
     std::string integrator;              // empty: the scene's, else auto
     uint64_t seed = 0;
-    std::string sampler = "sobol";       // --sampler: kSamplerNames
+    std::string sampler;                 // --sampler: kSamplerNames; empty: the scene's, else sobol
     int maxDepth = 8;
     std::optional<double> noiseThreshold;  // RenderSettings::noiseThreshold (0: off); none: the default
     bool noFilter = false;               // the preview point-samples the weave everywhere (preview's --no-filter)

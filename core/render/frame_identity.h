@@ -19,6 +19,9 @@ struct FrameIdentity {
     std::string integrator;
     int maxDepth = 0;
     bool filterWeave = false;
+    // samplerName() of the sampler its numbers came from: the same sample index is another
+    // sample under each. Empty in frames written before woven recorded it.
+    std::string sampler;
 };
 
 }  // namespace woven

@@ -12,6 +12,7 @@
 #include "atomic_file.h"
 #include "integrators.h"
 #include "opened_image.h"
+#include "sampler.h"
 
 namespace woven {
 
@@ -115,6 +116,7 @@ const char* const kSeedAttribute = "wovenSeed";
 const char* const kIntegratorAttribute = "wovenIntegrator";
 const char* const kMaxDepthAttribute = "wovenMaxDepth";
 const char* const kFilterAttribute = "wovenFilter";
+const char* const kSamplerAttribute = "wovenSampler";  // not in frames of woven before it recorded it
 
 std::string readFrameIdentity(const OIIO::ImageSpec& spec, std::optional<FrameIdentity>* frame) {
     const char* const names[] = {kSceneAttribute, kSeedAttribute, kIntegratorAttribute, kMaxDepthAttribute, kFilterAttribute};
@@ -136,6 +138,12 @@ std::string readFrameIdentity(const OIIO::ImageSpec& spec, std::optional<FrameId
     f.integrator = integrator.get_string();
     f.maxDepth = maxDepth.get_int();
     f.filterWeave = filter.get_int() != 0;
+    if (const OIIO::ParamValue* sampler = spec.find_attribute(kSamplerAttribute)) {
+        if (sampler->type() != OIIO::TypeString) return "the attribute wovenSampler must be a string";
+        f.sampler = sampler->get_string();
+        if (std::find(std::begin(kSamplerNames), std::end(kSamplerNames), f.sampler) == std::end(kSamplerNames))
+            return "has the attribute wovenSampler \"" + f.sampler + "\", a sampler woven does not have";
+    }
     // Merge names them in its messages: only what woven writes.
     const bool hex = f.scene.size() == 16 && f.scene.find_first_not_of("0123456789abcdef") == std::string::npos;
     if (!hex || !isIntegratorRecord(f.integrator) ||
@@ -316,6 +324,7 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         spec.attribute(kIntegratorAttribute, f->integrator);
         spec.attribute(kMaxDepthAttribute, f->maxDepth);
         spec.attribute(kFilterAttribute, int(f->filterWeave));
+        if (!f->sampler.empty()) spec.attribute(kSamplerAttribute, f->sampler);
     }
     const size_t pixelBytes = spec.pixel_bytes(true);
     std::vector<unsigned char> data(count * pixelBytes);

@@ -172,6 +172,13 @@ RenderSettings defaultRenderSettings(const SceneDescription& scene) {
                              scene.render.integrator + "\"");
         settings.integrator = scene.render.integrator;
     }
+    if (!scene.render.sampler.empty()) {
+        const auto* end = std::end(kSamplerNames);
+        if (std::find(std::begin(kSamplerNames), end, scene.render.sampler) == end)
+            throw SceneError(scene.source + ": render.sampler: must be "sobol" or "independent", not "" +
+                             scene.render.sampler + """);
+        settings.sampler = samplerKind(scene.render.sampler);
+    }
     return settings;
 }
 
@@ -263,7 +270,7 @@ FilmImage RenderJob::snapshot() const {
     const Impl& im = *impl_;
     image.samples = {im.settings.firstSample, im.film.passes()};
     image.frame = {im.sceneHash, im.settings.seed, integratorRecord(im.settings.integrator, im.integratorName),
-                   im.settings.maxDepth, im.settings.filterWeave};
+                   im.settings.maxDepth, im.settings.filterWeave, samplerName(im.settings.sampler)};
     return image;
 }
 

@@ -142,7 +142,7 @@ TEST_F(MergeCommand, RangesPast32BitsAreCheckedAndMergeBitForBit) {
     EXPECT_FALSE(fs::exists(file("x.exr")));
 }
 
-// Parts record the frame they are of: a different seed, integrator, depth, weave filter or
+// Parts record the frame they are of: a different seed, integrator, depth, weave filter, sampler or
 // scene (here a material changed by --woven) is refused, naming both files and what differs.
 TEST_F(MergeCommand, PartsOfDifferentFramesAreRefusedNamingWhatDiffers) {
     const std::string a = render("a.exr", 0, 1, kSmall);
@@ -151,6 +151,7 @@ TEST_F(MergeCommand, PartsOfDifferentFramesAreRefusedNamingWhatDiffers) {
         {"--width 12 --height 9 --seed 11 --integrator path", "--integrator bdpt in "},
         {"--width 12 --height 9 --seed 11 --integrator bdpt --max-depth 3", "--max-depth 8 in "},
         {"--width 12 --height 9 --seed 11 --integrator bdpt --filter", "--filter off in "},
+        {"--width 12 --height 9 --seed 11 --integrator bdpt --sampler independent", "--sampler sobol in "},
         {"--width 12 --height 9 --seed 11 --integrator bdpt --woven 'Cloth={\"weft_color\": [0.9, 0.1, 0.1]}'",
          "the scene (with its camera and materials) has the hash "},
     };

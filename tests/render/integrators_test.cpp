@@ -676,5 +676,23 @@ TEST(RenderJob, SceneFileIntegratorOutsideTheTableNamesTheFileAndKey) {
     EXPECT_EQ(defaultRenderSettings(scene).integrator, "bdpt");
 }
 
+TEST(RenderJob, SceneFileSamplerIsTakenAndAnUnknownOneNamesTheFileAndKey) {
+    SceneDescription scene;
+    scene.source = "dir/scene.json";
+    EXPECT_EQ(defaultRenderSettings(scene).sampler, SamplerKind::Sobol);
+    scene.render.sampler = "independent";
+    EXPECT_EQ(defaultRenderSettings(scene).sampler, SamplerKind::Independent);
+    scene.render.sampler = "halton";
+    try {
+        defaultRenderSettings(scene);
+        FAIL() << "render.sampler \"halton\" was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("dir/scene.json: render.sampler: must be \"sobol\" or \"independent\", not "
+                                             "\"halton\""),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace woven

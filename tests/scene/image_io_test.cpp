@@ -195,7 +195,7 @@ TEST(Exr, KeepsSampleRangesPast32BitsAndTheFrameIdentity) {
     exr.image = gradient(3, 2);
     exr.sampleCount.assign(6, 3.0f);
     exr.sampleSums.assign(18, ExactSum());
-    exr.frame = FrameIdentity{"0123456789abcdef", 0xfedcba9876543210ull, "auto: bdpt", 5, true};
+    exr.frame = FrameIdentity{"0123456789abcdef", 0xfedcba9876543210ull, "auto: bdpt", 5, true, "independent"};
     for (const SampleRange range : {SampleRange{2147483647, 3}, SampleRange{4294967295, 1},
                                     SampleRange{kSampleIndexLimit - 7, 7}}) {
         exr.samples = range;
@@ -210,6 +210,7 @@ TEST(Exr, KeepsSampleRangesPast32BitsAndTheFrameIdentity) {
         EXPECT_EQ(back.frame->integrator, "auto: bdpt");
         EXPECT_EQ(back.frame->maxDepth, 5);
         EXPECT_TRUE(back.frame->filterWeave);
+        EXPECT_EQ(back.frame->sampler, "independent");
     }
 
     // A range past 2^62, which woven never writes, is refused by name.

@@ -65,7 +65,7 @@ TEST_F(SceneFile, EveryKeyIsApplied) {
                      {"outer_cone_degrees", 30}},
                     {{"type", "directional"}, {"direction", {0, 0, -1}}, {"intensity", 3}}}},
         {"camera", {{"position", {0, 0, 5}}, {"target", {5, 0, 5}}, {"yfov_degrees", 30}}},
-        {"render", {{"width", 320}, {"height", 240}, {"spp", 64}, {"integrator", "bdpt"}}}};
+        {"render", {{"width", 320}, {"height", 240}, {"spp", 64}, {"integrator", "bdpt"}, {"sampler", "independent"}}}};
     const SceneDescription scene = loadScene(write(file));
     EXPECT_EQ(scene.source, dir.file("scene.json"));
     ASSERT_EQ(scene.materials.size(), 2u);
@@ -104,6 +104,7 @@ TEST_F(SceneFile, EveryKeyIsApplied) {
     EXPECT_EQ(scene.render.height, 240);
     EXPECT_EQ(scene.render.spp, 64);
     EXPECT_EQ(scene.render.integrator, "bdpt");
+    EXPECT_EQ(scene.render.sampler, "independent");
 }
 
 TEST_F(SceneFile, OnlyTheGltfIsRequired) {
@@ -136,6 +137,7 @@ TEST_F(SceneFile, ErrorsNameTheFileAndTheKey) {
     // An unknown render.integrator's name is refused where a render takes it
     // (RenderJob.SceneFileIntegratorOutsideTheTableNamesTheFileAndKey); its type here.
     EXPECT_THAT(error(with("render", {{"integrator", 3}})), HasSubstr("render.integrator: "));
+    EXPECT_THAT(error(with("render", {{"sampler", 3}})), HasSubstr("render.sampler: "));
     EXPECT_THAT(error(with("lights", {{{"type", "point"}}})), HasSubstr("lights[0]: a point light needs \"position\""));
     EXPECT_THAT(error(with("lights", {{{"type", "area"}}})), HasSubstr("lights[0].type: must be"));
     EXPECT_THAT(error(with("lights", {{{"type", "spot"}, {"position", {0, 0, 0}}, {"direction", {0, 0, 0}}}})),
