@@ -9,9 +9,9 @@
 namespace woven {
 
 // Instances a file may hold, over all its nodes. Each costs its 64-byte matrix in the scene and
-// an Embree instance (about 1 KiB with its share of the BVH, measured by bench/features's
-// instancing table), so the limit bounds them near 4 GiB: far beyond the forests and shop
-// shelves the extension is made for.
+// an Embree instance (about 400 bytes with its share of the BVH, bench/render/bench_instancing),
+// so the limit bounds them near 2 GiB: far beyond the forests and shop shelves the extension is
+// made for.
 constexpr size_t kMaxInstances = size_t(1) << 22;
 
 struct MeshBox {
