@@ -16,6 +16,13 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0
 glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
 float clamp01(float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 0.0f; }
 glm::vec3 mirrorThroughSurface(const glm::vec3& w) { return {w.x, w.y, -w.z}; }
+// Whether the specular lobe reflects anything: KHR_materials_specular's specularFactor 0 zeroes
+// F0 and F90, leaving a dielectric with no specular (the Lambertian walls of
+// bench/render/lambert_box.py), unless it is metal or a thin film over it reflects.
+bool specularReflects(float metallic, const glm::vec3& f0, float f90, float iridescence) {
+    return metallic > 0.0f || f90 > 0.0f || f0.x > 0.0f || f0.y > 0.0f || f0.z > 0.0f || iridescence > 0.0f;
+}
+
 // KHR_materials_anisotropy: the alpha along the anisotropy direction, mix(alpha, 1, strength^2).
 float anisotropicAlpha(float roughness, float strength) {
     const float alpha = clamp01(roughness) * clamp01(roughness), s = clamp01(strength);
@@ -65,7 +72,11 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     if (!(len > 1e-12f)) return glm::vec3(0.0f);
     const glm::vec3 h = H / len;
     const Fresnel F = fresnel(0.5f * len);  // wo.h = |wo + w| / 2 for unit vectors
-    const float specular = ggx_.D(h) * ggx_.visibility(wo, w);
+    // The GGX lobe (reflected, and mirrored for the thin-walled transmission), whose evaluation
+    // a Lambertian surface skips.
+    const float specular = transmits() || specularReflects(metallic_, f0_, f90_, iridescence_)
+                               ? ggx_.D(h) * ggx_.visibility(wo, w)
+                               : 0.0f;
     const glm::vec3& dielectricF = F.dielectric;
 
     glm::vec3 f;
@@ -109,8 +120,9 @@ GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
     c.sheen = sheen_.active() ? (1.0f - clearcoat_.reflectance(wo)) * sheen_.maxColor() * sheen_.albedo(wo.z) : 0.0f;
     c.clearcoat = clearcoat_.reflectance(wo);
     // Each lobe whose f can be non-zero keeps some probability, so pdf() never vanishes where
-    // f does not (a black base colour still reflects through its Fresnel term, and so on).
-    c.specular = std::max(c.specular, 0.02f);
+    // f does not (a black base colour still reflects through its Fresnel term, and so on). A
+    // specular lobe that reflects nothing gets none: its samples would all be lost.
+    if (specularReflects(metallic_, f0_, f90_, iridescence_)) c.specular = std::max(c.specular, 0.02f);
     if (metallic_ < 1.0f && transmission_ > 0.0f) c.transmission = std::max(c.transmission, 0.02f);
     if (metallic_ < 1.0f && transmission_ < 1.0f && diffuseTransmission_ < 1.0f) c.diffuse = std::max(c.diffuse, 0.02f);
     if (metallic_ < 1.0f && diffuseTransmits()) c.diffuseTransmission = std::max(c.diffuseTransmission, 0.02f);
@@ -133,7 +145,8 @@ float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
         if (c.transmission > 0.0f) p += c.transmission * ggx_.reflectionPdf(wo, mirrorThroughSurface(wi));
         return p;
     }
-    float p = c.specular * ggx_.reflectionPdf(wo, wi) + (c.diffuse + c.sheen) * wi.z * kInvPi;
+    float p = (c.diffuse + c.sheen) * wi.z * kInvPi;
+    if (c.specular > 0.0f) p += c.specular * ggx_.reflectionPdf(wo, wi);
     if (c.clearcoat > 0.0f) p += c.clearcoat * clearcoat_.pdf(wo, wi);
     return p;
 }

@@ -22,6 +22,27 @@ glm::vec3 randomView(TestRng& rng) {
     return toFloatUnit(rng.hemisphere() + glm::dvec3(0.0, 0.0, 1e-6));
 }
 
+// KHR_materials_specular's specularFactor 0 leaves a Lambertian surface (the walls of
+// bench/render/lambert_box.py): every sample is the cosine lobe's and carries the base colour,
+// none is spent on a specular lobe that reflects nothing (which took 2 % of them, 8 % on a red
+// wall, each ending its path), and pdf() is the cosine's alone.
+TEST(GltfPdf, ALambertianSurfaceSpendsNoSampleOnItsEmptySpecularLobe) {
+    Material m;
+    m.baseColor = glm::dvec3(0.8, 0.1, 0.1);
+    m.metallic = 0.0;
+    m.roughness = 1.0;
+    m.specular = 0.0;
+    const GltfBxdf bxdf(toInputs(m));
+    TestRng rng(7);
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 wo = randomView(rng);
+        const auto s = bxdf.sample(wo, rng.u2(), rng.u());
+        ASSERT_TRUE(s) << "wo " << describe(wo);
+        ASSERT_NEAR(bxdf.pdf(wo, s->wi), s->wi.z / 3.14159265f, 1e-6f);
+        ASSERT_NEAR(glm::length(s->weight - glm::vec3(0.8f, 0.1f, 0.1f)), 0.0f, 1e-5f) << "wo " << describe(wo);
+    }
+}
+
 TEST(GltfPdf, SampleAgreesWithEvalAndPdf) {
     // sample() computes f and pdf by calling eval() and pdf() on the direction it returns: they
     // must be the same numbers (a relative 1e-6 leaves room for a compiler evaluating an inlined
