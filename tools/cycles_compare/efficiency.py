@@ -71,10 +71,19 @@ def seconds_of(match):
     return value / 1000.0 if match.group(2) == "ms" else value
 
 
+def woven_render_options(woven):
+    """Options every woven render of the box takes beyond the table's: no denoiser where woven
+    has one (Cycles' is off), as the raw estimates are what is compared."""
+    help_text = subprocess.run([woven, "render", "--help"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               text=True).stdout
+    return ["--no-denoise"] if "--no-denoise" in help_text else []
+
+
 def render_woven(args, gltf, spp, seed, exr):
     cmd = [args.woven, "render", gltf, "--spp", str(spp), "--integrator", "path", "--max-depth", str(args.max_depth),
            "--noise-threshold", "0", "--environment", "none", "--seed", str(seed), "--width", str(args.size),
-           "--height", str(args.size), "--threads", str(args.threads), "-o", exr] + args.woven_args.split()
+           "--height", str(args.size), "--threads", str(args.threads), "-o", exr] + args.woven_options + \
+        args.woven_args.split()
     log, process_seconds = compare.run_logged(cmd, exr + ".log", args.timeout, "woven render")
     match = WOVEN_TIME.search(log)
     if not match:
@@ -99,6 +108,7 @@ def render_cycles(args, gltf, spp, seed, exr):
 
 def main():
     args = parse_args()
+    args.woven_options = woven_render_options(args.woven)
     os.makedirs(args.out, exist_ok=True)
     gltf = os.path.join(os.path.abspath(args.out), "lambert_box.gltf")
     lambert_box.main(gltf)
