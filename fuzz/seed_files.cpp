@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "draft.h"
+#include "draco_grid.h"
 #include "gltf_builder.h"
 #include "frame_io.h"
 #include "image_io.h"
@@ -160,6 +161,14 @@ void writeSeedCorpora(const std::string& dir) {
     triangle(true).writeGltf((root / "gltf" / "tri_embedded.gltf").string(), test::GltfBuilder::Storage::DataUri);
     // EXT_meshopt_compression's decoder: gltf-transform's meshopt cloth (the tests' file).
     copyInto(fs::path(WOVEN_TEST_DATA_DIR) / "cloth_meshopt.glb", root / "gltf");
+    // KHR_draco_mesh_compression's decoder: the tests' grid through draco::Encoder.
+    test::writeDracoGrid((root / "gltf" / "grid_draco.glb").string(), test::Grid());
+    // EXT_mesh_gpu_instancing: the triangle placed three times, one copy mirrored.
+    test::GltfBuilder instanced = triangle(false);
+    instanced.useExtension("EXT_mesh_gpu_instancing", true);
+    const int t = instanced.addVec3({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}), sc = instanced.addVec3({{1, 1, 1}, {-1, 1, 1}, {1, 2, 1}});
+    instanced.json()["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", t}, {"SCALE", sc}}}};
+    instanced.writeGlb((root / "gltf" / "tri_instanced.glb").string());
 
     // Scene files naming the companion files, with every key.
     const json everyKey = {
