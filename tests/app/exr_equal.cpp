@@ -1,5 +1,5 @@
-// exr_equal A.exr B.exr: exits 0 when two frames hold the same radiance, sample counts and
-// sample sums bit for bit; otherwise says how they differ and exits 1. For the shell tests.
+// exr_equal A.exr B.exr: exits 0 when two frames hold the same radiance, sample counts,
+// sample sums and render passes' sums bit for bit; otherwise says how they differ and exits 1. For the shell tests.
 #include <cmath>
 #include <iostream>
 
@@ -26,11 +26,13 @@ int main(int argc, char** argv) {
                     ++differing;
                     maxDifference = std::max(maxDifference, double(std::abs(a.image.pixels[i][c] - b.image.pixels[i][c])));
                 }
-        const bool same = differing == 0 && a.sampleCount == b.sampleCount && a.sampleSums == b.sampleSums;
+        const bool same =
+            differing == 0 && a.sampleCount == b.sampleCount && a.sampleSums == b.sampleSums && a.passSums == b.passSums;
         if (!same)
             std::cerr << argv[1] << " and " << argv[2] << " differ: " << differing << " channel values (largest difference "
                       << maxDifference << ")" << (a.sampleCount == b.sampleCount ? "" : ", sample counts")
-                      << (a.sampleSums == b.sampleSums ? "" : ", sample sums") << "\n";
+                      << (a.sampleSums == b.sampleSums ? "" : ", sample sums")
+                      << (a.passSums == b.passSums ? "" : ", render passes' sums") << "\n";
         return same ? 0 : 1;
     } catch (const std::exception& e) {
         std::cerr << "exr_equal: " << e.what() << "\n";

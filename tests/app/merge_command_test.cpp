@@ -4,6 +4,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +14,7 @@
 
 #include "frame_io.h"
 #include "image_io.h"
+#include "render_passes.h"
 #include "../common/run_woven.h"
 
 namespace {
@@ -46,20 +49,79 @@ TEST_F(MergeCommand, DisjointRangesMergeToTheUnionBitForBit) {
     ASSERT_EQ(m.image.pixels.size(), u.image.pixels.size());
     EXPECT_EQ(m.sampleCount, std::vector<float>(u.image.pixels.size(), 6.0f));
     EXPECT_EQ(m.sampleSums, u.sampleSums);
+    // The render passes too: their sums, and so the layers compositors read.
+    ASSERT_EQ(u.passSums.size(), u.image.pixels.size());
+    EXPECT_EQ(m.passSums, u.passSums);
     ASSERT_TRUE(m.samples);
     EXPECT_EQ(m.samples->first, 0);
     EXPECT_EQ(m.samples->count, 6);
-    double mean = 0.0;
+    const woven::RenderPasses mp = m.passes(), up = u.passes();
+    double mean = 0.0, depth = 0.0;
     for (size_t i = 0; i < u.image.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) ASSERT_EQ(m.image.pixels[i][c], u.image.pixels[i][c]) << "pixel " << i;
+        ASSERT_EQ(mp.albedo.pixels[i], up.albedo.pixels[i]) << "pixel " << i;
+        ASSERT_EQ(mp.normal.pixels[i], up.normal.pixels[i]) << "pixel " << i;
+        ASSERT_EQ(mp.depth[i], up.depth[i]) << "pixel " << i;
+        ASSERT_EQ(mp.variance.pixels[i], up.variance.pixels[i]) << "pixel " << i;
         mean += u.image.pixels[i].r;
+        depth += up.depth[i];
     }
     EXPECT_GT(mean, 0.0);
+    EXPECT_GT(depth, 0.0);
 
     // A merged frame merges again, exactly: ranges of ranges.
     const std::string d = render("d.exr", 6, 2);
     ASSERT_EQ(run("merge " + file("merged.exr") + " " + d + " -o " + file("again.exr")).exitCode, 0);
     EXPECT_EQ(woven::readExr(file("again.exr")).sampleSums, woven::readExr(render("all8.exr", 0, 8)).sampleSums);
+}
+
+// Parts of the layout before render passes (32-bit unsigned sums sum.R0-sum.B3, count N) merge
+// as they did, into a frame without passes, said in a warning; with parts that have passes
+// they are refused by name.
+TEST_F(MergeCommand, PartsOfTheOlderLayoutMergeWithoutPasses) {
+    const std::string paths[] = {render("a.exr", 0, 2), render("b.exr", 2, 1)};
+    const auto writeOld = [&](const std::string& path, const std::string& to) {
+        const woven::ExrImage part = woven::readExr(path);
+        OIIO::ImageSpec spec(part.image.width, part.image.height, 0, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"R", "G", "B", "N"};
+        spec.channelformats.assign(4, OIIO::TypeDesc::FLOAT);
+        for (const char* c : {"R", "G", "B"})
+            for (int w = 0; w < 4; ++w) {
+                spec.channelnames.push_back(std::string("sum.") + c + std::to_string(w));
+                spec.channelformats.push_back(OIIO::TypeDesc::UINT32);
+            }
+        spec.nchannels = int(spec.channelnames.size());
+        spec.attribute("wovenFirstSample", std::to_string(part.samples->first));
+        spec.attribute("wovenSampleCount", std::to_string(part.samples->count));
+        std::vector<unsigned char> data;
+        for (size_t i = 0; i < part.image.pixels.size(); ++i) {
+            const auto put = [&](const void* v) { data.insert(data.end(), (const unsigned char*)v, (const unsigned char*)v + 4); };
+            for (int c = 0; c < 3; ++c) put(&part.image.pixels[i][c]);
+            put(&part.sampleCount[i]);
+            for (int c = 0; c < 3; ++c)
+                for (const uint32_t w : part.sampleSums[3 * i + size_t(c)].words()) put(&w);
+        }
+        auto out = OIIO::ImageOutput::create(to);
+        ASSERT_TRUE(out && out->open(to, spec) && out->write_image(OIIO::TypeUnknown, data.data()) && out->close());
+    };
+    writeOld(paths[0], file("old_a.exr"));
+    writeOld(paths[1], file("old_b.exr"));
+    Result r = run("merge " + file("old_a.exr") + " " + file("old_b.exr") + " -o " + file("old.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, testing::HasSubstr("warning: " + file("old_a.exr") + " has no render passes"));
+    const woven::ExrImage merged = woven::readExr(file("old.exr")), all = woven::readExr(render("all.exr", 0, 3));
+    EXPECT_EQ(merged.sampleSums, all.sampleSums);
+    // Without passes there is nothing to denoise by: the merged beauty is the noisy mean.
+    ASSERT_TRUE(all.noisy);
+    EXPECT_EQ(merged.image.pixels, all.noisy->pixels);
+    EXPECT_FALSE(merged.noisy);
+    EXPECT_TRUE(merged.passSums.empty());
+
+    r = run("merge " + paths[0] + " " + file("old_b.exr") + " -o " + file("mixed.exr"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr(file("old_b.exr") + " has no render passes (an older woven wrote it) and " +
+                                          paths[0] + " has"));
+    EXPECT_FALSE(fs::exists(file("mixed.exr")));
 }
 
 TEST_F(MergeCommand, MissingSamplesAreNamedAndGoToThePartialFrame) {

@@ -1,5 +1,6 @@
 // ExactSum: the same samples give the same sum in any order and any grouping (what makes a
-// merge of sample ranges equal one render of their union), and its words round-trip.
+// merge of sample ranges equal one render of their union), and its words (integer and float)
+// round-trip.
 #include "exact_sum.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +93,31 @@ TEST(ExactSum, WordsRoundTripNegativeAndPositiveSums) {
     ExactSum minusOne;
     minusOne.add(-1.0f);  // two's complement
     EXPECT_EQ(minusOne.words(), (std::array<uint32_t, 4>{0u, 0xF0000000u, 0xFFFFFFFFu, 0xFFFFFFFFu}));
+}
+
+// The float words frame files keep: whole numbers below 2^24 (2^8 on top), which round-trip
+// through float channels; anything else is no word of a sum.
+TEST(ExactSum, FloatWordsRoundTripAndRefuseWhatNoSumGives) {
+    for (float value : {0.0f, 1.0f, -1.0f, 3.5e-12f, -123456.789f, 4e9f}) {
+        ExactSum sum;
+        sum.add(value);
+        sum.add(value * 0.3f);
+        const std::optional<ExactSum> back = ExactSum::fromFloatWords(sum.floatWords());
+        ASSERT_TRUE(back) << value;
+        EXPECT_EQ(*back, sum) << value;
+        EXPECT_EQ(back->value(), sum.value()) << value;
+    }
+    ExactSum one;
+    one.add(1.0f);  // 2^60 units: bit 12 of the third word
+    EXPECT_EQ(one.floatWords(), (std::array<float, 6>{0.0f, 0.0f, 4096.0f, 0.0f, 0.0f, 0.0f}));
+    ExactSum minusOne;
+    minusOne.add(-1.0f);
+    EXPECT_EQ(minusOne.floatWords(), (std::array<float, 6>{0.0f, 0.0f, 16773120.0f, 16777215.0f, 16777215.0f, 255.0f}));
+    EXPECT_DOUBLE_EQ(minusOne.value(), -1.0);
+    for (const std::array<float, 6>& bad : {std::array<float, 6>{0.5f, 0, 0, 0, 0, 0}, std::array<float, 6>{0, 16777216.0f, 0, 0, 0, 0},
+                                           std::array<float, 6>{0, 0, 0, 0, 0, 256.0f}, std::array<float, 6>{-1.0f, 0, 0, 0, 0, 0},
+                                           std::array<float, 6>{0, 0, std::nanf(""), 0, 0, 0}})
+        EXPECT_FALSE(ExactSum::fromFloatWords(bad));
 }
 
 }  // namespace
