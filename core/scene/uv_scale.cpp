@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "mesh_instances.h"
+
 namespace woven {
 
 UvScale measureUvScale(const SceneDescription& scene, const std::vector<size_t>& meshes) {
@@ -15,19 +17,27 @@ UvScale measureUvScale(const SceneDescription& scene, const std::vector<size_t>&
     for (size_t m : meshes) {
         const Mesh& mesh = scene.meshes.at(m);
         if (mesh.uvs.empty()) continue;
-        for (const glm::uvec3& t : mesh.triangles) {
-            const glm::dvec3 p0(mesh.positions[t.x]), e1 = glm::dvec3(mesh.positions[t.y]) - p0,
-                                                      e2 = glm::dvec3(mesh.positions[t.z]) - p0;
-            const glm::dvec2 uv0(mesh.uvs[t.x]), d1 = glm::dvec2(mesh.uvs[t.y]) - uv0, d2 = glm::dvec2(mesh.uvs[t.z]) - uv0;
-            const double det = d1.x * d2.y - d2.x * d1.y;
-            const double a = 0.5 * glm::length(glm::cross(e1, e2));
-            if (!(std::fabs(det) > 1e-20) || !(a > 0.0)) continue;  // no UV mapping, or no area
-            const glm::dvec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
-            const glm::dvec2 lengths(glm::length(dpdu), glm::length(dpdv));
-            if (!std::isfinite(lengths.x) || !std::isfinite(lengths.y)) continue;
-            sum += a * lengths;
-            area += a;
-            triangles.emplace_back(a, lengths);
+        // An instanced mesh's copies as they are placed. Up to kMeasuredCopies of them, evenly
+        // spread: a mean over a million copies of a sound mesh is that of a few hundred, and
+        // measuring each would cost a million meshes' time.
+        constexpr size_t kMeasuredCopies = 256;
+        const size_t n = copies(mesh), measured = std::min(n, kMeasuredCopies);
+        for (size_t k = 0; k < measured; ++k) {
+            const glm::dmat3 place = mesh.instances ? glm::dmat3(glm::mat3((*mesh.instances)[k * n / measured])) : glm::dmat3(1.0);
+            for (const glm::uvec3& t : mesh.triangles) {
+                const glm::dvec3 p0(mesh.positions[t.x]), e1 = place * (glm::dvec3(mesh.positions[t.y]) - p0),
+                                                          e2 = place * (glm::dvec3(mesh.positions[t.z]) - p0);
+                const glm::dvec2 uv0(mesh.uvs[t.x]), d1 = glm::dvec2(mesh.uvs[t.y]) - uv0, d2 = glm::dvec2(mesh.uvs[t.z]) - uv0;
+                const double det = d1.x * d2.y - d2.x * d1.y;
+                const double a = 0.5 * glm::length(glm::cross(e1, e2));
+                if (!(std::fabs(det) > 1e-20) || !(a > 0.0)) continue;  // no UV mapping, or no area
+                const glm::dvec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
+                const glm::dvec2 lengths(glm::length(dpdu), glm::length(dpdv));
+                if (!std::isfinite(lengths.x) || !std::isfinite(lengths.y)) continue;
+                sum += a * lengths;
+                area += a;
+                triangles.emplace_back(a, lengths);
+            }
         }
     }
     if (!(area > 0.0))

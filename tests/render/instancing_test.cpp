@@ -13,6 +13,7 @@
 #include "../scene/temp_dir.h"
 #include "render_scene.h"
 #include "scene_loader.h"
+#include "uv_scale.h"
 #include "test_scenes.h"
 
 namespace woven {
@@ -158,6 +159,21 @@ TEST(Instancing, EachCopyOfAnEmitterIsItsOwnLight) {
             EXPECT_NEAR(glm::length(scene.emitted(*hit, -ray.d) - glm::vec3(2.0f)), 0.0f, 1e-6f);
         }
     for (size_t l = 0; l < found.size(); ++l) EXPECT_TRUE(found[l]) << "light " << l << " is no copy's";
+}
+
+// Thread counts measure an instanced mesh's UVs where its copies are placed: copies scaled 3 times
+// take 3 times the metres per UV unit of the mesh's own space.
+TEST(Instancing, ThreadCountsMeasureTheCopiesAsPlaced) {
+    Mesh mesh = unitQuad();
+    auto scene = sceneWith({mesh});
+    EXPECT_NEAR(worldLengthPerUv(*scene, {0}).x, 1.0, 1e-9);
+    scene->meshes[0].instances = std::make_shared<const std::vector<glm::mat4>>(std::vector<glm::mat4>{
+        glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)),
+        glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0)) * glm::rotate(glm::mat4(1.0f), 1.0f, glm::vec3(0, 0, 1)) *
+            glm::scale(glm::mat4(1.0f), glm::vec3(3.0f))});
+    const glm::dvec2 metres = worldLengthPerUv(*scene, {0});
+    EXPECT_NEAR(metres.x, 3.0, 1e-6);
+    EXPECT_NEAR(metres.y, 3.0, 1e-6);
 }
 
 // A grey ground, a row of boxes and a point light, as one glTF file with the boxes instanced and
