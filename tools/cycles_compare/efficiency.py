@@ -41,7 +41,7 @@ import lambert_box  # noqa: E402
 # The box's camera (bench/render/lambert_box.py) in Blender's coordinates.
 CAMERA = '{"position": [0, -3.6, 0], "target": [0, 0, 0], "up": [0, 0, 1], "yfov_degrees": 35.5234}'
 SECONDS_TAG = "CYCLES_RENDER_SECONDS "
-WOVEN_TIME = re.compile(r"^integrator \w+, \d+ spp.*?, ([0-9.]+) (ms|s),", re.M)
+WOVEN_TIME = re.compile(r"^integrator \w+, \d+ spp.*?, ([0-9.]+) (ms|s)[ ,]", re.M)
 
 
 def parse_args():
