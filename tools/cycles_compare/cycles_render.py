@@ -62,6 +62,9 @@ def parse_args(argv):
                    help="keep the importer's light sizes (0.25 m radius, 0.53 deg sun) instead of points")
     p.add_argument("--lambert", action="store_true",
                    help="every material becomes a Lambertian Diffuse BSDF of its base colour, its emission kept")
+    p.add_argument("--diffuse-transmission", action="store_true",
+                   help="each material with KHR_materials_diffuse_transmission in the file becomes "
+                        "Mix(Diffuse, Translucent) by its factor (Blender 3.4's importer ignores the extension)")
     p.add_argument("--keep-animation", action="store_true",
                    help="keep the first glTF animation active (default: static node transforms)")
     args = p.parse_args(argv)
@@ -174,6 +177,53 @@ def make_materials_lambertian():
         links.new(add.inputs[0], diffuse.outputs["BSDF"])
         links.new(add.inputs[1], emission.outputs["Emission"])
         links.new(output.inputs["Surface"], add.outputs["Shader"])
+
+
+def make_materials_diffuse_transmission(gltf_path):
+    """KHR_materials_diffuse_transmission's definition in Cycles' nodes, from the file's values.
+
+    The extension makes the diffuse base mix(diffuse_brdf(baseColor), diffuse_btdf(colour),
+    factor), under the specular layer. For files whose KHR_materials_specular sets
+    specularFactor 0 (no specular layer) that is exactly Mix(Diffuse BSDF (Lambert: roughness
+    0), Translucent BSDF) with the factor as Fac; the specular layer is not rebuilt here, so a
+    material with one is refused. Textures are refused too (the factors only).
+    """
+    with open(gltf_path, "rb") as f:
+        data = f.read()
+    if data[:4] == b"glTF":
+        length = int.from_bytes(data[12:16], "little")
+        document = json.loads(data[20:20 + length])
+    else:
+        document = json.loads(data)
+    for source in document.get("materials", []):
+        extensions = source.get("extensions", {})
+        transmission = extensions.get("KHR_materials_diffuse_transmission")
+        if transmission is None:
+            continue
+        name = source.get("name", "")
+        if extensions.get("KHR_materials_specular", {}).get("specularFactor", 1.0) != 0.0:
+            raise RenderError(f"--diffuse-transmission: material '{name}' has a specular layer (specularFactor is not 0)")
+        if "diffuseTransmissionTexture" in transmission or "diffuseTransmissionColorTexture" in transmission:
+            raise RenderError(f"--diffuse-transmission: material '{name}' has textures")
+        pbr = source.get("pbrMetallicRoughness", {})
+        if pbr.get("metallicFactor", 1.0) != 0.0 or "baseColorTexture" in pbr:
+            raise RenderError(f"--diffuse-transmission: material '{name}' must be a dielectric without textures")
+        material = bpy.data.materials.get(name)
+        if material is None or not material.use_nodes:
+            raise RenderError(f"--diffuse-transmission: Blender imported no material '{name}'")
+        nodes, links = material.node_tree.nodes, material.node_tree.links
+        output = next((n for n in nodes if n.type == "OUTPUT_MATERIAL"), None)
+        diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+        diffuse.inputs["Color"].default_value = pbr.get("baseColorFactor", [1.0, 1.0, 1.0, 1.0])
+        diffuse.inputs["Roughness"].default_value = 0.0  # Oren-Nayar at 0 is Lambert
+        translucent = nodes.new("ShaderNodeBsdfTranslucent")
+        translucent.inputs["Color"].default_value = list(transmission.get("diffuseTransmissionColorFactor", [1.0, 1.0, 1.0])) + [1.0]
+        mix = nodes.new("ShaderNodeMixShader")
+        mix.inputs["Fac"].default_value = transmission.get("diffuseTransmissionFactor", 0.0)
+        links.new(mix.inputs[1], diffuse.outputs["BSDF"])
+        links.new(mix.inputs[2], translucent.outputs["BSDF"])
+        links.new(output.inputs["Surface"], mix.outputs["Shader"])
+        print(f"cycles_render: material '{name}' = Mix(Diffuse, Translucent) by {mix.inputs['Fac'].default_value}", flush=True)
 
 
 def world_bounds():
@@ -363,6 +413,8 @@ def main():
         make_lights_punctual()
     if args.lambert:
         make_materials_lambertian()
+    if args.diffuse_transmission:
+        make_materials_diffuse_transmission(os.path.abspath(args.gltf))
     render_exr(scene, args.out)
     print(f"cycles_render: wrote {os.path.abspath(args.out)}", flush=True)
 
