@@ -2,28 +2,47 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace woven {
 
 namespace {
-constexpr int kFractionBits = 60;
+constexpr int kFractionBits = 60;  // value() scales by 2^-60
 constexpr float kLargestSample = 4294967296.0f;  // 2^32
 }  // namespace
 
 void ExactSum::add(float sample) {
     if (!std::isfinite(sample)) return;
-    // Exact in double: a float scaled by a power of two. Rounding to an integer is the one
-    // rounding a sample ever sees, and it depends on the sample alone.
-    const double scaled = std::ldexp(double(std::clamp(sample, -kLargestSample, kLargestSample)), kFractionBits);
-    fixed_ += static_cast<Fixed>(std::nearbyint(scaled));
+    // The sample is mantissa x 2^exponent exactly, so in units of 2^-60 it is mantissa shifted:
+    // rounding to a whole unit (half to even, as nearbyint would round the scaled double) is the
+    // one rounding a sample ever sees, and it depends on the sample alone. In integers, as a
+    // film adds 16 sums per pixel and pass: ldexp and a double's conversion to 128 bits cost
+    // ten times as much.
+    const float clamped = std::clamp(sample, -kLargestSample, kLargestSample);
+    uint32_t bits;
+    std::memcpy(&bits, &clamped, sizeof bits);
+    const int biased = int((bits >> 23) & 0xffu);
+    const uint32_t mantissa = biased == 0 ? (bits & 0x7fffffu) : ((bits & 0x7fffffu) | 0x800000u);
+    const int shift = (biased == 0 ? -149 : biased - 150) + kFractionBits;
+    Fixed units = 0;
+    if (shift >= 0) {
+        units = Fixed(mantissa) << shift;  // at most 2^24 x 2^69
+    } else if (shift > -25) {  // else below half a unit: 0
+        const int k = -shift;
+        uint32_t whole = mantissa >> k;
+        const uint32_t rest = mantissa & ((1u << k) - 1u), half = 1u << (k - 1);
+        if (rest > half || (rest == half && (whole & 1u))) ++whole;
+        units = whole;
+    }
+    fixed_ += (bits >> 31) ? -units : units;
 }
 
 float ExactSum::mean(float count) const {
     if (count <= 0.0f) return 0.0f;
-    return float(std::ldexp(double(fixed_), -kFractionBits) / double(count));
+    return float(value() / double(count));
 }
 
-double ExactSum::value() const { return std::ldexp(double(fixed_), -kFractionBits); }
+double ExactSum::value() const { return double(fixed_) * 0x1p-60; }  // 2^-kFractionBits
 
 std::array<float, ExactSum::kFloatWords> ExactSum::floatWords() const {
     __extension__ typedef unsigned __int128 Bits;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -93,6 +94,31 @@ TEST(ExactSum, WordsRoundTripNegativeAndPositiveSums) {
     ExactSum minusOne;
     minusOne.add(-1.0f);  // two's complement
     EXPECT_EQ(minusOne.words(), (std::array<uint32_t, 4>{0u, 0xF0000000u, 0xFFFFFFFFu, 0xFFFFFFFFu}));
+}
+
+// Each sample is rounded once, to the nearest multiple of 2^-60 (half to even): what the double
+// 2^60 x sample, exact, rounds to. Over every exponent a float has, subnormals and ties included.
+TEST(ExactSum, EachSampleIsItsNearestWholeUnit) {
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<uint32_t> bits;
+    std::vector<float> samples = {0.5f * std::ldexp(1.0f, -60), 1.5f * std::ldexp(1.0f, -60), 2.5f * std::ldexp(1.0f, -60),
+                                  std::ldexp(1.0f, -61), std::numeric_limits<float>::denorm_min(), 4294967296.0f};
+    for (int i = 0; i < 100000; ++i) {
+        uint32_t b = bits(rng);
+        float f;
+        std::memcpy(&f, &b, sizeof f);
+        if (std::isfinite(f) && std::abs(f) <= 4294967296.0f) samples.push_back(f);
+    }
+    for (const float f : samples) {
+        ExactSum sum;
+        sum.add(f);
+        const double units = std::nearbyint(std::ldexp(double(f), 60));
+        EXPECT_EQ(sum.value(), std::ldexp(units, -60)) << f;
+        // value() rounds to double: the integer words say the same, exactly.
+        ExactSum twice = sum;
+        twice += sum;
+        EXPECT_EQ(twice.value(), 2.0 * std::ldexp(units, -60)) << f;
+    }
 }
 
 // The float words frame files keep: whole numbers below 2^24 (2^8 on top), which round-trip
