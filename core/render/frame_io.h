@@ -1,7 +1,7 @@
 #pragma once
-// A rendered frame's files: OpenEXR with the linear radiance, the per-pixel sample counts and
-// what `woven merge` needs to merge renders of disjoint sample ranges exactly (exact sums, the
-// sample range, the frame's identity), or a display-ready PNG. Every failure throws ImageError
+// A rendered frame's files: OpenEXR with the linear radiance, its render passes, the per-pixel
+// sample counts and what `woven merge` needs to merge renders of disjoint sample ranges exactly
+// (exact sums, the sample range, the frame's identity), or a display-ready PNG. Every failure throws ImageError
 // naming the file; every write is atomic (atomic_file.h).
 #include <optional>
 #include <string>
@@ -32,13 +32,24 @@ struct ExrImage {
 };
 enum class ExrPrecision { Half, Float };
 
-// Writes channels B, G, R (in `precision`) and, when sampleCount is not empty, N (always 32-bit
-// float, exact for counts below 2^24), ZIP-compressed. Sample sums go to 32-bit unsigned
-// channels sum.B0-sum.B3, sum.G0-sum.G3, sum.R0-sum.R3 (ExactSum::words(), least significant
-// first), the sample range to attributes wovenFirstSample and wovenSampleCount (decimal strings:
-// EXR has no 64-bit integer attribute; files of earlier versions have ints, which are read too),
-// the frame's identity to wovenScene, wovenSeed (strings), wovenIntegrator (a string),
-// wovenMaxDepth and wovenFilter (ints); other tools read R, G, B (and N) and ignore the rest.
+// Writes one ZIP-compressed part whose channels are all half or float, named R, G, B or
+// layer.pass.channel as compositors read layers (Blender 3.4 loads no file with other types or
+// names: tests/app/exr_readers_test.cpp):
+//   R, G, B            the beauty (`image`, in `precision`), denoised where `noisy` is set;
+//   noisy.R/G/B        the noisy beauty, when set (`precision`);
+//   albedo.R/G/B, normal.X/Y/Z, depth.Z, variance.R/G/B
+//                      the render passes (RenderPasses, `precision`), when passSums is not empty;
+//   samples.N          the sample counts, when not empty (float, exact for counts below 2^24);
+//   exact.radianceK.R/G/B, exact.albedoK.R/G/B, exact.normalK.X/Y/Z, exact.depthK.Z,
+//   exact.squareK.R/G/B (K = 0..5)
+//                      the exact sums, each as ExactSum::floatWords() (whole numbers below 2^24,
+//                      float), K = 0 the least significant: the radiance's with sampleSums,
+//                      the passes' with passSums. Blender shows them as a second layer, "exact".
+// The sample range goes to attributes wovenFirstSample and wovenSampleCount (decimal strings: EXR
+// has no 64-bit integer attribute; files of earlier versions have ints, which are read too), the
+// frame's identity to wovenScene, wovenSeed (strings), wovenIntegrator (a string), wovenMaxDepth
+// and wovenFilter (ints). readExr also reads the layout before render passes: the count as N and
+// the radiance's sums as 32-bit unsigned channels sum.R0-sum.B3 (ExactSum::words()).
 void writeExr(const std::string& path, const ExrImage& exr,
               ExrPrecision precision = ExrPrecision::Half);
 ExrImage readExr(const std::string& path);

@@ -9,9 +9,11 @@
 namespace woven {
 
 // What a frame holds per pixel while it renders and is written, rounded up: the film's exact
-// sums and count (52 bytes), a pass and its combined estimate (24), the snapshot (64), and the
-// EXR's interleaved channels with OpenImageIO's copy (128), plus room for per-pixel statistics.
-constexpr size_t kFrameBytesPerPixel = 320;
+// sums and count with its render passes' sums (260 bytes), a pass with its first hits and
+// combined estimates (64), the snapshot and the frame file's copy of it (2 x 272) with the
+// passes' means (40), and the EXR's 95 interleaved channels with OpenImageIO's copy (760), plus
+// room for per-pixel statistics and the denoiser's buffers.
+constexpr size_t kFrameBytesPerPixel = 2048;
 
 // Throws std::invalid_argument naming the size, the estimate and the memory when a width x
 // height frame's estimate exceeds this machine's physical memory.

@@ -20,7 +20,8 @@ struct ImageError : std::runtime_error {
 
 // What woven reads of an image, checked before any pixel is decoded: images from other people
 // can claim any size. 16384 x 16384 RGBA floats would be 4 GiB; textures and environment maps
-// of 16k on a side with 128 Mpixels and 1 GiB of file cover every real asset.
+// of 16k on a side with 128 Mpixels cover every real asset, and 2 GiB of file a 3840 x 2160
+// frame file of woven's (about 1.4 GB with its passes and exact sums).
 constexpr int kMaxImageSide = 32768;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
 // A frame file of woven's has 95 channels (frame_io.h): beauty, noisy beauty, passes, count and
@@ -29,7 +30,7 @@ constexpr int kMaxImageChannels = 128;
 // All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or a 3840 x 2160
 // frame file with its 95 channels (3 GiB).
 constexpr int64_t kMaxImageDecodedBytes = int64_t(4) << 30;
-constexpr size_t kMaxImageFileBytes = size_t(1) << 30;
+constexpr size_t kMaxImageFileBytes = size_t(2) << 30;
 
 // How 8- and 16-bit channels are turned into linear floats. Colour textures (baseColor,
 // emissive) are sRGB-encoded; data textures (roughness, normals) are already linear.
