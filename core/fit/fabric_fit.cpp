@@ -23,9 +23,10 @@ using Clock = std::chrono::steady_clock;
 // camera's axes still finds its threads, while a twill's or satin's off-axis peaks (14 degrees
 // and more from the axes at the thread counts of real cloth) are left alone.
 constexpr double kPeakHalfAngle = 4.0 * M_PI / 180.0;
-// Colour renders per weave candidate (stage 2): BOBYQA needs 2n + 1 = 13 to set up its model of
-// six colours; this leaves it as many again to converge on renders that cost no rendering.
-constexpr int kColourEvaluations = 60;
+// Colour mixtures per weave candidate (stage 2): BOBYQA needs 2n + 1 = 13 to set up its model of
+// six colours, and this leaves it as many again: enough to tell the weaves apart, as stage 4
+// refines the colours of the one chosen.
+constexpr int kColourEvaluations = 24;
 
 struct ThreadPeaks {
     std::optional<SpectralPeak> ends, picks;  // across u (warp ends) and across v (weft picks)
@@ -109,7 +110,6 @@ public:
     Fitter(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
            const std::function<void(const FitProgress&)>& onProgress)
         : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()) {
-        for (const Shot& s : shots_) photoStats_.push_back(imageStats(s.image));
         result_.shots.resize(shots_.size());
         result_.loss = INFINITY;
     }
@@ -124,6 +124,13 @@ public:
 
         stage_ = "thread counts";
         p.repeat = threadCountsFromPhotos(p.repeat);
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            std::vector<glm::dvec2> threads;
+            if (photoPeaks_[i].ends) threads.push_back(photoPeaks_[i].ends->frequency);
+            if (photoPeaks_[i].picks) threads.push_back(photoPeaks_[i].picks->frequency);
+            threadFrequencies_.push_back(threads);
+            photoStats_.push_back(imageStats(shots_[i].image, threads));
+        }
         p = initialColours(p);
         const bool weaveDone = chooseWeave(p);
         bool calibrated = false;
@@ -167,15 +174,13 @@ private:
     // The loss of renders (vignetted, before exposure); with `record`, kept if the best so far.
     double evaluate(const WovenParams& p, std::vector<Image> images, bool record) {
         std::vector<float> photoMeans, renderMeans;
-        std::vector<ImageStats> stats(shots_.size());
         bool anyFree = false;
         for (size_t i = 0; i < shots_.size(); ++i) {
             if (shots_[i].photo.exposure) continue;
             anyFree = true;
             const std::vector<float>& pm = photoStats_[i].values[kStatBlockMeans];
             photoMeans.insert(photoMeans.end(), pm.begin(), pm.end());
-            stats[i] = imageStats(images[i]);
-            const std::vector<float>& rm = stats[i].values[kStatBlockMeans];
+            const std::vector<float> rm = blockMeans(images[i]);
             renderMeans.insert(renderMeans.end(), rm.begin(), rm.end());
         }
         const double free = anyFree ? bestExposure(photoMeans, renderMeans) : 1.0;
@@ -185,10 +190,10 @@ private:
             const float e = float(shots_[i].photo.exposure.value_or(float(free)));
             if (e != 1.0f)
                 for (glm::vec3& v : images[i].pixels) v *= e;
-            stats[i] = imageStats(images[i]);
-            terms[i] = loss(photoStats_[i], stats[i]);
+            terms[i] = loss(photoStats_[i], imageStats(images[i], threadFrequencies_[i]));
             total += terms[i].total;
         }
+
         if (record) {
             if (total < result_.loss) {
                 result_.loss = total;
@@ -250,7 +255,7 @@ private:
         return p;
     }
 
-    // Stage 2. False when the budget ran out before every weave was tried.
+    // Stage 2: every weave with its colours fitted. False when the budget ran out first.
     bool chooseWeave(const WovenParams& start) {
         const auto& candidates = weaveCandidates();
         for (size_t c = 0; c < candidates.size(); ++c) {
@@ -262,31 +267,36 @@ private:
             stage_ = "weave " + std::to_string(c + 1) + "/" + std::to_string(candidates.size());
             WovenParams p = start;
             p.pattern = candidates[c].pattern;
-            // Renders linear in the yarn colours: black, white weft, white warp.
-            WovenParams basis = p;
-            basis.weft_color = basis.warp_color = glm::vec3(0.0f);
-            const std::vector<Image> black = render(basis);
-            basis.weft_color = glm::vec3(1.0f);
-            const std::vector<Image> weft = render(basis);
-            basis.weft_color = glm::vec3(0.0f);
-            basis.warp_color = glm::vec3(1.0f);
-            const std::vector<Image> warp = render(basis);
-            const Objective objective = [&](const std::vector<double>& x) {
-                if (cancel_.load()) throw nlopt::forced_stop();
-                const WovenParams q = decode(x, p);
-                std::vector<Image> images = black;
-                for (size_t s = 0; s < images.size(); ++s)
-                    for (size_t i = 0; i < images[s].pixels.size(); ++i)
-                        images[s].pixels[i] += q.weft_color * (weft[s].pixels[i] - black[s].pixels[i]) +
-                                               q.warp_color * (warp[s].pixels[i] - black[s].pixels[i]);
-                return evaluate(q, std::move(images), false);
-            };
-            std::vector<double> x = encode(p);
-            x.resize(kColourAxes);
-            minimise(x, objective, kColourEvaluations);
-            evaluate(decode(x, p));
+            fitColours(p);
+            evaluate(p);
         }
         return true;
+    }
+
+    // Renders linear in the yarn colours (black, white weft, white warp) and NLopt over their
+    // mixtures, which cost no rendering.
+    void fitColours(WovenParams& p) {
+        WovenParams basis = p;
+        basis.weft_color = basis.warp_color = glm::vec3(0.0f);
+        const std::vector<Image> black = render(basis);
+        basis.weft_color = glm::vec3(1.0f);
+        const std::vector<Image> weft = render(basis);
+        basis.weft_color = glm::vec3(0.0f);
+        basis.warp_color = glm::vec3(1.0f);
+        const std::vector<Image> warp = render(basis);
+        const Objective objective = [&](const std::vector<double>& x) {
+            const WovenParams q = decode(x, p);
+            std::vector<Image> images = black;
+            for (size_t s = 0; s < images.size(); ++s)
+                for (size_t i = 0; i < images[s].pixels.size(); ++i)
+                    images[s].pixels[i] += q.weft_color * (weft[s].pixels[i] - black[s].pixels[i]) +
+                                           q.warp_color * (warp[s].pixels[i] - black[s].pixels[i]);
+            return evaluate(q, std::move(images), false);
+        };
+        std::vector<double> x = encode(p);
+        x.resize(kColourAxes);
+        minimise(x, objective, kColourEvaluations);
+        p = decode(x, p);
     }
 
     // Runs NLopt's BOBYQA from x within [0, 1]^n, at most `evaluations` (0: until the budget is
@@ -371,6 +381,7 @@ private:
     Clock::time_point start_;
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
+    std::vector<std::vector<glm::dvec2>> threadFrequencies_;  // per shot, where its thread peaks are read
     std::string stage_;
     FitResult result_;
 };

@@ -3,9 +3,9 @@
 // photos' statistics. In stages, each starting from the last one's best:
 //   1. thread counts from the photo's spectrum (power_spectrum.h): the peak of each thread
 //      direction, which the shot's camera turns into threads per UV unit (Shot::uvPerPixel);
-//   2. the weave: each of weaveCandidates() rendered, its yarn colours fitted (by NLopt, on
-//      renders that are linear in the colours: a render with white weft, one with white warp and
-//      one with both black, which direct light from point lights makes exact), the best kept;
+//   2. the weave: each of weaveCandidates() with its yarn colours fitted (by NLopt, on renders
+//      that are linear in the colours: a render with white weft, one with white warp and one
+//      with both black, which direct light from point lights makes exact), the best kept;
 //   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
 //   4. colours, gloss (ex, ey, rs), yarn widths and bump (cy) by NLopt's BOBYQA on full renders,
 //      until the time budget is spent.

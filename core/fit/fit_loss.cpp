@@ -56,7 +56,7 @@ const std::array<double, kStatGroupCount>& lossWeights() {
     // Colours first: they are what a designer sees. The spectrum's log error is larger by nature
     // (a factor of 2 in power is 0.09), so it weighs less; it decides the weave all the same,
     // as a wrong weave puts its peaks in other bins altogether.
-    static const std::array<double, kStatGroupCount> w{1.0, 1.0, 0.05, 0.1};
+    static const std::array<double, kStatGroupCount> w{1.0, 1.0, 0.05, 1.0, 0.1};
     return w;
 }
 
@@ -65,6 +65,12 @@ LossTerms loss(const ImageStats& photo, const ImageStats& render) {
     t.error[kStatBlockMeans] = colourError(photo.values[kStatBlockMeans], render.values[kStatBlockMeans], 1);
     t.error[kStatQuantiles] = colourError(photo.values[kStatQuantiles], render.values[kStatQuantiles], 5);
     t.error[kStatSpectrum] = spectrumError(photo.values[kStatSpectrum], render.values[kStatSpectrum]);
+    // Laid out channel by channel, the thread frequencies within: relative to each channel's mean
+    // amplitude, so that the yarns' colours count as the block means' do.
+    const size_t perChannel = photo.values[kStatThreadPeaks].size() / 3;
+    if (perChannel > 0)
+        t.error[kStatThreadPeaks] =
+            colourError(photo.values[kStatThreadPeaks], render.values[kStatThreadPeaks], perChannel);
     t.error[kStatGram] = relativeError(photo.values[kStatGram], render.values[kStatGram]);
     for (int g = 0; g < kStatGroupCount; ++g) t.total += lossWeights()[size_t(g)] * t.error[size_t(g)];
     return t;

@@ -15,20 +15,6 @@ constexpr std::array<float, 5> kQuantiles{0.1f, 0.3f, 0.5f, 0.7f, 0.9f};
 constexpr int kSpectrumBinsY = 32;  // over fy in [-0.5, 0.5): bins of 1/32 cycle per pixel
 constexpr int kSpectrumBinsX = kSpectrumBinsY / 2;
 
-std::vector<float> blockMeans(const Image& im) {
-    std::vector<double> sum(size_t(kMeanBlocks) * kMeanBlocks * 3, 0.0);
-    std::vector<double> count(size_t(kMeanBlocks) * kMeanBlocks, 0.0);
-    for (int y = 0; y < im.height; ++y)
-        for (int x = 0; x < im.width; ++x) {
-            const size_t b = size_t(y * kMeanBlocks / im.height) * kMeanBlocks + size_t(x * kMeanBlocks / im.width);
-            for (int c = 0; c < 3; ++c) sum[3 * b + c] += im.at(x, y)[c];
-            count[b] += 1.0;
-        }
-    std::vector<float> out(sum.size());
-    for (size_t i = 0; i < sum.size(); ++i) out[i] = float(sum[i] / std::max(count[i / 3], 1.0));
-    return out;
-}
-
 // On the image averaged over 2 x 2 pixels: a photo's sensor noise widens the spread of single
 // pixels, which would read as yarns of more different colours.
 std::vector<float> quantiles(const Image& im) {
@@ -62,12 +48,13 @@ std::vector<float> quantiles(const Image& im) {
     return out;
 }
 
-std::vector<float> spectrumBins(const Image& im) {
-    std::vector<float> out;
+void spectrumStats(const Image& im, const std::vector<glm::dvec2>& threads, std::vector<float>& out,
+                   std::vector<float>& peaks) {
     std::vector<float> channel(im.pixels.size());
     for (int c = 0; c < 3; ++c) {
         for (size_t i = 0; i < channel.size(); ++i) channel[i] = im.pixels[i][c];
         const PowerSpectrum s = powerSpectrum(channel, im.width, im.height);
+        for (const glm::dvec2& f : threads) peaks.push_back(float(std::sqrt(powerNear(s, f))));
         std::vector<double> bins(size_t(kSpectrumBinsX) * kSpectrumBinsY, 0.0);
         for (int ky = 0; ky < s.height; ++ky) {
             const int sy = ky <= s.height / 2 ? ky : ky - s.height;
@@ -83,7 +70,6 @@ std::vector<float> spectrumBins(const Image& im) {
         }
         for (double b : bins) out.push_back(float(b));
     }
-    return out;
 }
 
 std::vector<float> gram(const Image& im) {
@@ -108,16 +94,30 @@ std::vector<float> gram(const Image& im) {
 
 }  // namespace
 
+std::vector<float> blockMeans(const Image& im) {
+    std::vector<double> sum(size_t(kMeanBlocks) * kMeanBlocks * 3, 0.0);
+    std::vector<double> count(size_t(kMeanBlocks) * kMeanBlocks, 0.0);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const size_t b = size_t(y * kMeanBlocks / im.height) * kMeanBlocks + size_t(x * kMeanBlocks / im.width);
+            for (int c = 0; c < 3; ++c) sum[3 * b + c] += im.at(x, y)[c];
+            count[b] += 1.0;
+        }
+    std::vector<float> out(sum.size());
+    for (size_t i = 0; i < sum.size(); ++i) out[i] = float(sum[i] / std::max(count[i / 3], 1.0));
+    return out;
+}
+
 const std::array<const char*, kStatGroupCount>& statGroupNames() {
-    static const std::array<const char*, kStatGroupCount> names{"block means", "quantiles", "spectrum", "gram"};
+    static const std::array<const char*, kStatGroupCount> names{"block means", "quantiles", "spectrum", "thread peaks", "gram"};
     return names;
 }
 
-ImageStats imageStats(const Image& image) {
+ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads) {
     ImageStats s;
     s.values[kStatBlockMeans] = blockMeans(image);
     s.values[kStatQuantiles] = quantiles(image);
-    s.values[kStatSpectrum] = spectrumBins(image);
+    spectrumStats(image, threads, s.values[kStatSpectrum], s.values[kStatThreadPeaks]);
     s.values[kStatGram] = gram(image);
     return s;
 }

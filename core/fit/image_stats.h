@@ -6,6 +6,9 @@
 //                  and the highlight spread within a region, whatever the threads' phase
 //   spectrum       each channel's power spectrum (power_spectrum.h), summed over bins of 1/32
 //                  cycle per pixel, in log10: the weave's class, direction and thread counts
+//   thread peaks   each channel's amplitude (the root of the power) at the photo's thread
+//                  frequencies, ends and picks: which yarn has which colour, as the ends' peak
+//                  is the warp's cross-section and the picks' the weft's
 //   gram           the second moments of the features (R, G, B, |d/dx|, |d/dy|) over the image,
 //                  as a Gram matrix of image features does for texture: which colour the edges
 //                  across each direction have
@@ -16,13 +19,16 @@
 
 namespace woven {
 
-enum StatGroup { kStatBlockMeans, kStatQuantiles, kStatSpectrum, kStatGram, kStatGroupCount };
+enum StatGroup { kStatBlockMeans, kStatQuantiles, kStatSpectrum, kStatThreadPeaks, kStatGram, kStatGroupCount };
 const std::array<const char*, kStatGroupCount>& statGroupNames();  // "block means", ...
 
 struct ImageStats {
     std::array<std::vector<float>, kStatGroupCount> values;
 };
 
-ImageStats imageStats(const Image& image);
+// `threads`: the frequencies (cycles per pixel, x and y) the thread peaks are read at; none, no
+// thread peaks.
+ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads);
+std::vector<float> blockMeans(const Image& image);  // imageStats()'s first group alone
 
 }  // namespace woven

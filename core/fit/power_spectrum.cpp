@@ -139,19 +139,49 @@ std::optional<SpectralPeak> strongestPeak(const PowerSpectrum& s, glm::dvec2 dir
     return peak;
 }
 
+double powerNear(const PowerSpectrum& s, const glm::dvec2& f) {
+    const glm::dvec2 g = f.x < 0.0 ? -f : f;  // the half-plane FFTW keeps
+    const int cx = int(std::lround(g.x * s.width)), cy = int(std::lround(g.y * s.height));
+    double best = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            int kx = cx + dx, ky = cy + dy;
+            if (kx < 0) {  // across kx = 0: the conjugate bin
+                kx = -kx;
+                ky = -ky;
+            }
+            if (kx > s.width / 2) continue;
+            ky = ((ky % s.height) + s.height) % s.height;
+            best = std::max(best, double(s.at(kx, ky)));
+        }
+    return best;
+}
+
 std::optional<SpectralPeak> fundamentalPeak(const PowerSpectrum& s, glm::dvec2 direction, double halfAngle, double fMin,
                                             double fMax) {
-    const std::optional<SpectralPeak> peak = strongestPeak(s, direction, halfAngle, fMin, fMax);
-    if (!peak) return peak;
-    const double f = glm::length(peak->frequency);
-    // Within half a bin's relative width of f / n, and 7 % besides for the peak's own spread.
-    for (int n = 4; n >= 2; --n) {
-        const double target = f / n;
-        if (target < fMin) continue;
-        const auto sub = strongestPeak(s, peak->frequency, halfAngle, target * 0.93, target * 1.07);
-        if (sub && sub->power >= 0.1 * peak->power) return sub;
+    const std::optional<SpectralPeak> strongest = strongestPeak(s, direction, halfAngle, fMin, fMax);
+    if (!strongest) return strongest;
+    const double floor = 1e-3 * strongest->power;
+    const auto folded = [](const glm::dvec2& f) { return f - glm::round(f); };
+    const double bin = 1.0 / std::max(s.width, s.height);
+    std::optional<SpectralPeak> best;
+    double bestScore = -INFINITY;
+    for (double f = fMin; f <= fMax; f += bin) {
+        // The strongest bin of this ring of the window, kept if no bin around it is stronger.
+        const auto peak = strongestPeak(s, strongest->frequency, halfAngle, f, f + bin);
+        if (!peak || peak->power < 0.05 * strongest->power) continue;
+        const double at = glm::length(peak->frequency);
+        const auto around = strongestPeak(s, strongest->frequency, halfAngle, std::max(fMin, at - 2.0 * bin), at + 2.0 * bin);
+        if (!around || around->power > peak->power) continue;
+        double score = 0.0;
+        for (int n = 1; n <= 3; ++n) score += std::log(powerNear(s, folded(double(n) * peak->frequency)) + floor);
+        if (score > bestScore + 1e-9) {
+            bestScore = score;
+            best = peak;
+        }
+        f = at + bin;  // past this peak
     }
-    return peak;
+    return best ? best : strongest;
 }
 
 }  // namespace woven

@@ -1,0 +1,33 @@
+#pragma once
+// The synthetic capture rig of the fit's round trips (docs/FIT.md, "The rig"): a flat square
+// swatch, the camera straight above it, a point light beside the camera, as a phone with its
+// flash sees a swatch on a table. writeCaptureShot() writes the glTF file (core's glTF writer),
+// the shot file, and the "photo": woven's own render of a known material, with the sensor's
+// noise, the lens's vignette and an exposure applied as the options say, as an sRGB PNG.
+#include <cstdint>
+#include <string>
+
+#include "woven_params.h"
+
+namespace woven::test {
+
+constexpr float kSwatchMetres = 0.04f;  // 4 cm; one UV unit a metre (flat_cloth.h)
+
+struct RigPhoto {
+    WovenParams truth;           // repeat: threads per metre, as one UV unit is a metre
+    int size = 128;              // pixels, square
+    int spp = 32;                // the photo's samples: far more than the fit's
+    uint64_t seed = 1234;        // not the fit's seed
+    float noise = 0.0f;          // sensor noise: Gaussian, this fraction of each value
+    float vignetteSigmaPx = 0;   // applied to the photo; the shot says it
+    float exposure = 1.0f;       // applied to the photo
+    bool exposureKnown = true;   // false: the shot says "free"
+};
+
+// The shot file's path (DIR/NAME.json beside DIR/NAME.png and DIR/swatch.gltf).
+std::string writeCaptureShot(const std::string& dir, const std::string& name, const RigPhoto& photo);
+
+// The same shot file with its photo key replaced by `photoJson` (a JSON object, or "" for none).
+std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson);
+
+}  // namespace woven::test

@@ -1,0 +1,101 @@
+// `woven fit` and `woven render` on shot files, run as a user does: bad input refused with a
+// message naming the file, a budget too short for the stages, the report folder.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "capture_rig.h"
+#include "run_woven.h"
+
+namespace woven::test {
+namespace {
+
+class FitCommand : public CommandTest {
+protected:
+    // A small rig (64 pixels: the commands' behaviour, not the fit's accuracy, is tested here).
+    std::string shot() {
+        RigPhoto photo;
+        photo.truth.pattern = {1, 2, 1};
+        photo.truth.repeat = {800.0f, 800.0f};
+        photo.size = 64;
+        photo.spp = 4;
+        return writeCaptureShot(dir_.string(), "shot", photo);
+    }
+    RunResult fit(const std::string& shotFile, const std::string& options = "--target Swatch") {
+        return runWovenCommand("fit '" + shotFile + "' " + options + " -o '" + file("out.json") + "'");
+    }
+};
+
+TEST_F(FitCommand, ShotWithoutPhotoKeyIsRefused) {
+    const std::string path = writeShotFile(dir_.string(), "nophoto", 64, "");
+    const RunResult r = fit(path);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(path + ": no \"photo\" key"), std::string::npos) << r.out;
+}
+
+TEST_F(FitCommand, PhotoOfAnotherSizeIsRefused) {
+    shot();  // shot.png, 64 x 64
+    const std::string path = writeShotFile(dir_.string(), "bigger", 96, "{\"image\": \"shot.png\"}");
+    const RunResult r = fit(path);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(path + ": photo.image: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("is 64x64 but the render is 96x96"), std::string::npos) << r.out;
+}
+
+TEST_F(FitCommand, MissingAndUndecodableImagesAreRefused) {
+    const std::string missing = writeShotFile(dir_.string(), "missing", 64, "{\"image\": \"absent.png\"}");
+    RunResult r = fit(missing);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(missing + ": photo.image: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("absent.png"), std::string::npos) << r.out;
+
+    std::ofstream(file("garbage.png")) << "not a PNG at all";
+    const std::string garbage = writeShotFile(dir_.string(), "garbage", 64, "{\"image\": \"garbage.png\"}");
+    r = fit(garbage);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(garbage + ": photo.image: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("garbage.png"), std::string::npos) << r.out;
+}
+
+TEST_F(FitCommand, TargetThatNamesNothingIsRefused) {
+    const std::string path = shot();
+    const RunResult r = fit(path, "--target Curtain");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(path + ": "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Curtain"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("'Swatch'"), std::string::npos) << r.out;  // what it could have named
+}
+
+TEST_F(FitCommand, BadPhotoKeysAreNamed) {
+    const std::string path = writeShotFile(dir_.string(), "bad", 64, "{\"image\": \"shot.png\", \"encoding\": \"log\"}");
+    const RunResult r = fit(path);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(path + ": photo.encoding: "), std::string::npos) << r.out;
+}
+
+// A budget that ends inside the weave search: the best fit so far, a warning, and the report.
+TEST_F(FitCommand, TooShortTimeGivesTheBestFitSoFarWithAWarning) {
+    const RunResult r = fit(shot(), "--target Swatch --time 0.05 --report '" + file("report") + "'");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("warning: fit: --time 0.05 s ran out before the fit finished its stages"), std::string::npos) << r.out;
+    std::ifstream in(file("out.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_TRUE(j.contains("pattern"));
+    EXPECT_TRUE(j.contains("ends_per_cm"));  // the rig's swatch has UVs of known size
+    EXPECT_TRUE(std::filesystem::exists(file("report/shot_0.png")));
+    EXPECT_TRUE(std::filesystem::exists(file("report/report.txt")));
+    EXPECT_TRUE(std::filesystem::exists(file("report/loss.csv")));
+}
+
+TEST_F(FitCommand, RenderTakesAShotAndSaysItDoesNotUseThePhoto) {
+    const std::string path = shot();
+    const RunResult r = runWovenCommand("render '" + path + "' --spp 1 -o '" + file("frame.png") + "'");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("is for woven fit; the render does not use it"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(file("frame.png")));
+}
+
+}  // namespace
+}  // namespace woven::test

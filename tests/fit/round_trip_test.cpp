@@ -1,0 +1,109 @@
+// woven fit's synthetic round trips (docs/FIT.md): woven renders a known material in the capture
+// rig (capture_rig.h) and the fit recovers it from that photo alone.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <iostream>
+
+#include "capture_rig.h"
+#include "fabric_fit.h"
+#include "fit_output.h"
+#include "shot.h"
+#include "weave_candidates.h"  // describeWeave, for a failure's message
+
+namespace woven::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RoundTrip : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("woven_fit_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    FitResult fit(const RigPhoto& photo, double seconds) {
+        shots_ = {loadShot(writeCaptureShot(dir_.string(), "shot", photo), "Swatch")};
+        FitOptions options;
+        options.seconds = seconds;
+        options.render.spp = 2;
+        const std::atomic<bool> cancel{false};
+        FitResult r = fitFabric(shots_, options, cancel);
+        // What a failure needs to be understood.
+        std::cerr << "fit: " << describeWeave(r.params.pattern) << ", repeat " << r.params.repeat.x << " x "
+                  << r.params.repeat.y << ", loss " << r.loss << ", " << r.evaluations << " renders"
+                  << (r.complete ? "" : ", incomplete") << "\n";
+        for (const std::string& w : r.warnings) std::cerr << "fit: " << w << "\n";
+        return r;
+    }
+
+    // The rig's cloth: 8 ends and 6 picks per cm (27 and 20 threads across the photo's 3.4 cm,
+    // 4.7 and 6.3 pixels a thread at 128 pixels: below 4 pixels a thread the pixel grid folds
+    // the 3rd harmonic onto half the fundamental's frequency), yarns of two colours.
+    static WovenParams cloth(glm::ivec3 pattern) {
+        WovenParams p;
+        p.pattern = pattern;
+        p.repeat = {800.0f, 600.0f};  // per metre: one UV unit is a metre
+        p.weft_color = {0.70f, 0.62f, 0.45f};
+        p.warp_color = {0.10f, 0.16f, 0.42f};
+        p.ex = p.warp_ex = 60.0f;
+        p.ey = p.warp_ey = 4.0f;
+        p.rs = 0.05f;
+        p.cy = 0.6f;
+        p.yarn_width = 0.85f;
+        p.warp_width = 0.9f;
+        return p;
+    }
+
+    // Thread counts within 3 %, the bound: the spectrum's peaks, located to a tenth of a
+    // bin of 1/128 cycle per pixel, are good to 0.5 % at 27 threads across.
+    static void expectThreadCounts(const FitResult& r, const WovenParams& truth) {
+        EXPECT_NEAR(r.params.repeat.x / truth.repeat.x, 1.0, 0.03);
+        EXPECT_NEAR(r.params.repeat.y / truth.repeat.y, 1.0, 0.03);
+    }
+
+    // The thread counts are the fit's first stage; this budget ends the fit inside the weave
+    // search, which the round trips do not check (docs/FIT.md says why).
+    static double seconds() { return 2.0; }
+
+    fs::path dir_;
+    std::vector<Shot> shots_;
+};
+
+TEST_F(RoundTrip, TwillThreadCounts) {
+    RigPhoto photo;
+    photo.truth = cloth({1, 3, 1});
+    const FitResult r = fit(photo, seconds());
+    expectThreadCounts(r, photo.truth);
+    const auto counts = threadsPerCm(shots_[0], r.params.repeat);
+    ASSERT_TRUE(counts);
+    EXPECT_NEAR(counts->x, 8.0, 0.24);
+    EXPECT_NEAR(counts->y, 6.0, 0.18);
+    // The photo's thread directions are the render's: the swatch lies along the camera's axes.
+    EXPECT_LT(r.shots[0].directionError.x, 1.0);
+    EXPECT_LT(r.shots[0].directionError.y, 1.0);
+}
+
+TEST_F(RoundTrip, PlainWeaveThreadCounts) {
+    RigPhoto photo;
+    photo.truth = cloth({1, 1, 1});
+    expectThreadCounts(fit(photo, seconds()), photo.truth);
+}
+
+TEST_F(RoundTrip, SatinThreadCountsWithNoiseVignetteAndUnknownExposure) {
+    RigPhoto photo;
+    photo.truth = cloth({4, 1, 2});
+    photo.noise = 0.03f;
+    photo.vignetteSigmaPx = 150.0f;
+    photo.exposure = 1.6f;
+    photo.exposureKnown = false;
+    expectThreadCounts(fit(photo, seconds()), photo.truth);
+}
+
+}  // namespace
+}  // namespace woven::test
