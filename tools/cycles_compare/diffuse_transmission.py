@@ -109,7 +109,7 @@ def main():
 
     woven_exr, cycles_exr = os.path.join(args.out, "woven.exr"), os.path.join(args.out, "cycles.exr")
     woven_seconds = run([args.woven, "render", gltf, "--spp", str(args.spp), "--integrator", args.integrator,
-                         "--noise-threshold", "0", "--max-depth", "8", "--width", str(args.width), "--height",
+                         "--noise-threshold", "0", "--no-denoise", "--max-depth", "8", "--width", str(args.width), "--height",
                          str(args.height), "--threads", str(args.threads), "-o", woven_exr],
                         os.path.join(args.out, "woven.log"))
     cycles_seconds = run([args.blender, "-b", "--factory-startup", "--python-exit-code", "1", "--python",
