@@ -81,6 +81,21 @@ bake_figure() {
     echo "![$scene]($(basename "$out")/${scene}_convergence.png)"
   done
   echo
+  echo "## Clean frames: the denoiser (issue 24)"
+  echo
+  echo "The denoiser on and off from the same renders, adaptive sampling off and at T = 0.05, against a"
+  echo "uniformly sampled reference that is not denoised (path and BDPT, 120 s), 320x240; then its time"
+  echo "against a 1280x720 render at the default settings. The 10 s table and the crops were made by hand."
+  for scene in paper_d_satin default_scene; do
+    echo
+    echo "#### $scene"
+    echo
+    run "$woven" converge "assets/$scene.json" --budgets 2,4,8 --reference-time 120 --integrators path --filter off \
+        --noise-thresholds 0,0.05 --denoise on,off --out-dir "$out"
+  done
+  echo
+  run "$build/bench/denoise/bench_denoise"
+  echo
   echo "## What a woven feature costs a render"
   echo
   run "$build/bench/features/bench_features" assets/coarse_drape.json
