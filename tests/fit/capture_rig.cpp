@@ -16,7 +16,8 @@ namespace woven::test {
 
 namespace fs = std::filesystem;
 
-std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson) {
+std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
+                          float lightOffset) {
     SceneDescription swatch;
     swatch.meshes.push_back(flatCloth(glm::vec2(kSwatchMetres), "Swatch"));
     Material material;
@@ -25,10 +26,10 @@ std::string writeShotFile(const std::string& dir, const std::string& name, int s
     std::vector<std::string> warnings;
     writeGltf((fs::path(dir) / "swatch.gltf").string(), swatch, Camera{}, warnings);
     // 15 cm above the swatch's centre (the origin), a 13 degree lens that sees 3.4 cm of it, v up
-    // the image; the "flash" 5 mm beside the lens, as a phone's is.
+    // the image; the "flash" beside the lens (5 mm, as a phone's is, by default).
     std::ofstream f(fs::path(dir) / (name + ".json"));
     f << "{\"gltf\": \"swatch.gltf\",\n"
-      << " \"lights\": [{\"type\": \"point\", \"position\": [0.005, 0.15, 0], \"intensity\": 0.08}],\n"
+      << " \"lights\": [{\"type\": \"point\", \"position\": [" << lightOffset << ", 0.15, 0], \"intensity\": 0.08}],\n"
       << " \"camera\": {\"position\": [0, 0.15, 0], \"target\": [0, 0, 0], \"up\": [0, 0, -1], \"yfov_degrees\": 13},\n"
       << " \"render\": {\"width\": " << size << ", \"height\": " << size << "}"
       << (photoJson.empty() ? "" : ",\n \"photo\": " + photoJson) << "}\n";
@@ -40,7 +41,7 @@ std::string writeCaptureShot(const std::string& dir, const std::string& name, co
     if (photo.vignetteSigmaPx > 0.0f) key += ", \"vignette_sigma_px\": " + std::to_string(photo.vignetteSigmaPx);
     if (!photo.exposureKnown) key += ", \"exposure\": \"free\"";
     key += "}";
-    const std::string shot = writeShotFile(dir, name, photo.size, key);
+    const std::string shot = writeShotFile(dir, name, photo.size, key, photo.lightOffset);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(shot));
     for (Material& m : scene->materials)

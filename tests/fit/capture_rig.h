@@ -22,12 +22,14 @@ struct RigPhoto {
     float vignetteSigmaPx = 0;   // applied to the photo; the shot says it
     float exposure = 1.0f;       // applied to the photo
     bool exposureKnown = true;   // false: the shot says "free"
+    float lightOffset = 0.005f;  // metres beside the camera, along +x
 };
 
 // The shot file's path (DIR/NAME.json beside DIR/NAME.png and DIR/swatch.gltf).
 std::string writeCaptureShot(const std::string& dir, const std::string& name, const RigPhoto& photo);
 
 // The same shot file with its photo key replaced by `photoJson` (a JSON object, or "" for none).
-std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson);
+std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
+                          float lightOffset = 0.005f);
 
 }  // namespace woven::test
