@@ -58,6 +58,40 @@ vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     return sum;
 }
 
+// A yarn point as shading sees it (core's YarnLook in WovenMaterial::shade): its lobe with the
+// thread's colour, noise and print, its bumped frame, and its transmission t and gloss g.
+struct YarnLook {
+    Lobe lobe;
+    Frame frame;
+    float transmission, gloss;
+};
+YarnLook lookAt(YarnPoint y, Frame tangent, vec3 print) {
+    bool weft = y.type == WEFT;
+#ifdef WOVEN_THREADS
+    vec3 color = threadTexel(weft ? 1 : 0, y.slot, 0).rgb;
+    vec4 yarn = yarnTexel(y.yarn, 0), more = yarnTexel(y.yarn, 1);
+    float ex = yarn.x, ey = yarn.y, rs = yarn.z, noise = more.y, t = more.z, g = more.w;
+#else
+    vec3 color = weft ? material.weft_color : material.warp_color;
+    float ex = weft ? material.ex : material.warp_ex, ey = weft ? material.ey : material.warp_ey;
+    float rs = material.rs, noise = material.noise, t = material.transmission, g = material.transmission_gloss;
+#endif
+#ifdef WOVEN_NOISE
+    uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
+    if (noise > 0.0) color = clamp(color * (1.0 + noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
+#endif
+    color *= print;
+    Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
+    return YarnLook(Lobe(ex, ey, rs, color), f, t, g);
+}
+
+// `print` multiplies the yarns' colour, as core's ShadingInput::print.
+vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 print) {
+    if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
+    YarnLook seen = lookAt(y, tangent, print);
+    return reflectedLight(seen.frame, seen.lobe, p, ng, wo);
+}
+
 #ifdef WOVEN_TRANSMISSION
 // core's yarnTransmittance and YarnTransmission::eval (core/model/yarn_transmission.cpp).
 vec3 yarnTransmittance(vec3 rd, float t) {
@@ -80,49 +114,32 @@ vec3 yarnTransmission(Lobe l, vec3 T, float g, vec3 wo, vec3 wi) {
     }
     return T * ((1.0 - l.rs) * (1.0 - pow5(1.0 - 0.5 * mo)) * (1.0 - pow5(1.0 - 0.5 * mi)) * lobe);
 }
-// The lights behind the cloth (on the side of -ng) that the yarn passes to wo.
-vec3 transmittedLight(Frame f, Lobe lobe, vec3 T, float g, vec3 p, vec3 ng, vec3 wo) {
-    vec3 woLocal = toLocal(f, wo), sum = vec3(0.0);
+// The lights behind the cloth (on the side of -ng) that the point passes to wo: as core's
+// WovenMaterial::shade, the smaller of both faces' yarns' T through the front face's yarn lobe,
+// whichever face is seen (docs/MODEL_TRANSMISSION.md section 3). `other`: the other face's yarn
+// at the point, in its tangent frame `otherTangent`.
+vec3 transmittedLight(YarnPoint y, Frame tangent, YarnPoint other, Frame otherTangent, bool backSide, vec3 p, vec3 ng,
+                      vec3 wo, vec3 print) {
+    if (y.type == GAP || other.type == GAP) return vec3(0.0);
+    YarnLook seen = lookAt(y, tangent, print);
+    if (!(seen.transmission > 0.0)) return vec3(0.0);
+    YarnLook behind = lookAt(other, otherTangent, print);
+    if (!(behind.transmission > 0.0)) return vec3(0.0);
+    vec3 T = min(yarnTransmittance(seen.lobe.rd, seen.transmission), yarnTransmittance(behind.lobe.rd, behind.transmission));
+    YarnLook front = backSide ? behind : seen;
+    vec3 woLocal = toLocal(front.frame, wo), sum = vec3(0.0);
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
         vec3 L = incidentLight(i, p, -ng, wi);
-        if (L == vec3(0.0)) continue;
-        vec3 wiLocal = toLocal(f, wi);
-        sum += yarnTransmission(lobe, T, g, woLocal, wiLocal) * L * abs(wiLocal.z);
+        // As core's TransmittingYarn, the seen yarn's frame parts reflection from transmission,
+        // and the cosine is about the transmission frame's normal.
+        if (L == vec3(0.0) || dot(wo, seen.frame.z) * dot(wi, seen.frame.z) > 0.0) continue;
+        vec3 wiLocal = toLocal(front.frame, wi);
+        sum += yarnTransmission(front.lobe, T, front.gloss, woLocal, wiLocal) * L * abs(wiLocal.z);
     }
     return sum;
 }
 #endif
-
-// `print` multiplies the yarns' colour, as core's ShadingInput::print.
-vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 print) {
-    if (y.type == GAP) return reflectedLight(tangent, Lobe(0.0, 0.0, 0.0, material.backing_color), p, ng, wo);
-    bool weft = y.type == WEFT;
-    // The thread's colour and its yarn's lobe and noise (core's WovenMaterial::shade).
-#ifdef WOVEN_THREADS
-    vec3 color = threadTexel(weft ? 1 : 0, y.slot, 0).rgb;
-    vec4 yarn = yarnTexel(y.yarn, 0);
-    float ex = yarn.x, ey = yarn.y, rs = yarn.z, noise = yarnTexel(y.yarn, 1).y;
-#else
-    vec3 color = weft ? material.weft_color : material.warp_color;
-    float ex = weft ? material.ex : material.warp_ex, ey = weft ? material.ey : material.warp_ey;
-    float rs = material.rs, noise = material.noise;
-#endif
-#ifdef WOVEN_NOISE
-    uint seed = uint(y.yarnIndex) * 2u + (weft ? 0u : 1u);
-    if (noise > 0.0) color = clamp(color * (1.0 + noise * yarnNoise(y.along * material.noise_scale, seed)), 0.0, 1.0);
-#endif
-    color *= print;
-    Frame f = frameFromNormalAndAxis(toWorld(tangent, y.normal), weft ? tangent.x : tangent.y);
-    vec3 radiance = reflectedLight(f, Lobe(ex, ey, rs, color), p, ng, wo);
-#ifdef WOVEN_TRANSMISSION
-    // The material's own transmission for every yarn (yarn types' own values are not in the
-    // yarn table yet).
-    float t = material.transmission;
-    if (t > 0.0) radiance += transmittedLight(f, Lobe(ex, ey, rs, color), yarnTransmittance(color, t), material.transmission_gloss, p, ng, wo);
-#endif
-    return radiance;
-}
 
 #ifdef WOVEN_FILTER
 // core's far field (core/model/weave_far_field.h, WeaveFarField) for a footprint of whole
@@ -156,8 +173,46 @@ vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float ded
 }
 #endif
 
-vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy, vec3 print,
-                      out float coverage) {
+#ifdef WOVEN_TRANSMISSION
+// The far field's light through the yarns from the lights behind: every covered point passes the
+// smaller of the two sides' T (core's WovenMaterial::shade, with the material's own warp and weft
+// yarns), through the front face's yarn lobes by the front's yarn areas, the cosine about each
+// lobe's own normal. An approximation (core's filtered weave reflects only: core shades a cloth
+// whose yarns transmit point by point), so that backlit cloth finer than the pixels still glows.
+vec3 averagedTransmission(Frame front, vec3 p, vec3 ng, vec3 wo, Lobe weft, Lobe warp) {
+#ifdef WOVEN_THREADS
+    vec2 weftT = yarnTexel(1, 1).zw, warpT = yarnTexel(0, 1).zw;  // (t, g) of the sides' own yarns
+#else
+    vec2 weftT = vec2(material.transmission, material.transmission_gloss), warpT = weftT;
+#endif
+    vec3 T = min(yarnTransmittance(weft.rd, weftT.x), yarnTransmittance(warp.rd, warpT.x));
+    if (T == vec3(0.0)) return vec3(0.0);
+    Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
+    for (int k = 0; k < FILTER_SAMPLES; ++k) {
+        float x = (float(k) + 0.5) * (2.0 / float(FILTER_SAMPLES)) - 1.0;
+        weftFrame[k] = frameFromNormalAndAxis(toWorld(front, yarnNormal(0, material.cy, x, 0.0)), front.x);
+        warpFrame[k] = frameFromNormalAndAxis(toWorld(front, yarnNormal(1, material.cy, x, 0.0)), front.y);
+    }
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < lightCount; ++i) {
+        vec3 wi;
+        vec3 L = incidentLight(i, p, -ng, wi);
+        if (L == vec3(0.0)) continue;
+        vec3 f = vec3(0.0);
+        for (int k = 0; k < FILTER_SAMPLES; ++k) {
+            vec3 a = toLocal(weftFrame[k], wi), b = toLocal(warpFrame[k], wi);
+            f += yarnCoverage.x * yarnTransmission(weft, T, weftT.y, toLocal(weftFrame[k], wo), a) * abs(a.z) +
+                 yarnCoverage.y * yarnTransmission(warp, T, warpT.y, toLocal(warpFrame[k], wo), b) * abs(b.z);
+        }
+        sum += f * L;
+    }
+    return sum / float(FILTER_SAMPLES);
+}
+#endif
+
+// `front`: the front face's tangent frame (tangent itself where the front is seen).
+vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy,
+                      vec3 print, out float coverage) {
     vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
 #ifdef WOVEN_THREADS
     vec3 warpColor = footprintColor(warpColorTexture, threadPeriod.x, e.x, dedx.x, dedy.x);
@@ -193,6 +248,9 @@ vec3 averagedRadiance(Frame tangent, int face, vec3 p, vec3 ng, vec3 wo, vec2 e,
         sum += f * L;
     }
     sum /= float(FILTER_SAMPLES);
+#ifdef WOVEN_TRANSMISSION
+    sum += averagedTransmission(front, p, ng, wo, weft, warp);
+#endif
     coverage = 1.0;
 #ifdef WOVEN_GAPS
     float gapArea = max(0.0, 1.0 - yarnArea.x - yarnArea.y);
@@ -272,17 +330,23 @@ void main() {
     if (farWeight < 1.0) {
         // UVs that do not change across the pixel (a mesh without UVs, or with all of them equal)
         // map no weave: solid cloth, the middle of the first element, as core shades them.
-        YarnPoint y = yarnAt(det != 0.0 ? vUv : 0.5 / material.repeat, face);
+        vec2 uv = det != 0.0 ? vUv : 0.5 / material.repeat;
+        YarnPoint y = yarnAt(uv, face);
 #ifdef WOVEN_GAPS
         if (y.type == GAP && material.backing == 0) nearOpacity = 0.0;
         else
 #endif
         near = yarnRadiance(y, tangent, p, ng, wo, print);
+#ifdef WOVEN_TRANSMISSION
+        near += transmittedLight(y, tangent, yarnAt(uv, 1 - face), tangentFrame(-n, dpdu, dpdv), backSide, p, ng, wo, print);
+#endif
     }
     vec3 far = vec3(0.0);
     float farOpacity = 1.0;
 #ifdef WOVEN_FILTER
-    if (farWeight > 0.0) far = averagedRadiance(tangent, face, p, ng, wo, e, dedx, dedy, print, farOpacity);
+    if (farWeight > 0.0)
+        far = averagedRadiance(tangent, backSide ? tangentFrame(-n, dpdu, dpdv) : tangent, face, p, ng, wo, e, dedx, dedy,
+                               print, farOpacity);
 #endif
     float opacity = mix(nearOpacity, farOpacity, farWeight);
     // A point shows where the weave covers it and, for BLEND, alpha lets it be seen.

@@ -115,6 +115,9 @@ std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     if (mayShowGaps(p)) d += "#define WOVEN_GAPS\n";
     if (hasThreadLists(p)) d += "#define WOVEN_THREADS\n";
     if (!p.warp_spacing.empty() || !p.weft_spacing.empty()) d += "#define WOVEN_SPACING\n";
+    const std::vector<Yarn> yarns = Weave::resolvedYarns(p);
+    if (std::any_of(yarns.begin(), yarns.end(), [](const Yarn& y) { return y.transmission() > 0.0f; }))
+        d += "#define WOVEN_TRANSMISSION\n";
     // The far field's cross-section count is core's (weave_far_field.h), so both average alike.
     if (filterWeave) d += "#define WOVEN_FILTER\n#define FILTER_SAMPLES " + std::to_string(kFarFieldSections) + "\n";
     return d;
@@ -168,7 +171,7 @@ void WeaveTextures::update(const WovenParams& p) {
     std::vector<glm::vec4> yarns;
     for (const Yarn& y : Weave::resolvedYarns(p)) {
         yarns.emplace_back(y.ex(), y.ey(), y.rs(), y.width());
-        yarns.emplace_back(y.cy(), y.noise(), 0.0f, 0.0f);
+        yarns.emplace_back(y.cy(), y.noise(), y.transmission(), y.transmissionGloss());
     }
     uploadBuffer(yarnBuffer_, yarnTable_, yarns);
     uploaded_ = p;

@@ -33,6 +33,9 @@ public:
         return std::visit([](const auto& l) { return l.albedo(); }, lobe_);
     }
 
+    // The yarn that transmits this is, if it is one.
+    const TransmittingYarn* transmittingYarn() const { return std::get_if<TransmittingYarn>(&lobe_); }
+
 private:
     std::variant<AshikhminShirley, GltfBxdf, FilteredWeaveLobe, TransmittingYarn> lobe_;
 };
@@ -45,5 +48,13 @@ inline Bsdf toBsdf(const SurfaceBsdf& b) { return Bsdf(b.frame(), Bxdf(b.lobe())
 inline Bsdf toBsdf(const FramedLobe<FilteredWeaveLobe>& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
 // A yarn that reflects and transmits as a Bsdf.
 inline Bsdf toBsdf(const FramedLobe<TransmittingYarn>& b) { return Bsdf(b.frame(), Bxdf(b.lobe())); }
+
+// The normal the integrators take the cosine factor of wo, wi about: the shading normal, but
+// where a yarn passes light between them its transmission's (TransmittingYarn::cosineNormal()).
+inline glm::vec3 cosineNormal(const Bsdf& b, const glm::vec3& wo, const glm::vec3& wi) {
+    const TransmittingYarn* yarn = b.lobe().transmittingYarn();
+    if (!yarn) return b.shadingNormal();
+    return b.frame().toWorld(yarn->cosineNormal(b.frame().toLocal(wo), b.frame().toLocal(wi)));
+}
 
 }  // namespace woven

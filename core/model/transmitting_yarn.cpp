@@ -27,12 +27,13 @@ TransmittingYarn::TransmittingYarn(const AshikhminShirley& reflection, const Yar
 
 glm::vec3 TransmittingYarn::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     const Frame& t = transmissionFrame_;
-    return reflection_.eval(wo, wi) + transmission_.eval(t.toLocal(wo), t.toLocal(wi));
+    return wo.z * wi.z > 0.0f ? reflection_.eval(wo, wi) : transmission_.eval(t.toLocal(wo), t.toLocal(wi));
 }
 
 float TransmittingYarn::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     const Frame& t = transmissionFrame_;
-    return (1.0f - transmitProb_) * reflection_.pdf(wo, wi) + transmitProb_ * transmission_.pdf(t.toLocal(wo), t.toLocal(wi));
+    return wo.z * wi.z > 0.0f ? (1.0f - transmitProb_) * reflection_.pdf(wo, wi)
+                              : transmitProb_ * transmission_.pdf(t.toLocal(wo), t.toLocal(wi));
 }
 
 std::optional<BsdfSample> TransmittingYarn::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
@@ -45,11 +46,13 @@ std::optional<BsdfSample> TransmittingYarn::sample(const glm::vec3& wo, const gl
     } else {
         s = reflection_.sample(wo, u, std::min((uc - transmitProb_) / (1.0f - transmitProb_), 0x1.fffffep-1f));
     }
-    if (!s) return std::nullopt;
+    // A part's sample on the other part's side is dropped, so the density is pdf()'s (the two
+    // frames tilt apart where the faces' bumps differ).
+    if (!s || (wo.z * s->wi.z > 0.0f) == transmit) return std::nullopt;
     s->pdf = pdf(wo, s->wi);
     if (!(s->pdf > 0.0f) || !std::isfinite(s->pdf)) return std::nullopt;
     s->f = eval(wo, s->wi);
-    s->weight = s->f * (std::fabs(s->wi.z) / s->pdf);
+    s->weight = s->f * (std::fabs(glm::dot(s->wi, cosineNormal(wo, s->wi))) / s->pdf);
     return s;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // A yarn that reflects and transmits: its Ashikhmin-Shirley lobe in its local frame and the
 // point's YarnTransmission in a frame of its own (the front face's yarn, MODEL_TRANSMISSION.md
-// section 3), sampled by one-sample MIS between the two (section 2). Each part is zero where the
-// other one lives (reflection above its frame, transmission across its own), so the BSDF is
-// their sum.
+// section 3), sampled by one-sample MIS between the two (section 2). The reflection's frame
+// parts the directions: wo and wi on one side of it reflect, on opposite sides they transmit,
+// and there the cosine factor is taken about the transmission frame's normal (cosineNormal()).
 #include "surface_bsdf.h"
 #include "yarn_transmission.h"
 
@@ -25,6 +25,12 @@ public:
     const AshikhminShirley& reflection() const { return reflection_; }
     const YarnTransmission& transmission() const { return transmission_; }
     const Frame& transmissionFrame() const { return transmissionFrame_; }
+    // The normal of the cosine factor for wo and wi: z where they reflect, the transmission
+    // frame's normal where they cross, which is the same from either face, so that light and
+    // camera subpaths weight the point alike (bsdf.h's cosineNormal()).
+    glm::vec3 cosineNormal(const glm::vec3& wo, const glm::vec3& wi) const {
+        return wo.z * wi.z > 0.0f ? glm::vec3(0, 0, 1) : transmissionFrame_.z;
+    }
     float transmissionProbability() const { return transmitProb_; }
 
 private:

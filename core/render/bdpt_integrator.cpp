@@ -37,10 +37,17 @@ namespace {
 
 using Vertex = BdptIntegrator::Vertex;
 
+// The normal of the cosine factors at v between wo and wi: a light's normal, a surface's
+// cosineNormal() (the shading normal but where a yarn transmits, bsdf.h).
+glm::vec3 cosineNormal(const Vertex& v, const glm::vec3& wo, const glm::vec3& wi) {
+    return v.type == Vertex::Type::Surface && v.bsdf ? cosineNormal(*v.bsdf, wo, wi) : v.ns;
+}
+
 // Adjoint BSDF with shading normals (Veach 1997, 5.3): light subpaths scale by this factor.
 float shadingNormalCorrection(const Vertex& v, const glm::vec3& wo, const glm::vec3& wi) {
-    const float num = std::abs(glm::dot(wo, v.ns)) * std::abs(glm::dot(wi, v.n));
-    const float den = std::abs(glm::dot(wo, v.n)) * std::abs(glm::dot(wi, v.ns));
+    const glm::vec3 ns = cosineNormal(v, wo, wi);
+    const float num = std::abs(glm::dot(wo, ns)) * std::abs(glm::dot(wi, v.n));
+    const float den = std::abs(glm::dot(wo, v.n)) * std::abs(glm::dot(wi, ns));
     return den > 0.0f ? num / den : 0.0f;
 }
 
@@ -321,7 +328,7 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, S
         sampled.type = Vertex::Type::Camera;
         sampled.p = ws->pCamera;
         sampled.beta = ws->We / ws->pdf;
-        L = qs.beta * vertexF(qs, ws->wi, true) * sampled.beta * std::abs(glm::dot(ws->wi, qs.ns));
+        L = qs.beta * vertexF(qs, ws->wi, true) * sampled.beta * std::abs(glm::dot(ws->wi, cosineNormal(qs, qs.wo, ws->wi)));
         if (isBlack(L)) return glm::vec3(0.0f);
         ++sink.rays;
         if (!scene_.seenFromCamera(qs.hit, ws->pCamera)) return glm::vec3(0.0f);
@@ -342,7 +349,7 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, S
         sampled.dir = -ls->wi;
         sampled.beta = ls->L / (ls->pdf * pmf);
         sampled.pdfFwd = pdfLightOrigin(sampled, pt);
-        L = pt.beta * vertexF(pt, ls->wi, false) * sampled.beta * std::abs(glm::dot(ls->wi, pt.ns));
+        L = pt.beta * vertexF(pt, ls->wi, false) * sampled.beta * std::abs(glm::dot(ls->wi, cosineNormal(pt, pt.wo, ls->wi)));
         if (isBlack(L)) return glm::vec3(0.0f);
         ++sink.rays;
         const bool blocked = lightSource.isInfinite() ? scene_.occludedToInfinity(pt.hit, ls->wi)
@@ -358,7 +365,7 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, S
         const glm::vec3 w = d / std::sqrt(dist2);  // from pt towards qs
         L = qs.beta * vertexF(qs, -w, true) * vertexF(pt, w, false) * pt.beta;
         if (isBlack(L)) return glm::vec3(0.0f);
-        L *= std::abs(glm::dot(pt.ns, w)) * std::abs(glm::dot(qs.ns, w)) / dist2;
+        L *= std::abs(glm::dot(cosineNormal(pt, pt.wo, w), w)) * std::abs(glm::dot(cosineNormal(qs, qs.wo, -w), w)) / dist2;
         ++sink.rays;
         if (isBlack(L) || scene_.occluded(pt.hit, qs.p)) return glm::vec3(0.0f);
     }

@@ -28,7 +28,7 @@ glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, int vertex, cons
     const auto ls = light.sampleLi(hit.p, u);
     if (!ls || !(ls->pdf > 0.0f) || isBlack(ls->L)) return glm::vec3(0.0f);
     if (!connects(hit, bsdf, wo, ls->wi)) return glm::vec3(0.0f);
-    const glm::vec3 f = bsdf.eval(wo, ls->wi) * std::abs(glm::dot(ls->wi, bsdf.shadingNormal()));
+    const glm::vec3 f = bsdf.eval(wo, ls->wi) * std::abs(glm::dot(ls->wi, cosineNormal(bsdf, wo, ls->wi)));
     if (isBlack(f)) return glm::vec3(0.0f);
     ++sink.rays;
     const bool blocked = light.isInfinite() ? scene_.occludedToInfinity(hit, ls->wi) : scene_.occluded(hit, ls->pLight);

@@ -62,8 +62,17 @@ glm::vec3 directLight(const SceneDescription& scene, const Bsdf& bsdf, const glm
             wi = glm::normalize(d);
             L = light.intensity / glm::dot(d, d);
         }
-        if (glm::dot(wi, ng) <= 0.0f) continue;  // below the cloth
-        sum += bsdf.eval(wo, wi) * L * std::fmax(0.0f, glm::dot(wi, bsdf.shadingNormal()));
+        // A light in front with its cosine clamped, as lighting.glsl; one behind the cloth
+        // reaches wo only through a BSDF that transmits. A BSDF that transmits connects wo and wi
+        // where its shading normal parts them as the surface does (the integrators' connects()),
+        // with their cosine.
+        const glm::vec3& ns = bsdf.shadingNormal();
+        const bool front = glm::dot(wi, ng) > 0.0f, shadingFront = glm::dot(wo, ns) * glm::dot(wi, ns) > 0.0f;
+        if (!bsdf.transmits()) {
+            if (front) sum += bsdf.eval(wo, wi) * L * std::fmax(0.0f, glm::dot(wi, ns));
+        } else if (front == shadingFront) {
+            sum += bsdf.eval(wo, wi) * L * std::fabs(glm::dot(wi, cosineNormal(bsdf, wo, wi)));
+        }
     }
     return sum;
 }

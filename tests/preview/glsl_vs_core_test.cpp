@@ -178,6 +178,59 @@ TEST(GlslVsCore, KeptGltfSurfacePrintNormalMapAndAlphaMatchCore) {
     EXPECT_LT(double(coverageMismatch), 0.002 * double(onCloth));
 }
 
+// Light through the yarns (docs/MODEL_TRANSMISSION.md): a gap-free satin whose faces differ
+// (warp-faced front, weft-faced back, other colours, round yarns) passes the light of the lamps
+// behind it, seen from its front and from its back. Core's image is SceneMaterials::bsdf +
+// Bsdf::eval over every light, the ones behind through the transmitting BSDF with the cosine the
+// integrators take.
+TEST(GlslVsCore, DirectLightThroughTheSheetMatchesCore) {
+    WovenParams p;
+    p.pattern = {5, 1, 2};
+    p.repeat = glm::vec2(12.0f);
+    p.warp_color = {0.7f, 0.55f, 0.3f};
+    p.weft_color = {0.3f, 0.4f, 0.65f};
+    p.cy = 0.8f;
+    p.noise = 0.2f;
+    p.transmission = 0.9f;
+    p.transmission_gloss = 0.5f;
+    for (bool fromBehind : {false, true}) {
+        SceneDescription scene = flatClothScene(p);
+        PunctualLight under;  // behind the cloth seen from above, in front of it seen from below
+        under.type = PunctualLight::Type::Point;
+        under.position = {0.4f, -1.2f, -0.3f};
+        under.intensity = glm::vec3(2.5f, 2.2f, 2.0f);
+        scene.lights.push_back(under);
+        if (fromBehind) {
+            // Mirrored below the cloth (y -> -y), its x axis turned to stay right-handed.
+            glm::mat4& m = scene.camera.cameraToWorld;
+            for (int c = 0; c < 4; ++c) m[c][1] = -m[c][1];
+            m[0] = -m[0];
+        }
+        scene.environment.color = glm::vec3(0.3f, 0.0f, 0.3f);
+        const Image gpu = previewRadiance(scene, kWidth, kHeight, true, false);
+        std::vector<uint8_t> onYarn;
+        const Image cpu = coreDirectLighting(scene, kWidth, kHeight, 1, &onYarn);
+        const ImageError e = relativeError(gpu, cpu, onYarn);
+        // What transmission adds, so the test is seen to test it: core's image without it.
+        WovenParams opaque = p;
+        opaque.transmission = 0.0f;
+        SceneDescription opaqueScene = scene;
+        opaqueScene.materials[0].woven = opaque;
+        const ImageError added = relativeError(coreDirectLighting(opaqueScene, kWidth, kHeight, 1, nullptr), cpu, onYarn);
+        std::cout << (fromBehind ? "back" : "front") << ": " << e.pixels << " yarn pixels, mean relative error " << e.mean
+                  << ", 99th percentile " << e.p99 << "; without transmission core differs by " << added.mean << "\n";
+        ASSERT_GT(e.pixels, size_t(kWidth * kHeight / 4));
+        EXPECT_GT(added.mean, 0.1);
+        // The issue asks for 2 % on direct light; both evaluate the same formulas in single
+        // precision, so what is left is float rounding, as in the reflection-only cases above:
+        // measured on llvmpipe, mean 7e-6 (front) and 4e-6 (back), 99th percentile 1.4e-4 and
+        // 5e-5; the same bounds as theirs. The cosine about the seen yarn's normal instead of the
+        // transmission's gives a mean of 0.03 seen from the front and 0.2 from the back.
+        EXPECT_LT(e.mean, 1e-4);
+        EXPECT_LT(e.p99, 5e-3);
+    }
+}
+
 }  // namespace
 }  // namespace woven::test
 
