@@ -2,8 +2,8 @@
 # Regenerates docs/RESULTS.md and its pictures: convergence of both integrators on the two
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
 # render benchmarks, preview frame time, the paper's figures and the sample drafts, the weave
-# filter's time to a clean frame on the default scene and the paper's satin, and the bakes. About
-# 31 minutes on 2 cores.
+# filter's time to a clean frame on the default scene and the paper's satin, the bakes, and the
+# backlit scenes with and without yarn transmission. About 37 minutes on 2 cores.
 # Usage: tools/make_results.sh [build-dir]   (builds first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -187,6 +187,13 @@ bake_figure() {
   bake_figure paper_c_twill bake_twill
   bake_figure houndstooth bake_houndstooth
   bake_figure coarse_drape bake_gaps --woven 'Cloth={"yarn_width":0.75,"warp_width":0.7,"cy":0.8}'
+  echo
+  echo "## Light through the yarns (transmission)"
+  echo
+  echo "Yarns that pass light (docs/MODEL_TRANSMISSION.md): each scene with its \`transmission\` and with"
+  echo "it set to 0, at the scene file's size, samples and integrator; woven's render times."
+  echo
+  tools/transmission_pictures.sh "$woven"
 } > "$tmp"
 mv "$tmp" "$md"
 trap - EXIT
