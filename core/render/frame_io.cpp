@@ -313,7 +313,9 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
             for (int c = 0; c < int(std::strlen(kExactGroups[g].channels)); ++c)
                 channel(exactChannelName(kExactGroups[g], w, c), OIIO::TypeDesc::FLOAT);
     spec.nchannels = int(spec.channelnames.size());
-    spec.attribute("compression", "zip");
+    // RLE: of a 640x480 frame's 95 channels, ZIP took 4.2 s to write on the 2-core VM for 38 MB,
+    // RLE 0.7 s for 50 MB (PIZ 2.1 s, 50 MB): the render, not the file, should take the time.
+    spec.attribute("compression", "rle");
     if (exr.samples) {
         spec.attribute(kFirstSampleAttribute, std::to_string(exr.samples->first));
         spec.attribute(kSampleCountAttribute, std::to_string(exr.samples->count));

@@ -32,7 +32,7 @@ struct ExrImage {
 };
 enum class ExrPrecision { Half, Float };
 
-// Writes one ZIP-compressed part whose channels are all half or float, named R, G, B or
+// Writes one RLE-compressed part whose channels are all half or float, named R, G, B or
 // layer.pass.channel as compositors read layers (Blender 3.4 loads no file with other types or
 // names: tests/app/exr_readers_test.cpp):
 //   R, G, B            the beauty (`image`, in `precision`), denoised where `noisy` is set;
