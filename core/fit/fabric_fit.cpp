@@ -210,7 +210,11 @@ private:
         return total;
     }
 
-    double evaluate(const WovenParams& p) { return evaluate(p, render(p), true); }
+    // A render that Ctrl-C cut short holds fewer samples than the others: it is not compared.
+    double evaluate(const WovenParams& p) {
+        std::vector<Image> images = render(p);
+        return cancel_.load() ? INFINITY : evaluate(p, std::move(images), true);
+    }
 
     // Stage 1: each direction's peak in the first shot that shows one.
     glm::vec2 threadCountsFromPhotos(glm::vec2 repeat) {

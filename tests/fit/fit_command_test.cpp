@@ -2,8 +2,15 @@
 // message naming the file, a budget too short for the stages, the report folder.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
 
 #include "capture_rig.h"
 #include "run_woven.h"
@@ -95,6 +102,40 @@ TEST_F(FitCommand, RenderTakesAShotAndSaysItDoesNotUseThePhoto) {
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("is for woven fit; the render does not use it"), std::string::npos) << r.out;
     EXPECT_TRUE(std::filesystem::exists(file("frame.png")));
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Ctrl-C once the fit has reported progress: the best fit so far, exit status 130. The process is
+// started by fork and exec, as the signal needs its pid.
+TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
+    const std::string path = shot();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (!freopen(file("stderr.txt").c_str(), "w", stderr) || !freopen(file("stdout.txt").c_str(), "w", stdout)) _exit(127);
+        const std::string out = file("out.json");
+        execl(WOVEN_EXECUTABLE, WOVEN_EXECUTABLE, "fit", path.c_str(), "--target", "Swatch", "-o", out.c_str(), "--time",
+              "600", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (readText(file("stderr.txt")).find("renders") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const std::string err = readText(file("stderr.txt"));
+    ASSERT_TRUE(WIFEXITED(status)) << err;
+    EXPECT_EQ(WEXITSTATUS(status), 130) << err;
+    EXPECT_NE(err.find("interrupted: wrote the best fit so far to " + file("out.json")), std::string::npos) << err;
+    std::ifstream in(file("out.json"));
+    ASSERT_TRUE(in) << err;
+    EXPECT_TRUE(nlohmann::json::parse(in).contains("pattern"));
 }
 
 }  // namespace
