@@ -131,13 +131,13 @@ TEST(ExrChunks, ANegativeLineOffsetIsRefused) {
     writeExr(dir.file("part.exr"), exr);
     std::ifstream in(dir.file("part.exr"), std::ios::binary);
     Bytes b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    // One chunk (ZIP holds 16 lines), so the offset table is one 64-bit offset pointing just
-    // past itself.
+    // One chunk a line (frame files are RLE-compressed), so the offset table is two 64-bit
+    // offsets, the first pointing just past the table.
     size_t table = 0;
     for (size_t at = 8; at + 8 <= b.size() && !table; ++at) {
         uint64_t v = 0;
         for (int i = 7; i >= 0; --i) v = v << 8 | b[at + size_t(i)];
-        if (v == at + 8) table = at;
+        if (v == at + 2 * 8) table = at;
     }
     ASSERT_NE(table, 0u);
     std::fill(b.begin() + long(table), b.begin() + long(table) + 8, 0xff);
