@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 
@@ -64,9 +65,9 @@ TEST(Assets, EverySceneFileLoads) {
         if (entry.path().extension() != ".json") continue;
         SCOPED_TRACE(entry.path().string());
         const SceneDescription scene = loadScene(entry.path().string());
-        const int cloth = materialNamed(scene, "Cloth");
-        ASSERT_GE(cloth, 0);
-        EXPECT_TRUE(scene.materials[cloth].woven.has_value());
+        // Each shows a woven cloth (most name it "Cloth"; the lampshade's is its "Shade").
+        EXPECT_TRUE(std::any_of(scene.materials.begin(), scene.materials.end(),
+                                [](const auto& m) { return m.woven.has_value(); }));
         EXPECT_TRUE(hasEmitter(scene) || !scene.lights.empty() || scene.environment.color != glm::vec3(0.0f));
         ++count;
     }
