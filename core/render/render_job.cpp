@@ -175,8 +175,8 @@ RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     if (!scene.render.sampler.empty()) {
         const auto* end = std::end(kSamplerNames);
         if (std::find(std::begin(kSamplerNames), end, scene.render.sampler) == end)
-            throw SceneError(scene.source + ": render.sampler: must be "sobol" or "independent", not "" +
-                             scene.render.sampler + """);
+            throw SceneError(scene.source + ": render.sampler: must be \"sobol\" or \"independent\", not \"" +
+                             scene.render.sampler + "\"");
         settings.sampler = samplerKind(scene.render.sampler);
     }
     return settings;
