@@ -87,13 +87,13 @@ void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
     if (!assignments.empty()) assignWoven(scene, assignments);
     // An --environment given is the user's choice, even a black one.
     if (!options.environment.empty()) return;
-    const float E = punctualAndEnvironmentIrradiance(scene);
+    const float E = lightIrradianceAtCentre(scene);
     switch (lightByDefault(scene)) {
         case DefaultLighting::None: break;
         case DefaultLighting::NoLight:
             std::cerr << "note: " << scene.source
-                      << " has no light source (punctual light or environment): lit by woven's studio environment "
-                         "(--environment FILE|GREY|none to choose)\n";
+                      << " has no light source (punctual light, environment, or emitters bright enough to light it): lit by woven's "
+                         "studio environment (--environment FILE|GREY|none to choose)\n";
             break;
         case DefaultLighting::TooDim:
             std::cerr << "note: " << scene.source << " is lit too dimly to see (about " << E << " W/m^2, " << E * 683.0f

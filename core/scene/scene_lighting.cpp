@@ -9,6 +9,7 @@
 #include "environment_mapping.h"
 #include "image_io.h"
 #include "light_limits.h"
+#include "mesh_instances.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
 
@@ -44,9 +45,39 @@ bool hasLightSources(const SceneDescription& scene) {
     for (const PunctualLight& l : scene.lights)
         if (anyPositive(l.intensity)) return true;
     const Environment& env = scene.environment;
-    if (!anyPositive(env.color)) return false;
-    if (!env.image) return true;
-    return std::any_of(env.image->pixels.begin(), env.image->pixels.end(), anyPositive);
+    if (anyPositive(env.color) &&
+        (!env.image || std::any_of(env.image->pixels.begin(), env.image->pixels.end(), anyPositive)))
+        return true;
+    return emitterIrradiance(scene, sceneBounds(scene).centre()) >= kDimIrradiance;
+}
+
+float emitterIrradiance(const SceneDescription& scene, const glm::vec3& at) {
+    double sum = 0.0;
+    for (const Mesh& mesh : scene.meshes) {
+        if (mesh.material < 0 || size_t(mesh.material) >= scene.materials.size()) continue;
+        const Material& material = scene.materials[size_t(mesh.material)];
+        const float L = luminance(material.emission);
+        if (!(L > 0.0f)) continue;
+        const size_t n = copies(mesh);
+        for (size_t copy = 0; copy < n; ++copy) {
+            const glm::mat4 place = mesh.instances ? (*mesh.instances)[copy] : glm::mat4(1.0f);
+            for (const glm::uvec3& t : mesh.triangles) {
+                const glm::vec3 a = glm::vec3(place * glm::vec4(mesh.positions[t.x], 1.0f));
+                const glm::vec3 b = glm::vec3(place * glm::vec4(mesh.positions[t.y], 1.0f));
+                const glm::vec3 c = glm::vec3(place * glm::vec4(mesh.positions[t.z], 1.0f));
+                const glm::vec3 n2 = glm::cross(b - a, c - a);  // twice the area along the normal
+                const float area = 0.5f * glm::length(n2);
+                if (!(area > 0.0f)) continue;
+                const glm::vec3 toAt = at - (a + b + c) / 3.0f;
+                const float d2 = std::max(glm::dot(toAt, toAt), area);
+                // The front's emission (a two-sided material also lights from the back).
+                float cosine = 0.5f * glm::dot(n2, toAt) / (area * std::sqrt(glm::dot(toAt, toAt)) + 1e-30f);
+                if (material.doubleSided) cosine = std::abs(cosine);
+                if (cosine > 0.0f) sum += double(L) * area * cosine / d2;
+            }
+        }
+    }
+    return float(sum);
 }
 
 Environment studioEnvironment() {
@@ -78,7 +109,7 @@ Environment studioEnvironment() {
     return env;
 }
 
-float punctualAndEnvironmentIrradiance(const SceneDescription& scene) {
+float lightIrradianceAtCentre(const SceneDescription& scene) {
     const SceneBox box = sceneBounds(scene);
     const glm::vec3 centre = box.centre();
     float sum = 0.0f;
@@ -95,13 +126,13 @@ float punctualAndEnvironmentIrradiance(const SceneDescription& scene) {
         for (const glm::vec3& p : env.image->pixels) total += luminance(p);
         mean *= float(total / double(env.image->pixels.size()));
     }
-    return sum + 3.14159265f * mean;
+    return sum + 3.14159265f * mean + emitterIrradiance(scene, centre);
 }
 
 DefaultLighting lightByDefault(SceneDescription& scene) {
     if (scene.lightingFromSceneFile) return DefaultLighting::None;
     const DefaultLighting why = !hasLightSources(scene)                               ? DefaultLighting::NoLight
-                                : punctualAndEnvironmentIrradiance(scene) < kDimIrradiance ? DefaultLighting::TooDim
+                                : lightIrradianceAtCentre(scene) < kDimIrradiance ? DefaultLighting::TooDim
                                                                                     : DefaultLighting::None;
     if (why != DefaultLighting::None) scene.environment = studioEnvironment();
     return why;

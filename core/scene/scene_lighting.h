@@ -10,15 +10,21 @@
 
 namespace woven {
 
-// Whether the scene brings a light source: a punctual light of non-zero intensity or an
-// environment brighter than black. Emissive materials do not count: in glTF files they are
-// screens, LEDs and signs far more often than the light a scene is meant to be seen by.
+// Whether the scene brings a light source: a punctual light of non-zero intensity, an
+// environment brighter than black, or emissive surfaces that light the scene's centre at least
+// kDimIrradiance (emitterIrradiance()), as a lamp does. Fainter emitters do not count: in glTF
+// files they are screens, LEDs and signs far more often than the light a scene is seen by.
 bool hasLightSources(const SceneDescription& scene);
 
-// The irradiance (W/m^2, luminance) the scene's punctual lights and environment give a surface
-// facing each at the centre of the scene's bounds, unoccluded: a scale for telling a scene lit
-// too dimly to see (glTF lights of a few lux or candela, read as the photometric units they are).
-float punctualAndEnvironmentIrradiance(const SceneDescription& scene);
+// The irradiance (W/m^2, luminance) the scene's punctual lights, environment and emitters give a
+// surface facing each at the centre of the scene's bounds, unoccluded: a scale for telling a
+// scene lit too dimly to see (glTF lights of a few lux or candela, read as the photometric units
+// they are).
+float lightIrradianceAtCentre(const SceneDescription& scene);
+
+// The part of it from emissive surfaces (their materials' emission factors, textures ignored):
+// each triangle as a small area light, L A cos / d^2 with d^2 at least the triangle's area.
+float emitterIrradiance(const SceneDescription& scene, const glm::vec3& at);
 
 // The built-in studio environment (an equirectangular image, 512 x 256).
 Environment studioEnvironment();

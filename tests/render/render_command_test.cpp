@@ -63,10 +63,10 @@ Result runWoven(const std::vector<std::string>& args, const test::TempDir& dir) 
 
 // A floor quad of material "cloth" (woven through WOVEN_fabric-free glTF: made woven on the
 // command line) with texture coordinates `clothUv`, a ceiling lamp when `withLamp`, and a camera
-// looking at the floor.
+// looking at the floor. The lamp (1 m^2, 1 m above the scene's centre) has radiance `lampEmission`.
 const std::vector<glm::vec2> kQuadUv{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
 void writeScene(const std::string& path, bool withLamp, bool nanVertex = false, const nlohmann::json& clothWoven = {},
-                const std::vector<glm::vec2>& clothUv = kQuadUv) {
+                const std::vector<glm::vec2>& clothUv = kQuadUv, float lampEmission = 1.0f) {
     test::GltfBuilder b;
     auto addQuad = [&](std::vector<glm::vec3> p, int material, const std::vector<glm::vec2>& uv) {
         const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}, {"TEXCOORD_0", b.addVec2(uv)}}},
@@ -83,7 +83,7 @@ void writeScene(const std::string& path, bool withLamp, bool nanVertex = false, 
     const float nan = std::nanf("");
     std::vector<int> roots{addQuad({{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {nanVertex ? nan : -1.0f, 0, -1}}, cloth, clothUv)};
     if (withLamp) {
-        const int lamp = b.addMaterial({{"name", "lamp"}, {"emissiveFactor", {1.0, 1.0, 1.0}}});
+        const int lamp = b.addMaterial({{"name", "lamp"}, {"emissiveFactor", {lampEmission, lampEmission, lampEmission}}});
         roots.push_back(addQuad({{-0.5f, 2, -0.5f}, {0.5f, 2, -0.5f}, {0.5f, 2, 0.5f}, {-0.5f, 2, 0.5f}}, lamp, kQuadUv));  // facing down
     }
     b.json()["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}};
@@ -140,7 +140,7 @@ TEST(RenderCommand, SceneWithoutLightsIsLitByTheStudioEnvironmentAndSaysSo) {
     const Result r = runWoven({"render", dir.file("dark.gltf"), "--spp", "2", "--width", "32", "--height", "24",
                                "--out", dir.file("lit.exr")}, dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("dark.gltf has no light source (punctual light or environment): lit by woven's studio environment"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("dark.gltf has no light source (punctual light, environment, or emitters bright enough to light it): lit by woven's studio environment"), std::string::npos) << r.err;
     double sum = 0.0;
     for (const glm::vec3& p : readExr(dir.file("lit.exr")).image.pixels) sum += p.r + p.g + p.b;
     EXPECT_GT(sum, 0.0);
@@ -151,6 +151,31 @@ double meanRadiance(const std::string& exr) {
     double sum = 0.0;
     for (const glm::vec3& p : image.pixels) sum += luminance(p);
     return sum / double(image.pixels.size());
+}
+
+TEST(RenderCommand, AnEmissiveLampIsTheScenesLightAndAFaintScreenIsNot) {
+    // The lamp gives the scene's centre about 1 W/m^2 (radiance 1 x 1 m^2 / (1 m)^2), 20 times
+    // kDimIrradiance: the frame is the one its own light gives, bit for bit, with nothing added.
+    test::TempDir dir;
+    writeScene(dir.file("lamp.gltf"), true);
+    const std::vector<std::string> frame{"--spp", "2", "--width", "16", "--height", "12", "--no-denoise"};
+    auto render = [&](const std::string& scene, const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args{"render", dir.file(scene), "--out", dir.file(out)};
+        args.insert(args.end(), frame.begin(), frame.end());
+        args.insert(args.end(), extra.begin(), extra.end());
+        return runWoven(args, dir);
+    };
+    const Result lamp = render("lamp.gltf", "lamp.exr", {});
+    ASSERT_EQ(lamp.exitCode, 0) << lamp.err;
+    EXPECT_EQ(lamp.err.find("studio"), std::string::npos) << lamp.err;
+    const Result own = render("lamp.gltf", "own.exr", {"--environment", "none"});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    EXPECT_EQ(readExr(dir.file("lamp.exr")).image.pixels, readExr(dir.file("own.exr")).image.pixels);
+    // A screen of radiance 0.01 gives 0.01 W/m^2 there, a fifth of kDimIrradiance: the studio lights it.
+    writeScene(dir.file("screen.gltf"), true, false, {}, kQuadUv, 0.01f);
+    const Result screen = render("screen.gltf", "screen.exr", {});
+    ASSERT_EQ(screen.exitCode, 0) << screen.err;
+    EXPECT_NE(screen.err.find("screen.gltf has no light source"), std::string::npos) << screen.err;
 }
 
 TEST(RenderCommand, SceneFilesThatChooseNoLightingAreLitAsTheirGltfIs) {
