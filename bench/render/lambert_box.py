@@ -23,16 +23,9 @@ def quad(corner, edge_u, edge_v):
     return p, [[c / length for c in n]] * 4, [0, 1, 2, 0, 2, 3]
 
 
-def main(out):
-    # (name, corner, u, v, material): each wall faces into the box, which spans [-1, 1]^3.
-    parts = [
-        ("floor", [-1, -1, 1], [2, 0, 0], [0, 0, -2], 0),
-        ("ceiling", [-1, 1, -1], [2, 0, 0], [0, 0, 2], 0),
-        ("back", [-1, -1, -1], [2, 0, 0], [0, 2, 0], 0),
-        ("left", [-1, -1, 1], [0, 0, -2], [0, 2, 0], 1),
-        ("right", [1, -1, -1], [0, 0, 2], [0, 2, 0], 2),
-        ("lamp", [-0.25, 0.98, -0.25], [0.5, 0, 0], [0, 0, 0.5], 3),
-    ]
+def quads_gltf(parts, materials, camera_node, yfov, generator):
+    """A self-contained glTF of parallelograms, (name, corner, u, v, material index) each one mesh and
+    node, with the materials, and a camera (its node's placement, its vertical field of view)."""
     blob, views, accessors, meshes, nodes = b"", [], [], [], []
     for name, corner, u, v, material in parts:
         positions, normals, indices = quad(corner, u, v)
@@ -53,6 +46,29 @@ def main(out):
         meshes.append({"name": name, "primitives": [{"attributes": attributes, "indices": len(accessors) - 1,
                                                      "material": material}]})
         nodes.append({"name": name, "mesh": len(meshes) - 1})
+    nodes.append(dict({"name": "camera", "camera": 0}, **camera_node))
+    return {
+        "asset": {"version": "2.0", "generator": generator},
+        "extensionsUsed": ["KHR_materials_specular", "KHR_materials_emissive_strength"],
+        "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
+        "cameras": [{"type": "perspective", "perspective": {"yfov": yfov, "aspectRatio": 1, "znear": 0.05}}],
+        "materials": materials,
+        "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(blob).decode()}],
+        "bufferViews": views, "accessors": accessors,
+    }
+
+
+def main(out):
+    # (name, corner, u, v, material): each wall faces into the box, which spans [-1, 1]^3.
+    parts = [
+        ("floor", [-1, -1, 1], [2, 0, 0], [0, 0, -2], 0),
+        ("ceiling", [-1, 1, -1], [2, 0, 0], [0, 0, 2], 0),
+        ("back", [-1, -1, -1], [2, 0, 0], [0, 2, 0], 0),
+        ("left", [-1, -1, 1], [0, 0, -2], [0, 2, 0], 1),
+        ("right", [1, -1, -1], [0, 0, 2], [0, 2, 0], 2),
+        ("lamp", [-0.25, 0.98, -0.25], [0.5, 0, 0], [0, 0, 0.5], 3),
+    ]
 
     def lambert(name, colour):
         return {"name": name, "doubleSided": True,
@@ -62,21 +78,11 @@ def main(out):
     lamp = lambert("lamp", [0, 0, 0])
     lamp["emissiveFactor"] = [1, 1, 1]
     lamp["extensions"]["KHR_materials_emissive_strength"] = {"emissiveStrength": 10}
-    nodes.append({"name": "camera", "camera": 0, "translation": [0, 0, 3.6]})
-    gltf = {
-        "asset": {"version": "2.0", "generator": "woven bench/render/lambert_box.py"},
-        "extensionsUsed": ["KHR_materials_specular", "KHR_materials_emissive_strength"],
-        "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.62, "aspectRatio": 1, "znear": 0.05}}],
-        "materials": [lambert("white", [0.8, 0.8, 0.8]), lambert("red", [0.8, 0.1, 0.1]),
-                      lambert("green", [0.1, 0.8, 0.1]), lamp],
-        "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
-                     base64.b64encode(blob).decode()}],
-        "bufferViews": views, "accessors": accessors,
-    }
+    materials = [lambert("white", [0.8, 0.8, 0.8]), lambert("red", [0.8, 0.1, 0.1]),
+                 lambert("green", [0.1, 0.8, 0.1]), lamp]
+    gltf = quads_gltf(parts, materials, {"translation": [0, 0, 3.6]}, 0.62, "woven bench/render/lambert_box.py")
     with open(out, "w") as f:
         json.dump(gltf, f, indent=1)
-
 
 if __name__ == "__main__":
     main(sys.argv[1])

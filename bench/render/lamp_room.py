@@ -7,14 +7,12 @@ light comes from the few lamps near it, which a light choice by power alone does
     python3 bench/render/lamp_room.py OUT.gltf
 """
 
-import base64
 import json
 import random
-import struct
 import sys
 
 sys.dont_write_bytecode = True
-from lambert_box import quad  # noqa: E402  (the same parallelogram writer)
+from lambert_box import quads_gltf  # noqa: E402  (the same parallelogram scene writer)
 
 
 def main(out):
@@ -47,39 +45,10 @@ def main(out):
                           "extensions": {"KHR_materials_specular": {"specularFactor": 0},
                                          "KHR_materials_emissive_strength": {"emissiveStrength": strength}}})
     index = {m["name"]: i for i, m in enumerate(materials)}
-    blob, views, accessors, meshes, nodes = b"", [], [], [], []
-    for name, corner, u, v, material in parts:
-        positions, normals, indices = quad(corner, u, v)
-        attributes = {}
-        for key, data in (("POSITION", positions), ("NORMAL", normals)):
-            flat = [c for p in data for c in p]
-            views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": 4 * len(flat), "target": 34962})
-            accessor = {"bufferView": len(views) - 1, "componentType": 5126, "count": len(data), "type": "VEC3"}
-            if key == "POSITION":
-                accessor["min"] = [min(p[i] for p in data) for i in range(3)]
-                accessor["max"] = [max(p[i] for p in data) for i in range(3)]
-            accessors.append(accessor)
-            attributes[key] = len(accessors) - 1
-            blob += struct.pack("<%df" % len(flat), *flat)
-        views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": 4 * len(indices), "target": 34963})
-        accessors.append({"bufferView": len(views) - 1, "componentType": 5125, "count": len(indices), "type": "SCALAR"})
-        blob += struct.pack("<%dI" % len(indices), *indices)
-        meshes.append({"name": name, "primitives": [{"attributes": attributes, "indices": len(accessors) - 1,
-                                                     "material": index[material]}]})
-        nodes.append({"name": name, "mesh": len(meshes) - 1})
+    parts = [(name, corner, u, v, index[material]) for name, corner, u, v, material in parts]
     # In the corner (3.5, 1.6, 3.5), looking towards (-1, 1.0, -1): yaw 45 deg, a little down.
-    nodes.append({"name": "camera", "camera": 0, "translation": [3.5, 1.6, 3.5],
-                  "rotation": [-0.0435, 0.3823, 0.0180, 0.9229]})
-    gltf = {
-        "asset": {"version": "2.0", "generator": "woven bench/render/lamp_room.py"},
-        "extensionsUsed": ["KHR_materials_specular", "KHR_materials_emissive_strength"],
-        "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "aspectRatio": 1, "znear": 0.05}}],
-        "materials": materials,
-        "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
-                     base64.b64encode(blob).decode()}],
-        "bufferViews": views, "accessors": accessors,
-    }
+    camera = {"translation": [3.5, 1.6, 3.5], "rotation": [-0.0435, 0.3823, 0.0180, 0.9229]}
+    gltf = quads_gltf(parts, materials, camera, 1.0, "woven bench/render/lamp_room.py")
     with open(out, "w") as f:
         json.dump(gltf, f, indent=1)
 
