@@ -123,7 +123,7 @@ ExrImage render(bool withSamples) {
                 exr.sampleSums.push_back(sum);
             }
         exr.samples = SampleRange{16, 4};
-        exr.frame = FrameIdentity{"0123456789abcdef", 7, "auto: bdpt", 8, false};
+        exr.frame = FrameIdentity{"0123456789abcdef", 7, "auto: bdpt", 8, false, "sobol"};
     }
     return exr;
 }

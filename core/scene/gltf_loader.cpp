@@ -151,6 +151,28 @@ private:
         std::cerr << "warning: " << path_ << ": " << message << "\n";
     }
 
+    // A .glb's chunks must lie within the file its header sizes: tinygltf copies a chunk by the
+    // length the chunk claims, so a file cut short (or a length field out of range) would have it
+    // read past the end of the buffer.
+    void checkGlbChunks(const std::vector<unsigned char>& file) const {
+        if (file.size() < 4 || std::memcmp(file.data(), "glTF", 4) != 0) return;
+        if (file.size() < 20) fail("the binary glTF file is cut short: " + std::to_string(file.size()) + " bytes, under its 20-byte header");
+        uint32_t total = 0;
+        std::memcpy(&total, file.data() + 8, 4);
+        if (total > file.size())
+            fail("the binary glTF file is cut short: its header says " + std::to_string(total) + " bytes, the file has " +
+                 std::to_string(file.size()));
+        for (size_t at = 12; at < total;) {
+            if (total - at < 8) fail("the binary glTF file's chunk header at byte " + std::to_string(at) + " is cut short");
+            uint32_t length = 0;
+            std::memcpy(&length, file.data() + at, 4);
+            if (length > total - at - 8)
+                fail("the binary glTF file's chunk at byte " + std::to_string(at) + " says " + std::to_string(length) +
+                     " bytes, past the file's end (" + std::to_string(total - at - 8) + " bytes left)");
+            at += 8 + size_t(length);
+        }
+    }
+
     // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
     // Nesting deeper than woven reads is refused here, before tinygltf walks it.
     nlohmann::json jsonPart(const std::vector<unsigned char>& file) const {
@@ -176,6 +198,7 @@ private:
             throw SceneError(e.what());
         }
         scene_.inputFiles.push_back(path_);
+        checkGlbChunks(file);
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
         document_ = jsonPart(file);
         // Compressed files hold what tinygltf refuses: stand-ins (replaced when decoding) first.

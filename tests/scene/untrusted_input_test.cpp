@@ -150,6 +150,28 @@ TEST(UntrustedGltf, CoincidentCopiesOfATriangleAreDroppedAndCountedInOneLine) {
     EXPECT_EQ(scene.warnings[0], "dropped 399998 duplicate triangles in 2 primitives ('a/pile/0', 'b/pile/0')");
 }
 
+// fuzz_gltf's find: a .glb one byte short, whose binary chunk then claims a byte past the file's
+// end, had tinygltf copy past its buffer. Refused, naming the file, whether or not the header's
+// total length was cut to match.
+TEST(UntrustedGltf, ABinaryFileCutShortIsRefusedBeforeItsChunksAreRead) {
+    TempDir dir;
+    GltfBuilder b;
+    const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})}}}}, "tri");
+    b.setScene({b.addNode({{"mesh", mesh}})});
+    b.writeGlb(dir.file("whole.glb"));
+    ASSERT_EQ(loadError(dir.file("whole.glb")), "(no error)");
+    std::ifstream in(dir.file("whole.glb"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.pop_back();
+    std::ofstream(dir.file("short.glb"), std::ios::binary) << bytes;
+    EXPECT_THAT(loadError(dir.file("short.glb")), HasSubstr("short.glb: the binary glTF file is cut short"));
+    const uint32_t total = uint32_t(bytes.size());
+    bytes.replace(8, 4, reinterpret_cast<const char*>(&total), 4);
+    std::ofstream(dir.file("chunk.glb"), std::ios::binary) << bytes;
+    EXPECT_THAT(loadError(dir.file("chunk.glb")), HasSubstr("chunk.glb: the binary glTF file's chunk at byte"));
+    EXPECT_THAT(loadError(dir.file("chunk.glb")), HasSubstr("past the file's end"));
+}
+
 std::string imageError(const std::string& bytes) {
     try {
         decodeTexture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "texture.x");
