@@ -156,18 +156,18 @@ private:
     // read past the end of the buffer.
     void checkGlbChunks(const std::vector<unsigned char>& file) const {
         if (file.size() < 4 || std::memcmp(file.data(), "glTF", 4) != 0) return;
-        if (file.size() < 20) fail("the binary glTF file is cut short: " + std::to_string(file.size()) + " bytes, under its 20-byte header");
+        if (file.size() < 20) fail("cannot read glTF binary: the file is cut short: " + std::to_string(file.size()) + " bytes, under its 20-byte header");
         uint32_t total = 0;
         std::memcpy(&total, file.data() + 8, 4);
         if (total > file.size())
-            fail("the binary glTF file is cut short: its header says " + std::to_string(total) + " bytes, the file has " +
+            fail("cannot read glTF binary: the file is cut short: its header says " + std::to_string(total) + " bytes, the file has " +
                  std::to_string(file.size()));
         for (size_t at = 12; at < total;) {
-            if (total - at < 8) fail("the binary glTF file's chunk header at byte " + std::to_string(at) + " is cut short");
+            if (total - at < 8) fail("cannot read glTF binary: the chunk header at byte " + std::to_string(at) + " is cut short");
             uint32_t length = 0;
             std::memcpy(&length, file.data() + at, 4);
             if (length > total - at - 8)
-                fail("the binary glTF file's chunk at byte " + std::to_string(at) + " says " + std::to_string(length) +
+                fail("cannot read glTF binary: the chunk at byte " + std::to_string(at) + " says " + std::to_string(length) +
                      " bytes, past the file's end (" + std::to_string(total - at - 8) + " bytes left)");
             at += 8 + size_t(length);
         }

@@ -164,11 +164,11 @@ TEST(UntrustedGltf, ABinaryFileCutShortIsRefusedBeforeItsChunksAreRead) {
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     bytes.pop_back();
     std::ofstream(dir.file("short.glb"), std::ios::binary) << bytes;
-    EXPECT_THAT(loadError(dir.file("short.glb")), HasSubstr("short.glb: the binary glTF file is cut short"));
+    EXPECT_THAT(loadError(dir.file("short.glb")), HasSubstr("short.glb: cannot read glTF binary: the file is cut short"));
     const uint32_t total = uint32_t(bytes.size());
     bytes.replace(8, 4, reinterpret_cast<const char*>(&total), 4);
     std::ofstream(dir.file("chunk.glb"), std::ios::binary) << bytes;
-    EXPECT_THAT(loadError(dir.file("chunk.glb")), HasSubstr("chunk.glb: the binary glTF file's chunk at byte"));
+    EXPECT_THAT(loadError(dir.file("chunk.glb")), HasSubstr("chunk.glb: cannot read glTF binary: the chunk at byte"));
     EXPECT_THAT(loadError(dir.file("chunk.glb")), HasSubstr("past the file's end"));
 }
 
