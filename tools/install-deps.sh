@@ -6,12 +6,18 @@
 #                                  tested through a real display), gnuplot (converge's plots), clang
 #                                  and its sanitizer runtime (the fuzz and asan presets), slurm-wlm
 #                                  and munge (a real one-node cluster), Khronos's glTF validator (npm)
+#   tools/install-deps.sh --compare also what the comparisons with Blender Cycles need
+#                                  (tools/cycles_compare, docs/CYCLES_COMPARISON.md; the tests that
+#                                  open frames in Blender run where it is installed): Blender,
+#                                  Python's numpy and OpenImageIO
 set -euo pipefail
 tests=false
+compare=false
 case "${1:-}" in
   "") ;;
   --tests) tests=true ;;
-  *) echo "install-deps.sh: unknown option '$1' (--tests adds what the test suite needs)" >&2; exit 2 ;;
+  --compare) compare=true ;;
+  *) echo "install-deps.sh: unknown option '$1' (--tests adds what the test suite needs, --compare what the Cycles comparisons need)" >&2; exit 2 ;;
 esac
 packages=(
   build-essential cmake ninja-build ccache pkg-config
@@ -26,7 +32,9 @@ test_packages=(
   slurm-wlm munge
   imagemagick  # tools/fabric_sheet.sh stitches docs/RESULTS.md's sheet of the fabric library
 )
+compare_packages=(blender python3-numpy python3-openimageio)
 if $tests; then packages+=("${test_packages[@]}"); fi
+if $compare; then packages+=("${compare_packages[@]}"); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
