@@ -56,18 +56,18 @@ const char* formatExtension(ImageFormat f) {
 }
 
 // The limits, before any pixel is decoded.
-void checkImageSize(int width, int height, int channels, const std::string& name) {
+void checkImageSize(int64_t width, int64_t height, int channels, const std::string& name) {
     if (width <= 0 || height <= 0)
         fail(name, "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")");
     if (width > kMaxImageSide || height > kMaxImageSide ||
-        int64_t(width) * height > kMaxImagePixels)
+        width * height > kMaxImagePixels)
         fail(name, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
                        ", more than woven reads (" + std::to_string(kMaxImageSide) + " on a side, " +
                        std::to_string(kMaxImagePixels / (1 << 20)) + " Mpixels)");
     if (channels <= 0 || channels > kMaxImageChannels)
         fail(name, "the image has " + std::to_string(channels) + " channels (woven reads 1 to " +
                        std::to_string(kMaxImageChannels) + ")");
-    const int64_t decodedBytes = int64_t(width) * height * channels * 4;
+    const int64_t decodedBytes = width * height * channels * 4;
     if (decodedBytes > kMaxImageDecodedBytes)
         fail(name, "the image's " + std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
                        std::to_string(channels) + " channels decode to " + std::to_string(decodedBytes >> 20) +
@@ -85,7 +85,10 @@ std::string oiioError(const OIIO::ImageInput* input) {
 OpenedImage openImage(const unsigned char* data, size_t size, const std::string& name) {
     OpenedImage image;
     image.format = detectFormat(data, size, name);
-    if (image.format == ImageFormat::Exr) checkExrAttributeSizes(data, size, name);
+    // OpenEXR allocates a part's line buffers as it opens the file: the limits come first.
+    if (image.format == ImageFormat::Exr)
+        for (const ExrPartSize& part : checkExrHeaders(data, size, name))
+            if (part.channels > 0) checkImageSize(part.width, part.height, part.channels, name);
     image.memory = std::make_unique<CheckedMemReader>(data, size);
     // The name only tells OpenImageIO which decoder to use: the bytes come from memory. Alpha
     // stays as stored (glTF's is not premultiplied; OpenImageIO would premultiply it).

@@ -28,8 +28,11 @@ constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
 // the exact sums' words.
 constexpr int kMaxImageChannels = 128;
 // All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or a 3840 x 2160
-// frame file with its 95 channels (3 GiB).
-constexpr int64_t kMaxImageDecodedBytes = int64_t(4) << 30;
+// frame file with its 95 channels (3 GiB). The fuzz build sets a lower one (CMakeLists.txt).
+#ifndef WOVEN_MAX_IMAGE_DECODED_MIB
+#define WOVEN_MAX_IMAGE_DECODED_MIB 4096
+#endif
+constexpr int64_t kMaxImageDecodedBytes = int64_t(WOVEN_MAX_IMAGE_DECODED_MIB) << 20;
 constexpr size_t kMaxImageFileBytes = size_t(2) << 30;
 
 // How 8- and 16-bit channels are turned into linear floats. Colour textures (baseColor,

@@ -1,6 +1,6 @@
 // OpenEXR files that fuzz/fuzz_exr found harmful, made here: headers checked before OpenEXR
 // reads them (a 76-byte file whose attribute claimed 1.9 GB took 2.3 GB and 2 s in OpenEXR
-// 3.1), and a line offset of -1 (OpenImageIO's memory reader copied from before the file's
+// 3.1; a box2i of the wrong size, 1.6 GB), and a line offset of -1 (OpenImageIO's memory reader copied from before the file's
 // bytes; the asan preset catches that read).
 #include "exr_header.h"
 
@@ -18,6 +18,7 @@ namespace woven {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using Bytes = std::vector<unsigned char>;
 
 void put(Bytes& b, const std::string& text) { b.insert(b.end(), text.begin(), text.end() + 1); }  // with its null
@@ -40,7 +41,7 @@ Bytes exrWithAttribute(uint32_t flags, uint32_t claimed, size_t actual) {
 
 std::string refusal(const Bytes& b) {
     try {
-        checkExrAttributeSizes(b.data(), b.size(), "sky.exr");
+        checkExrHeaders(b.data(), b.size(), "sky.exr");
     } catch (const ImageError& e) {
         return e.what();
     }
@@ -87,6 +88,71 @@ TEST(ExrHeader, ChannelListsAndPreviewsMustEndWhereTheirSizeSays) {
     put32(huge, 100000);  // 4e10 bytes of pixels claimed in a 16-byte value
     huge.insert(huge.end(), 8, 0);
     EXPECT_THAT(refusal(exrWithValue("preview", huge, 16)), HasSubstr("(preview) does not end"));
+}
+
+// OpenEXR reads a fixed-size value as its type's size whatever the attribute says: fuzz/fuzz_exr's
+// box2i dataWindow of 40 bytes had it read the next attribute from inside the value and allocate
+// 1.6 GB. A string vector's strings must end with the value.
+TEST(ExrHeader, FixedSizeValuesMustHaveTheirTypesSize) {
+    const Bytes box(16, 0);
+    // The 8 bytes exrWithValue puts after the value cut the header short: refusals of 'attr' count.
+    EXPECT_THAT(refusal(exrWithValue("box2i", box, 16)), Not(HasSubstr("'attr'")));
+    Bytes longer = box;
+    longer.resize(40, 0);
+    EXPECT_EQ(refusal(exrWithValue("box2i", longer, 40)),
+              "sky.exr: the OpenEXR attribute 'attr' (box2i) has a size of 40 bytes, but a box2i has 16");
+    EXPECT_THAT(refusal(exrWithValue("compression", Bytes{1, 0}, 2)), HasSubstr("but a compression has 1"));
+    EXPECT_THAT(refusal(exrWithValue("someStudioType", longer, 40)), Not(HasSubstr("'attr'")));  // opaque: read by its size
+}
+
+TEST(ExrHeader, StringVectorsMustEndWhereTheirSizeSays) {
+    Bytes strings;
+    put32(strings, 2);
+    strings.push_back('a');
+    strings.push_back('b');
+    EXPECT_THAT(refusal(exrWithValue("stringvector", strings, 6)), Not(HasSubstr("'attr'")));
+    Bytes huge;
+    put32(huge, 1600000000);  // a string of 1.6 GB claimed in a 6-byte value
+    huge.push_back('a');
+    huge.push_back('b');
+    EXPECT_THAT(refusal(exrWithValue("stringvector", huge, 6)), HasSubstr("(stringvector) does not end"));
+}
+
+// OpenEXR allocates a part's line buffers as it opens the file, from its data window and
+// channels: fuzz/fuzz_exr's header of 1.2 KB claiming a wide window took 663 MB there. woven's
+// image limits are checked on the header first.
+TEST(ExrHeader, TheDataWindowMeetsWovensLimitsBeforeOpenExrOpensTheFile) {
+    const auto header = [](int32_t xMax, int32_t yMax) {
+        Bytes b = {0x76, 0x2f, 0x31, 0x01};
+        put32(b, 2);
+        put(b, "channels");
+        put(b, "chlist");
+        put32(b, 19);
+        put(b, "R");
+        b.insert(b.end(), 16, 0);
+        b.push_back(0);
+        put(b, "dataWindow");
+        put(b, "box2i");
+        put32(b, 16);
+        for (const int32_t v : {0, 0, xMax, yMax}) put32(b, uint32_t(v));
+        b.push_back(0);
+        return b;
+    };
+    const std::vector<ExrPartSize> parts = checkExrHeaders(header(99, 49).data(), header(99, 49).size(), "a.exr");
+    ASSERT_EQ(parts.size(), 1u);
+    EXPECT_EQ(parts[0].width, 100);
+    EXPECT_EQ(parts[0].height, 50);
+    EXPECT_EQ(parts[0].channels, 1);
+    const test::TempDir dir;
+    const std::string path = dir.file("wide.exr");
+    const Bytes wide = header(2147483647, 0);  // 2^31 pixels wide
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(wide.data()), std::streamsize(wide.size()));
+    try {
+        readImage(path);
+        ADD_FAILURE() << "accepted";
+    } catch (const ImageError& e) {
+        EXPECT_THAT(e.what(), HasSubstr(path + ": the image is 2147483648 x 1, more than woven reads"));
+    }
 }
 
 TEST(ExrHeader, CutShortHeadersAreRefused) {
