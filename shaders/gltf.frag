@@ -34,10 +34,7 @@ void main() {
     vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
     bool backSide = dot(wo, ns) < 0.0;
 
-    vec4 base = baseColorFactor * vColor;
-#ifdef MAP_BASE_COLOR
-    base *= lookup(MAP_BASE_COLOR);
-#endif
+    vec4 base = gltfBaseColor();
 #if defined(ALPHA_MASK)
     if (base.a < alphaCutoff) discard;
 #elif defined(ALPHA_BLEND)
@@ -48,85 +45,9 @@ void main() {
     return;
 #endif
 
-    GltfInputs g;
-    g.baseColor = clamp(base.rgb, 0.0, 1.0);
-    float metallic = metallicFactor, roughness = roughnessFactor;
-#ifdef MAP_METALLIC_ROUGHNESS
-    vec4 mr = lookup(MAP_METALLIC_ROUGHNESS);
-    metallic *= mr.b;
-    roughness *= mr.g;
-#endif
-    g.metallic = clamp(metallic, 0.0, 1.0);
-    roughness = clamp(roughness, 0.0, 1.0);
-    g.alpha = clamp(roughness * roughness, 1e-3, 1.0);
-    float anisotropy = anisotropyStrength;
-    vec2 direction = vec2(1.0, 0.0);  // in (tangent, bitangent) space, as core's anisotropyDirection()
-#ifdef MAP_ANISOTROPY
-    vec3 anisotropyTexel = lookup(MAP_ANISOTROPY).rgb;
-    anisotropy *= anisotropyTexel.b;
-    vec2 textureDirection = anisotropyTexel.rg * 2.0 - 1.0;
-    if (dot(textureDirection, textureDirection) > 1e-24) direction = normalize(textureDirection);
-#endif
-    direction = mat2(anisotropyRotation.x, anisotropyRotation.y, -anisotropyRotation.y, anisotropyRotation.x) * direction;
-    anisotropy = clamp(anisotropy, 0.0, 1.0);
-    g.alphaX = clamp(mix(roughness * roughness, 1.0, anisotropy * anisotropy), 1e-3, 1.0);
-    float specular = specularFactor;
-    vec3 specularColor = specularColorFactor;
-#ifdef MAP_SPECULAR
-    specular *= lookup(MAP_SPECULAR).a;
-#endif
-#ifdef MAP_SPECULAR_COLOR
-    specularColor *= lookup(MAP_SPECULAR_COLOR).rgb;
-#endif
-    g.f0 = min(iorF0 * specularColor, vec3(1.0)) * specular;
-    g.f90 = specular;
-    g.transmission = transmissionFactor;
-#ifdef MAP_TRANSMISSION
-    g.transmission *= lookup(MAP_TRANSMISSION).r;
-#endif
-    g.diffuseTransmission = 0.0;
-    g.diffuseTransmissionColor = vec3(0.0);
-#ifdef DIFFUSE_TRANSMISSION
-    g.diffuseTransmission = diffuseTransmissionFactor;
-    g.diffuseTransmissionColor = diffuseTransmissionColorFactor;
-#ifdef MAP_DIFFUSE_TRANSMISSION
-    g.diffuseTransmission *= lookup(MAP_DIFFUSE_TRANSMISSION).a;
-#endif
-#ifdef MAP_DIFFUSE_TRANSMISSION_COLOR
-    g.diffuseTransmissionColor *= lookup(MAP_DIFFUSE_TRANSMISSION_COLOR).rgb;
-#endif
-    g.diffuseTransmission = clamp(g.diffuseTransmission, 0.0, 1.0);
-    g.diffuseTransmissionColor = clamp(g.diffuseTransmissionColor, 0.0, 1.0);
-#endif
-    g.sheenColor = sheenColorFactor;
-    float sheenRoughness = sheenRoughnessFactor;
-#ifdef MAP_SHEEN_COLOR
-    g.sheenColor *= lookup(MAP_SHEEN_COLOR).rgb;
-#endif
-#ifdef MAP_SHEEN_ROUGHNESS
-    sheenRoughness *= lookup(MAP_SHEEN_ROUGHNESS).a;
-#endif
-    g.sheenRoughness = clamp(sheenRoughness, 0.07, 1.0);
-    g.clearcoat = clearcoatFactor;
-    float clearcoatRoughness = clearcoatRoughnessFactor;
-#ifdef MAP_CLEARCOAT
-    g.clearcoat *= lookup(MAP_CLEARCOAT).r;
-#endif
-#ifdef MAP_CLEARCOAT_ROUGHNESS
-    clearcoatRoughness *= lookup(MAP_CLEARCOAT_ROUGHNESS).g;
-#endif
-    g.clearcoatAlpha = clamp(clearcoatRoughness * clearcoatRoughness, 1e-3, 1.0);
-    g.iridescence = iridescenceFactor;
-#ifdef MAP_IRIDESCENCE
-    g.iridescence *= lookup(MAP_IRIDESCENCE).r;
-#endif
-    g.iridescence = clamp(g.iridescence, 0.0, 1.0);
-    g.iridescenceIor = max(iridescenceIor, 1.0);
-    g.iridescenceThickness = iridescenceThickness.y;
-#ifdef MAP_IRIDESCENCE_THICKNESS
-    g.iridescenceThickness = mix(iridescenceThickness.x, iridescenceThickness.y, lookup(MAP_IRIDESCENCE_THICKNESS).g);
-#endif
-    g.iridescenceThickness = max(g.iridescenceThickness, 0.0);
+    float anisotropy;
+    vec2 direction;
+    GltfInputs g = gltfInputs(base.rgb, anisotropy, direction);
 
     // Thin-walled transmission lets light through where the surface neither reflects nor
     // absorbs it: drawn as partial coverage.

@@ -3,6 +3,7 @@
 // samples each, the environment's brightest regions as directional lights and the rest of it as
 // a constant ambient radiance integrated against the lobe. With PREVIEW_SHADOWS, the strongest
 // lights are occluded through ShadowMaps (app/preview/shadow_maps.cpp); the ambient is not.
+// PREVIEW_TRANSMITTED_SHADOWS adds the occluders that let coloured light through.
 #define MAX_LIGHTS 32
 const int LIGHT_POINT = 0, LIGHT_SPOT = 1, LIGHT_DIRECTIONAL = 2, LIGHT_AREA = 3, LIGHT_AREA_TWO_SIDED = 4;
 
@@ -23,23 +24,49 @@ uniform mat4 flatMatrix[MAX_SHADOW_MAPS];
 uniform vec2 flatTexel[MAX_SHADOW_MAPS];     // texel size: x world units, + y per unit of distance
 uniform float cubeSize;
 
-// Fraction of light i that reaches p. The lookup point moves two shadow-map texels along the
-// geometric normal `ng` (on the light's side), so a surface does not shadow itself.
-float lightVisibility(int i, vec3 p, vec3 ng) {
+#ifdef PREVIEW_TRANSMITTED_SHADOWS
+// The nearest occluder that lets light through (a woven cloth whose yarns transmit, a glTF
+// material with diffuse transmission), kept apart from the opaque ones: its depth as above and,
+// per texel, the share of the light it passes (woven_shadow.frag, gltf_shadow.frag; white where
+// there is none).
+uniform samplerCubeArrayShadow transmittedCubes;
+uniform samplerCubeArray transmittedCubeColors;
+uniform sampler2DArrayShadow transmittedFlats;
+uniform sampler2DArray transmittedFlatColors;
+#endif
+
+// Fraction of light i that reaches p, per colour. The lookup point moves two shadow-map texels
+// along the geometric normal `ng` (on the light's side), so a surface does not shadow itself.
+// Behind a transmitting occluder, the light is what it passes; the filtered comparison blends
+// that in across the occluder's edge as it does the opaque shadow's. The colour is looked up
+// only there, and the transmitted depth only where the opaque map lets light through.
+vec3 lightVisibility(int i, vec3 p, vec3 ng) {
     int c = shadowCube[i];
     if (c >= 0) {
         float texel = 2.0 * distance(p, lightPosition[i].xyz) / cubeSize;
         vec3 d = p + ng * (2.0 * texel) - lightPosition[i].xyz;
-        return texture(shadowCubes, vec4(d, float(c)), length(d) / shadowFar[i]);
+        vec4 at = vec4(d, float(c));
+        float depth = length(d) / shadowFar[i];
+        vec3 visible = vec3(texture(shadowCubes, at, depth));
+#ifdef PREVIEW_TRANSMITTED_SHADOWS
+        float behind = visible.r > 0.0 ? 1.0 - texture(transmittedCubes, at, depth) : 0.0;
+        if (behind > 0.0) visible *= mix(vec3(1.0), texture(transmittedCubeColors, at).rgb, behind);
+#endif
+        return visible;
     }
     int f = shadowFlat[i];
-    if (f < 0) return 1.0;
+    if (f < 0) return vec3(1.0);
     // (For a directional light lightPosition is a direction and flatTexel[f].y is 0.)
     float texel = flatTexel[f].x + flatTexel[f].y * distance(p, lightPosition[i].xyz);
     vec4 q = flatMatrix[f] * vec4(p + ng * (2.0 * texel), 1.0);
     vec3 t = q.xyz / q.w * 0.5 + 0.5;
-    if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0)))) return 1.0;
-    return texture(shadowFlats, vec4(t.xy, float(f), t.z));
+    if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0)))) return vec3(1.0);
+    vec3 visible = vec3(texture(shadowFlats, vec4(t.xy, float(f), t.z)));
+#ifdef PREVIEW_TRANSMITTED_SHADOWS
+    float behind = visible.r > 0.0 ? 1.0 - texture(transmittedFlats, vec4(t.xy, float(f), t.z)) : 0.0;
+    if (behind > 0.0) visible *= mix(vec3(1.0), texture(transmittedFlatColors, vec3(t.xy, float(f))).rgb, behind);
+#endif
+    return visible;
 }
 #endif
 

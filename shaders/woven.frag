@@ -93,27 +93,6 @@ vec3 yarnRadiance(YarnPoint y, Frame tangent, vec3 p, vec3 ng, vec3 wo, vec3 pri
 }
 
 #ifdef WOVEN_TRANSMISSION
-// core's yarnTransmittance and YarnTransmission::eval (core/model/yarn_transmission.cpp).
-vec3 yarnTransmittance(vec3 rd, float t) {
-    float peak = max(rd.r, max(rd.g, rd.b));
-    if (!(peak > 0.0)) return vec3(0.0);
-    vec3 hue = rd / peak;
-    return t * (1.0 - rd) * hue * hue;
-}
-vec3 yarnTransmission(Lobe l, vec3 T, float g, vec3 wo, vec3 wi) {
-    if (wo.z * wi.z >= 0.0) return vec3(0.0);
-    float mo = abs(wo.z), mi = abs(wi.z);
-    float lobe = (1.0 - g) * (28.0 / (23.0 * PI));
-    vec3 H = vec3(wo.xy + wi.xy, mo + mi);
-    float len = length(H);
-    if (g > 0.0 && len > 1e-12) {
-        vec3 h = H / len;
-        float sx = h.x * h.x, sy = h.y * h.y, s = sx + sy;
-        float N = s > 0.0 ? (l.ex * sx + l.ey * sy) / s : l.ex;
-        lobe += g * sqrt((l.ex + 1.0) * (l.ey + 1.0)) / (8.0 * PI) * cosPowN(s, N) / (0.5 * len * max(mo, mi));
-    }
-    return T * ((1.0 - l.rs) * (1.0 - pow5(1.0 - 0.5 * mo)) * (1.0 - pow5(1.0 - 0.5 * mi)) * lobe);
-}
 // The lights behind the cloth (on the side of -ng) that the point passes to wo: as core's
 // WovenMaterial::shade, the smaller of both faces' yarns' T through the front face's yarn lobe,
 // whichever face is seen (docs/MODEL_TRANSMISSION.md section 3). `other`: the other face's yarn
@@ -157,22 +136,6 @@ vec3 transmittedLight(YarnPoint y, Frame tangent, YarnPoint other, Frame otherTa
 // The loop over lights is outermost, so each light's direction and falloff is computed once for
 // all 2 x FILTER_SAMPLES frames, not once per frame as reflectedLight() would: that halves the
 // default scene's frame time on llvmpipe, with the same result.
-#ifdef WOVEN_THREADS
-// The mean colour of one side's threads over the pixel's footprint, e + a de/dx + b de/dy for a,
-// b in [-1/2, 1/2]: 4 x 4 sub-footprints, each a filtered lookup of a quarter of its size, so a
-// stripe narrower than a pixel keeps its share and no thread is counted twice.
-vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float dedy) {
-    float scale = 1.0 / float(period);
-    vec4 sum = vec4(0.0);
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            float x = e + (float(i) - 1.5) * 0.25 * dedx + (float(j) - 1.5) * 0.25 * dedy;
-            sum += textureGrad(colors, x * scale, 0.25 * dedx * scale, 0.25 * dedy * scale);
-        }
-    return sum.rgb / max(sum.a, 1e-6);
-}
-#endif
-
 #ifdef WOVEN_TRANSMISSION
 // The far field's light through the yarns from the lights behind: every covered point passes the
 // smaller of the two sides' T (core's WovenMaterial::shade, with the material's own warp and weft
@@ -180,12 +143,8 @@ vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float ded
 // lobe's own normal. An approximation (core's filtered weave reflects only: core shades a cloth
 // whose yarns transmit point by point), so that backlit cloth finer than the pixels still glows.
 vec3 averagedTransmission(Frame front, vec3 p, vec3 ng, vec3 wo, Lobe weft, Lobe warp) {
-#ifdef WOVEN_THREADS
-    vec2 weftT = yarnTexel(1, 1).zw, warpT = yarnTexel(0, 1).zw;  // (t, g) of the sides' own yarns
-#else
-    vec2 weftT = vec2(material.transmission, material.transmission_gloss), warpT = weftT;
-#endif
-    vec3 T = min(yarnTransmittance(weft.rd, weftT.x), yarnTransmittance(warp.rd, warpT.x));
+    vec2 weftT, warpT;
+    vec3 T = ownYarnsTransmittance(weft, warp, weftT, warpT);
     if (T == vec3(0.0)) return vec3(0.0);
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     for (int k = 0; k < FILTER_SAMPLES; ++k) {

@@ -29,4 +29,18 @@ uniform vec4 yarnCoverage;
 // a filtered lookup over a pixel's footprint gives the width-weighted mean colour of the
 // threads it covers.
 uniform sampler1D warpColorTexture, weftColorTexture;
+
+// The mean colour of one side's threads over the pixel's footprint, e + a de/dx + b de/dy for a,
+// b in [-1/2, 1/2]: 4 x 4 sub-footprints, each a filtered lookup of a quarter of its size, so a
+// stripe narrower than a pixel keeps its share and no thread is counted twice.
+vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float dedy) {
+    float scale = 1.0 / float(period);
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            float x = e + (float(i) - 1.5) * 0.25 * dedx + (float(j) - 1.5) * 0.25 * dedy;
+            sum += textureGrad(colors, x * scale, 0.25 * dedx * scale, 0.25 * dedy * scale);
+        }
+    return sum.rgb / max(sum.a, 1e-6);
+}
 #endif

@@ -3,6 +3,8 @@
 
   curtain_window.gltf  a sheer curtain hanging in folds before a bright window, a floor
   lampshade.gltf       an open cylinder (a lampshade) on a table, to be lit from inside
+  coloured_shadow.gltf three sheets over a floor under a lamp, for their shadows: a voile, the same
+                       cloth opaque, and a leaf with KHR_materials_diffuse_transmission
 
 Each glTF holds only geometry and plain materials; the scene files beside them
 (curtain_window*.json, lampshade*.json) make the cloth woven and add the lights. Meshes carry
@@ -143,9 +145,30 @@ def lampshade():
     return gltf(meshes, materials)
 
 
+def coloured_shadow():
+    # Three 0.5 m squares 0.35 m over the floor, side by side along x, normals up; the scene file
+    # makes the first two woven (UVs in metres) and lights them from above.
+    size, height = 0.5, 0.35
+
+    def sheet(x0):
+        return grid(1, 1, lambda s, t: (x0 + (s - 0.5) * size, height, (t - 0.5) * size), lambda s, t: (0.0, 1.0, 0.0),
+                    lambda s, t: (s * size, t * size))
+
+    floor = grid(1, 1, lambda s, t: ((s - 0.5) * 4.0, 0.0, (t - 0.5) * 3.0), lambda s, t: (0.0, 1.0, 0.0), lambda s, t: (s, t))
+    meshes = [("Voile", 0, *sheet(-0.65)), ("Opaque", 1, *sheet(0.0)), ("Leaf", 2, *sheet(0.65)), ("Floor", 3, *floor)]
+    leaf = plain("Leaf", (0.3, 0.5, 0.2))
+    leaf["extensions"] = {"KHR_materials_diffuse_transmission": {"diffuseTransmissionFactor": 0.7,
+                                                                 "diffuseTransmissionColorFactor": [0.2, 0.8, 0.3]}}
+    materials = [plain("Voile", (0.8, 0.8, 0.8)), plain("Opaque", (0.8, 0.8, 0.8)), leaf, plain("Floor", (0.6, 0.6, 0.6))]
+    doc = gltf(meshes, materials)
+    doc["extensionsUsed"] = ["KHR_materials_diffuse_transmission"]
+    return doc
+
+
 def main():
     assets = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets")
-    for name, doc in (("curtain_window.gltf", curtain_window()), ("lampshade.gltf", lampshade())):
+    for name, doc in (("curtain_window.gltf", curtain_window()), ("lampshade.gltf", lampshade()),
+                      ("coloured_shadow.gltf", coloured_shadow())):
         with open(os.path.join(assets, name), "w") as f:
             json.dump(doc, f, separators=(",", ":"))
             f.write("\n")

@@ -86,19 +86,26 @@ std::string gltfUniformsGlsl() {
     return glsl;
 }
 
-std::string gltfProgramPreamble(const Material& m, bool shadows) {
+std::string gltfProgramPreamble(const Material& m, ShadowLookups shadows) {
     std::string defines = mapDefines(gltfMaps(m)) + alphaDefines(m);
     if (m.unlit) defines += "#define UNLIT\n";
     if (m.diffuseTransmission.factor > 0.0f) defines += "#define DIFFUSE_TRANSMISSION\n";
-    if (shadows) defines += "#define PREVIEW_SHADOWS\n";
-    return defines + gltfUniformsGlsl();
+    return defines + shadowLookupDefines(shadows) + gltfUniformsGlsl();
 }
 
 std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
         std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "lighting.glsl", "screen_door.glsl", "texture_maps.glsl",
-                                 "normal_map.glsl", "gltf_iridescence.glsl", "gltf_bxdf.glsl", "gltf.frag"},
+                                 "normal_map.glsl", "gltf_iridescence.glsl", "gltf_bxdf.glsl", "gltf_inputs.glsl", "gltf.frag"},
+        preamble);
+}
+
+std::unique_ptr<ShaderProgram> buildGltfShadowProgram(const std::string& preamble) {
+    return std::make_unique<ShaderProgram>(
+        std::vector<std::string>{"mesh.vert"},
+        std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "texture_maps.glsl", "gltf_iridescence.glsl",
+                                 "gltf_bxdf.glsl", "gltf_inputs.glsl", "shadow_depth.glsl", "gltf_shadow.frag"},
         preamble);
 }
 

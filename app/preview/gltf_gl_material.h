@@ -7,6 +7,7 @@
 
 #include "gpu_textures.h"
 #include "shader_program.h"
+#include "shadow_lookups.h"
 
 namespace woven {
 
@@ -30,11 +31,13 @@ std::vector<MapUse> gltfMaps(const Material& material);
 std::string alphaDefines(const Material& material);
 
 // MAP_<NAME> (index into maps[]), MAP_COUNT, ALPHA_MASK or ALPHA_BLEND, UNLIT, DIFFUSE_TRANSMISSION
-// (a diffuse transmission factor above 0), PREVIEW_SHADOWS
-// when `shadows`, and the factors' declarations.
-std::string gltfProgramPreamble(const Material& material, bool shadows);
+// (a diffuse transmission factor above 0), `shadows`' lookups and the factors' declarations.
+std::string gltfProgramPreamble(const Material& material, ShadowLookups shadows);
 // shaders/mesh.vert + the gltf.frag chain, compiled with `preamble`.
 std::unique_ptr<ShaderProgram> buildGltfProgram(const std::string& preamble);
+// The transmittance pass's program for a material with diffuse transmission (gltf_shadow.frag),
+// from gltfProgramPreamble(material, ShadowLookups::None).
+std::unique_ptr<ShaderProgram> buildGltfShadowProgram(const std::string& preamble);
 
 // Sets every factor and binds each map to a texture unit from `firstUnit` on.
 void uploadGltfMaterial(const ShaderProgram& program, const Material& material, GpuTextures& textures, int firstUnit);

@@ -10,6 +10,7 @@
 #include "orbit_camera.h"
 #include "sheen_lobe.h"
 #include "display_transform.h"
+#include "woven_params_json.h"
 
 namespace woven {
 
@@ -31,6 +32,25 @@ void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
         glUniform4fv(program.uniform("lightIntensity"), n, glm::value_ptr(intensity[0]));
     }
     glUniform3fv(program.uniform("ambientRadiance"), 1, glm::value_ptr(lights.ambient));
+}
+
+// Whether a material lets light through its surface, so that its shadow is coloured: woven yarns
+// that transmit, or KHR_materials_diffuse_transmission on a glTF material.
+bool letsLightThrough(const Material& m) {
+    if (m.woven) return yarnsTransmit(*m.woven);
+    return !m.unlit && m.diffuseTransmission.factor > 0.0f;
+}
+
+// Everything a transmittance program reads of a material that may change from frame to frame
+// (the panel's sliders): its parameters, and for glTF its preamble (the maps) and factors.
+std::string transmittanceKey(const Material& m) {
+    if (m.woven) return paramsToJson(*m.woven).dump();
+    std::string key = gltfProgramPreamble(m, ShadowLookups::None);
+    for (const GltfUniform& u : gltfUniformTable()) {
+        const glm::vec4 v = u.value(m);
+        key.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+    return key;
 }
 
 }  // namespace
@@ -92,7 +112,7 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     }
 }
 
-const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave, bool shadows) {
+const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, bool filterWeave, ShadowLookups shadows) {
     // The preamble names the program; a comment tells the two kinds apart.
     const std::string preamble = material.woven ? "// woven\n" + wovenProgramPreamble(material, filterWeave, shadows)
                                                 : "// gltf\n" + gltfProgramPreamble(material, shadows);
@@ -100,6 +120,48 @@ const ShaderProgram& PreviewRenderer::surfaceProgram(const Material& material, b
     if (it == programs_.end())
         it = programs_.emplace(preamble, material.woven ? buildWovenProgram(preamble) : buildGltfProgram(preamble)).first;
     return *it->second;
+}
+
+const ShaderProgram& PreviewRenderer::shadowProgram(const Material& material) {
+    // The weave filter's defines bring in the mean thread colours woven_shadow.frag averages.
+    const std::string preamble = material.woven
+                                     ? "// woven shadow\n" + wovenProgramPreamble(material, true, ShadowLookups::None)
+                                     : "// gltf shadow\n" + gltfProgramPreamble(material, ShadowLookups::None);
+    auto it = programs_.find(preamble);
+    if (it == programs_.end())
+        it = programs_
+                 .emplace(preamble, material.woven ? buildWovenShadowProgram(preamble) : buildGltfShadowProgram(preamble))
+                 .first;
+    return *it->second;
+}
+
+void PreviewRenderer::updateShadows(const SceneDescription& scene, const PreviewLights& lights) {
+    std::vector<const GpuMesh*> opaque;
+    std::vector<std::pair<const GpuMesh*, int>> transmitting;  // with the material's index
+    TransmittingCasters casters;
+    for (const GpuMesh* mesh : shadowCasters_) {
+        const int index = mesh->material();
+        if (index >= 0 && index < int(scene.materials.size()) && letsLightThrough(scene.materials[index])) {
+            casters.key += std::to_string(transmitting.size()) + ":" + std::to_string(index) + ":" +
+                           transmittanceKey(scene.materials[index]) + "\n";
+            transmitting.push_back({mesh, index});
+        } else {
+            opaque.push_back(mesh);
+        }
+    }
+    casters.draw = [&](const glm::mat4& viewProjection, const glm::vec4& light, float far) {
+        for (const auto& [mesh, index] : transmitting) {
+            const Material& material = scene.materials[index];
+            const ShaderProgram& program = shadowProgram(material);
+            glUseProgram(program.id());
+            glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+            glUniform4fv(program.uniform("shadowLight"), 1, glm::value_ptr(light));
+            glUniform1f(program.uniform("far"), far);
+            uploadMaterial(program, material, index);
+            mesh->draw();
+        }
+    };
+    shadows_->update(opaque, casters, meshGeneration_, lights, bounds_);
 }
 
 void PreviewRenderer::ensureTarget(glm::ivec2 size) {
@@ -126,10 +188,10 @@ void PreviewRenderer::ensureTarget(glm::ivec2 size) {
 
 void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
                              glm::ivec2 size, const PreviewOptions& options) {
-    bool shadows = false;
+    ShadowLookups shadows = ShadowLookups::None;
     if (options.shadows) {
-        shadows_->update(shadowCasters_, meshGeneration_, lights, bounds_);
-        shadows = shadows_->any();
+        updateShadows(scene, lights);
+        shadows = shadows_->lookups();
     }
     ensureTarget(size);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
@@ -187,7 +249,7 @@ void PreviewRenderer::drawEnvironment(const Environment& environment, const Came
 
 void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,
                                const PreviewLights& lights, const Camera& camera, const glm::mat4& viewProjection,
-                               const PreviewOptions& options, bool shadows) {
+                               const PreviewOptions& options, ShadowLookups shadows) {
     const ShaderProgram& program = surfaceProgram(material, options.filterWeave, shadows);
     glUseProgram(program.id());
     glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
@@ -198,6 +260,15 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     // (RayKind in render_scene.h); counter-clockwise is the front, as in glTF.
     if (material.doubleSided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
+    uploadMaterial(program, material, materialIndex);
+    // After the weave's update, which binds on the active unit; the transmitted maps after the
+    // material's textures (a woven material's kept surface has at most two, on units 8 and 9).
+    const int transmittedUnit = material.woven ? 10 : 4 + int(gltfMaps(material).size());
+    if (shadows != ShadowLookups::None) shadows_->bind(program, 1, 2, transmittedUnit);
+    mesh.draw();
+}
+
+void PreviewRenderer::uploadMaterial(const ShaderProgram& program, const Material& material, int materialIndex) {
     if (material.woven) {
         auto& weave = weaves_[materialIndex];
         if (!weave) weave = std::make_unique<WeaveTextures>();
@@ -211,9 +282,6 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
         glUniform1i(program.uniform("sheenAlbedoTable"), 3);
         uploadGltfMaterial(program, material, textures_, 4);
     }
-    // After the weave's update, which binds on the active unit.
-    if (shadows) shadows_->bind(program, 1, 2);
-    mesh.draw();
 }
 
 void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, glm::ivec2 size, const DisplayTransform& transform) {

@@ -45,13 +45,20 @@ public:
     Image radiance() const;
 
     // The program a material is drawn with (compiled on first use, then cached).
-    const ShaderProgram& surfaceProgram(const Material& material, bool filterWeave, bool shadows);
+    const ShaderProgram& surfaceProgram(const Material& material, bool filterWeave, ShadowLookups shadows);
+    // The program of the shadow maps' transmittance pass for a material that lets light through.
+    const ShaderProgram& shadowProgram(const Material& material);
 
 private:
     void ensureTarget(glm::ivec2 size);
     void drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size);
     void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
-                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options, bool shadows);
+                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options,
+                  ShadowLookups shadows);
+    // Uploads the material's parameters and binds its textures, for its surface or shadow program.
+    void uploadMaterial(const ShaderProgram& program, const Material& material, int materialIndex);
+    // Re-renders the shadow maps where needed: the casters that let light through apart.
+    void updateShadows(const SceneDescription& scene, const PreviewLights& lights);
 
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;

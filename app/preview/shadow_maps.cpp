@@ -27,26 +27,51 @@ void allocateDepth(GLenum target, GLuint texture, int size, int layers) {
     glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
 }
 
+// What a transmitting caster passes, 8 bits a channel (a share in [0, 1]), bilinearly filtered;
+// white where no such caster is.
+void allocateColor(GLenum target, GLuint texture, int size, int layers) {
+    glBindTexture(target, texture);
+    glTexImage3D(target, 0, GL_RGBA8, size, size, layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+}
+
+void deleteTextures(const std::initializer_list<GLuint>& textures) {
+    for (GLuint t : textures) glDeleteTextures(1, &t);
+}
+
 }  // namespace
 
 ShadowMaps::ShadowMaps() {
     depthProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"shadow_depth.vert"},
-                                                    std::vector<std::string>{"shadow_depth.frag"});
+                                                    std::vector<std::string>{"shadow_depth.glsl", "shadow_depth.frag"});
     glGenFramebuffers(1, &framebuffer_);
-    glGenTextures(1, &cubeTexture_);
-    glGenTextures(1, &flatTexture_);
+    glGenFramebuffers(1, &transmittedFramebuffer_);
+    for (MapSet* maps : {&cubes_, &flats_}) {
+        glGenTextures(1, &maps->depth);
+        glGenTextures(1, &maps->transmittedDepth);
+        glGenTextures(1, &maps->transmittedColor);
+    }
     // Filtering across a cube's face edges, so shadows show no seams there.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 
 ShadowMaps::~ShadowMaps() {
     glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteTextures(1, &cubeTexture_);
-    glDeleteTextures(1, &flatTexture_);
+    glDeleteFramebuffers(1, &transmittedFramebuffer_);
+    for (const MapSet& maps : {cubes_, flats_}) deleteTextures({maps.depth, maps.transmittedDepth, maps.transmittedColor});
 }
 
-void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned meshGeneration,
-                        const PreviewLights& lights, const SceneBox& box) {
+ShadowLookups ShadowMaps::lookups() const {
+    if (shadowed_.empty()) return ShadowLookups::None;
+    return transmittingKey_.empty() ? ShadowLookups::Opaque : ShadowLookups::Transmitted;
+}
+
+void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, const TransmittingCasters& transmitting,
+                        unsigned meshGeneration, const PreviewLights& lights, const SceneBox& box) {
     // The strongest lights by their irradiance at the scene's centre get the maps.
     const glm::vec3 centre = box.centre();
     const float radius = std::max(box.radius(), 1e-4f);
@@ -70,9 +95,12 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned mes
         (cube ? cubes : flats)++;
         shadowed.push_back({i, l.type, l.position});
     }
-    if (meshGeneration == meshGeneration_ && shadowed == shadowed_ && int(cubeIndex_.size()) == n) return;
+    if (meshGeneration == meshGeneration_ && shadowed == shadowed_ && int(cubeIndex_.size()) == n &&
+        transmitting.key == transmittingKey_)
+        return;
     meshGeneration_ = meshGeneration;
     shadowed_ = shadowed;
+    transmittingKey_ = transmitting.key;
     cubeIndex_.assign(n, -1);
     flatIndex_.assign(n, -1);
     cubeFar_.assign(n, 0.0f);
@@ -83,6 +111,8 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned mes
     GLint previousFramebuffer = 0, viewport[4];
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previousFramebuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
+    GLfloat clearColor[4];
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColor);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
@@ -90,9 +120,17 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned mes
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
-    glUseProgram(depthProgram_->id());
-    allocateDepth(GL_TEXTURE_CUBE_MAP_ARRAY, cubeTexture_, kCubeSize, 6 * std::max(cubes, 1));
-    allocateDepth(GL_TEXTURE_2D_ARRAY, flatTexture_, kFlatSize, std::max(flats, 1));
+    glDisable(GL_BLEND);
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // the transmitted colour where no caster lets light through
+    const int cubeLayers = 6 * std::max(cubes, 1), flatLayers = std::max(flats, 1);
+    allocateDepth(GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.depth, kCubeSize, cubeLayers);
+    allocateDepth(GL_TEXTURE_2D_ARRAY, flats_.depth, kFlatSize, flatLayers);
+    if (!transmittingKey_.empty()) {
+        allocateDepth(GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.transmittedDepth, kCubeSize, cubeLayers);
+        allocateColor(GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.transmittedColor, kCubeSize, cubeLayers);
+        allocateDepth(GL_TEXTURE_2D_ARRAY, flats_.transmittedDepth, kFlatSize, flatLayers);
+        allocateColor(GL_TEXTURE_2D_ARRAY, flats_.transmittedColor, kFlatSize, flatLayers);
+    }
 
     int cubeCount = 0;
     for (const Shadowed& s : shadowed_) {
@@ -100,12 +138,23 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned mes
         if (l.type != PreviewLight::Directional && nearCentre(l)) {
             cubeIndex_[s.light] = cubeCount;
             cubeFar_[s.light] = (glm::length(centre - l.position) + radius) * 1.01f;
-            renderCube(cubeCount++, l.position, cubeFar_[s.light], casters);
+            // GL's cube face order and orientations (+x, -x, +y, -y, +z, -z).
+            static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+            const float far = cubeFar_[s.light];
+            const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
+            glViewport(0, 0, kCubeSize, kCubeSize);
+            for (int face = 0; face < 6; ++face)
+                renderView(cubes_, 6 * cubeCount + face, projection * glm::lookAt(l.position, l.position + axes[face], ups[face]),
+                           glm::vec4(l.position, 1.0f), far, casters, transmitting);
+            ++cubeCount;
             continue;
         }
         glm::mat4 viewProjection;
         glm::vec2 texel(0.0f);
+        glm::vec4 light(l.position, 1.0f);
         if (l.type == PreviewLight::Directional) {
+            light.w = 0.0f;  // lightPosition is the direction travelled
             // Orthographic over the bounding sphere, looking along the direction the light travels.
             const glm::vec3 dir = glm::normalize(l.position);
             const glm::vec3 up = std::abs(dir.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
@@ -125,41 +174,39 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, unsigned mes
             texel.y = 2.0f * std::tan(halfAngle) / float(kFlatSize);
         }
         flatIndex_[s.light] = int(flatMatrix_.size());
-        renderFlat(int(flatMatrix_.size()), viewProjection, casters);
+        glViewport(0, 0, kFlatSize, kFlatSize);
+        renderView(flats_, int(flatMatrix_.size()), viewProjection, light, 0.0f, casters, transmitting);
         flatMatrix_.push_back(viewProjection);
         flatTexel_.push_back(texel);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
 }
 
-void ShadowMaps::renderCube(int layer, const glm::vec3& position, float far, const std::vector<const GpuMesh*>& casters) {
-    // GL's cube face order and orientations (+x, -x, +y, -y, +z, -z).
-    static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
-    glViewport(0, 0, kCubeSize, kCubeSize);
-    glUniform3fv(depthProgram_->uniform("lightPosition"), 1, glm::value_ptr(position));
-    glUniform1f(depthProgram_->uniform("far"), far);
-    for (int face = 0; face < 6; ++face) {
-        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, cubeTexture_, 0, 6 * layer + face);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        const glm::mat4 viewProjection = projection * glm::lookAt(position, position + axes[face], ups[face]);
-        glUniformMatrix4fv(depthProgram_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-        for (const GpuMesh* mesh : casters) mesh->draw();
-    }
-}
-
-void ShadowMaps::renderFlat(int layer, const glm::mat4& viewProjection, const std::vector<const GpuMesh*>& casters) {
-    glViewport(0, 0, kFlatSize, kFlatSize);
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, flatTexture_, 0, layer);
+void ShadowMaps::renderView(const MapSet& maps, int layer, const glm::mat4& viewProjection, const glm::vec4& light,
+                            float far, const std::vector<const GpuMesh*>& casters,
+                            const TransmittingCasters& transmitting) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps.depth, 0, layer);
     glClear(GL_DEPTH_BUFFER_BIT);
-    glUniform1f(depthProgram_->uniform("far"), 0.0f);
+    glUseProgram(depthProgram_->id());
+    glUniform4fv(depthProgram_->uniform("shadowLight"), 1, glm::value_ptr(light));
+    glUniform1f(depthProgram_->uniform("far"), far);
     glUniformMatrix4fv(depthProgram_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     for (const GpuMesh* mesh : casters) mesh->draw();
+    if (transmittingKey_.empty()) return;
+    // The transmitting casters on their own: the nearest one's depth and colour, whatever opaque
+    // caster lies in front of it (the opaque map then shadows the point anyway).
+    glBindFramebuffer(GL_FRAMEBUFFER, transmittedFramebuffer_);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps.transmittedDepth, 0, layer);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, maps.transmittedColor, 0, layer);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    transmitting.draw(viewProjection, light, far);
 }
 
-void ShadowMaps::bind(const ShaderProgram& program, int cubeUnit, int flatUnit) const {
+void ShadowMaps::bind(const ShaderProgram& program, int cubeUnit, int flatUnit, int transmittedUnit) const {
     const int n = int(cubeIndex_.size());
     if (n > 0) {
         glUniform1iv(program.uniform("shadowCube"), n, cubeIndex_.data());
@@ -171,12 +218,23 @@ void ShadowMaps::bind(const ShaderProgram& program, int cubeUnit, int flatUnit) 
         glUniform2fv(program.uniform("flatTexel"), GLsizei(flatTexel_.size()), glm::value_ptr(flatTexel_[0]));
     }
     glUniform1f(program.uniform("cubeSize"), float(kCubeSize));
-    glActiveTexture(GL_TEXTURE0 + cubeUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP_ARRAY, cubeTexture_);
-    glUniform1i(program.uniform("shadowCubes"), cubeUnit);
-    glActiveTexture(GL_TEXTURE0 + flatUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, flatTexture_);
-    glUniform1i(program.uniform("shadowFlats"), flatUnit);
+    const struct {
+        const char* sampler;
+        GLenum target;
+        GLuint texture;
+        int unit;
+    } maps[] = {{"shadowCubes", GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.depth, cubeUnit},
+                {"shadowFlats", GL_TEXTURE_2D_ARRAY, flats_.depth, flatUnit},
+                {"transmittedCubes", GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.transmittedDepth, transmittedUnit},
+                {"transmittedCubeColors", GL_TEXTURE_CUBE_MAP_ARRAY, cubes_.transmittedColor, transmittedUnit + 1},
+                {"transmittedFlats", GL_TEXTURE_2D_ARRAY, flats_.transmittedDepth, transmittedUnit + 2},
+                {"transmittedFlatColors", GL_TEXTURE_2D_ARRAY, flats_.transmittedColor, transmittedUnit + 3}};
+    for (int i = 0, count = transmittingKey_.empty() ? 2 : 6; i < count; ++i) {
+        const auto& map = maps[i];
+        glActiveTexture(GL_TEXTURE0 + map.unit);
+        glBindTexture(map.target, map.texture);
+        glUniform1i(program.uniform(map.sampler), map.unit);
+    }
 }
 
 }  // namespace woven

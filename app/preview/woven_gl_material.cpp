@@ -108,6 +108,11 @@ std::string wovenParamsGlslStruct() {
     return s.str();
 }
 
+bool yarnsTransmit(const WovenParams& p) {
+    const std::vector<Yarn> yarns = Weave::resolvedYarns(p);
+    return std::any_of(yarns.begin(), yarns.end(), [](const Yarn& y) { return y.transmission() > 0.0f; });
+}
+
 std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     std::string d;
     if (hasNoise(p)) d += "#define WOVEN_NOISE\n";
@@ -115,9 +120,7 @@ std::string wovenFeatureDefines(const WovenParams& p, bool filterWeave) {
     if (mayShowGaps(p)) d += "#define WOVEN_GAPS\n";
     if (hasThreadLists(p)) d += "#define WOVEN_THREADS\n";
     if (!p.warp_spacing.empty() || !p.weft_spacing.empty()) d += "#define WOVEN_SPACING\n";
-    const std::vector<Yarn> yarns = Weave::resolvedYarns(p);
-    if (std::any_of(yarns.begin(), yarns.end(), [](const Yarn& y) { return y.transmission() > 0.0f; }))
-        d += "#define WOVEN_TRANSMISSION\n";
+    if (yarnsTransmit(p)) d += "#define WOVEN_TRANSMISSION\n";
     // The far field's cross-section count is core's (weave_far_field.h), so both average alike.
     if (filterWeave) d += "#define WOVEN_FILTER\n#define FILTER_SAMPLES " + std::to_string(kFarFieldSections) + "\n";
     return d;
@@ -259,22 +262,29 @@ void uploadKeptSurface(const ShaderProgram& program, const Material& m, GpuTextu
     textures.bindMaps(program, keptSurfaceMaps(m), firstUnit);
 }
 
-std::string wovenProgramPreamble(const Material& material, bool filterWeave, bool shadows) {
+std::string wovenProgramPreamble(const Material& material, bool filterWeave, ShadowLookups shadows) {
     std::string defines = wovenFeatureDefines(*material.woven, filterWeave) + mapDefines(keptSurfaceMaps(material));
     if (material.keptSurface) {
         if (material.keptSurface->print) defines += "#define WOVEN_PRINT\n";
         defines += alphaDefines(material);
     }
-    if (shadows) defines += "#define PREVIEW_SHADOWS\n";
-    return defines + wovenParamsGlslStruct();
+    return defines + shadowLookupDefines(shadows) + wovenParamsGlslStruct();
 }
 
 std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble) {
     return std::make_unique<ShaderProgram>(
         std::vector<std::string>{"mesh.vert"},
         std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "woven_params.glsl", "ashikhmin_shirley.glsl",
-                                 "yarn_noise.glsl", "yarn_geometry.glsl", "lighting.glsl", "screen_door.glsl",
-                                 "texture_maps.glsl", "normal_map.glsl", "woven.frag"},
+                                 "yarn_noise.glsl", "yarn_geometry.glsl", "woven_transmission.glsl", "lighting.glsl",
+                                 "screen_door.glsl", "texture_maps.glsl", "normal_map.glsl", "woven.frag"},
+        preamble);
+}
+
+std::unique_ptr<ShaderProgram> buildWovenShadowProgram(const std::string& preamble) {
+    return std::make_unique<ShaderProgram>(
+        std::vector<std::string>{"mesh.vert"},
+        std::vector<std::string>{"mesh_varyings.glsl", "frame.glsl", "woven_params.glsl", "ashikhmin_shirley.glsl",
+                                 "yarn_geometry.glsl", "woven_transmission.glsl", "shadow_depth.glsl", "woven_shadow.frag"},
         preamble);
 }
 

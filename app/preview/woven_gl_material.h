@@ -12,6 +12,7 @@
 
 #include "gpu_textures.h"
 #include "shader_program.h"
+#include "shadow_lookups.h"
 #include "weave_coverage.h"  // Weave, WeaveCoverage
 #include "woven_params.h"
 
@@ -60,11 +61,19 @@ private:
 // alpha) and normal map to units from `firstUnit` on; nothing for a material woven in its file.
 void uploadKeptSurface(const ShaderProgram& program, const Material& material, GpuTextures& textures, int firstUnit);
 
-// The woven program's preamble for a woven material: feature #defines (PREVIEW_SHADOWS when
-// `shadows`), what it keeps of a glTF material (WOVEN_PRINT, MAP_<NAME>, ALPHA_MASK or
-// ALPHA_BLEND), plus the WovenParams struct.
-std::string wovenProgramPreamble(const Material& material, bool filterWeave, bool shadows);
+// The woven program's preamble for a woven material: feature #defines and `shadows`' lookups,
+// what it keeps of a glTF material (WOVEN_PRINT, MAP_<NAME>, ALPHA_MASK or ALPHA_BLEND), plus the
+// WovenParams struct.
+std::string wovenProgramPreamble(const Material& material, bool filterWeave, ShadowLookups shadows);
 // shaders/mesh.vert + the woven.frag chain, compiled with `preamble`.
 std::unique_ptr<ShaderProgram> buildWovenProgram(const std::string& preamble);
+
+// Whether any of the weave's yarns lets light through (WOVEN_TRANSMISSION): its shadow is then
+// coloured (ShadowMaps' transmittance pass).
+bool yarnsTransmit(const WovenParams& p);
+// The transmittance pass's program for a woven material whose yarns transmit (woven_shadow.frag),
+// from wovenProgramPreamble(material, true, ShadowLookups::None): the weave filter's colour tracks
+// give the mean thread colours.
+std::unique_ptr<ShaderProgram> buildWovenShadowProgram(const std::string& preamble);
 
 }  // namespace woven

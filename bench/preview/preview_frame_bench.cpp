@@ -5,6 +5,9 @@
 // the shader loops over, which the frame time is proportional to where the filter is on. And the
 // window's frames at 1280x720 as the user sees them (render, display into the window-sized
 // target, glFinish): at fixed scales, and sized by InteractiveResolution while the camera moves.
+// And what coloured shadows cost: assets/coloured_shadow.json with its sheets letting light
+// through against the same sheets opaque (as every scene rendered before them), the lights still
+// and moving.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -142,6 +145,41 @@ void previewWindowFrame(benchmark::State& state) {
 BENCHMARK(previewWindowFrame)
     ->Arg(0)->Arg(100)->Arg(50)->Arg(25)->Arg(15)->Arg(12)
     ->ArgNames({"scale"})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// assets/coloured_shadow.json at 640x480: `transmits` 0 makes its voile's yarns and its leaf pass
+// nothing (opaque casters, no transmittance pass, no coloured lookups); `moving` 1 moves the light
+// every frame, which re-renders the shadow maps (and the transmittance pass) each time.
+void previewFrameColouredShadow(benchmark::State& state) {
+    static auto gl = HeadlessGl::create();
+    SceneDescription scene = loadScene(std::string(WOVEN_ASSETS_DIR) + "/coloured_shadow.json");
+    if (state.range(0) == 0)
+        for (Material& m : scene.materials) {
+            if (m.woven) m.woven->transmission = 0.0f;
+            m.diffuseTransmission.factor = 0.0f;
+        }
+    PreviewRenderer renderer;
+    renderer.setMeshes(scene);
+    PreviewLights lights = PreviewLights::fromScene(scene);
+    const Camera camera = OrbitCamera::forScene(scene).camera();
+    const glm::ivec2 size(640, 480);
+    renderer.render(scene, lights, camera, size, {});  // compiles the programs
+    glFinish();
+    const bool moving = state.range(1) != 0;
+    float offset = 0.0f;
+    const double cpuStart = cpuSeconds();
+    for (auto _ : state) {
+        if (moving) {
+            offset = offset == 0.0f ? 1e-3f : 0.0f;
+            for (PreviewLight& l : lights.lights) l.position.x += offset == 0.0f ? -1e-3f : 1e-3f;
+        }
+        renderer.render(scene, lights, camera, size, {});
+        glFinish();
+    }
+    state.counters["cpu_ms"] = 1e3 * (cpuSeconds() - cpuStart) / double(state.iterations());
+}
+BENCHMARK(previewFrameColouredShadow)
+    ->Args({0, 0})->Args({1, 0})->Args({0, 1})->Args({1, 1})
+    ->ArgNames({"transmits", "moving"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace woven

@@ -52,7 +52,7 @@ std::set<std::string> activeMaterialUniforms(GLuint program) {
 TEST(ShaderParams, EveryTableEntryIsAnActiveUniformAndNothingElse) {
     ensureHeadlessGl();
     const Material m = everyFeature();
-    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, true));
+    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, ShadowLookups::Opaque));
     const std::set<std::string> active = activeMaterialUniforms(program->id());
     std::set<std::string> table;
     for (const ParamInfo& info : wovenParamTable()) {
@@ -76,7 +76,7 @@ TEST(ShaderParams, UploadedValuesReadBackPerField) {
     p.warp_color = {0.4f, 0.5f, 0.6f};
     p.cy = 0.29f; p.noise_scale = 0.31f; p.backing = 1;
     p.backing_color = {0.7f, 0.8f, 0.9f};
-    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, true));
+    const auto program = buildWovenProgram(wovenProgramPreamble(m, true, ShadowLookups::Opaque));
     glUseProgram(program->id());
     uploadWovenParams(*program, p);
     for (const ParamInfo& info : wovenParamTable()) {
@@ -120,7 +120,7 @@ TEST(ShaderParams, ShaderSourcesReadEveryTableEntry) {
 // upload lands in its uniform.
 std::string gltfSources() {
     std::string sources;
-    for (const char* file : {"gltf.frag", "gltf_bxdf.glsl", "gltf_iridescence.glsl"}) {
+    for (const char* file : {"gltf.frag", "gltf_inputs.glsl", "gltf_shadow.frag", "gltf_bxdf.glsl", "gltf_iridescence.glsl"}) {
         std::ifstream in(shaderDirectory() + "/" + file);
         EXPECT_TRUE(in) << file;
         std::ostringstream s;
@@ -170,7 +170,7 @@ TEST(GltfUniforms, UploadedValuesReadBackPerEntry) {
     m.iridescence.ior = 1.31f;
     m.iridescence.thicknessMin = 120.0f;
     m.iridescence.thicknessMax = 380.0f;
-    const auto program = buildGltfProgram(gltfProgramPreamble(m, true));
+    const auto program = buildGltfProgram(gltfProgramPreamble(m, ShadowLookups::Opaque));
     glUseProgram(program->id());
     GpuTextures textures;
     uploadGltfMaterial(*program, m, textures, 8);

@@ -1,23 +1,28 @@
 // The preview's shadows (ShadowMaps): a square hovering over the flat cloth must block a point
 // light (cube map; turned six ways so each cube face does the work), a distant point light
 // (perspective map) and a directional light (orthographic map) exactly where geometry says, and
-// change nothing elsewhere.
+// change nothing elsewhere. A square that lets light through (woven yarns that transmit, glTF
+// diffuse transmission) must pass, per colour, the share of the light its material passes.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 
 #include "flat_cloth.h"
 #include "gl_test_context.h"
+#include "weave.h"
+#include "weave_coverage.h"
+#include "yarn_transmission.h"
 
 namespace woven::test {
 namespace {
 
 constexpr float kHeight = 0.5f, kHalf = 0.2f;  // the occluder: y = 0.5, |x|, |z| < 0.2
 
-SceneDescription occludedCloth(const PunctualLight& light) {
+SceneDescription occludedCloth(const PunctualLight& light, const Material& occluder = Material{}) {
     WovenParams p;
     p.repeat = glm::vec2(30.0f);  // near and far field both in view
     p.yarn_width = p.warp_width = 1.0f;  // no see-through gaps
@@ -29,7 +34,7 @@ SceneDescription occludedCloth(const PunctualLight& light) {
     square.triangles = {{0, 1, 2}, {0, 2, 3}};
     square.material = 1;
     scene.meshes.push_back(square);
-    scene.materials.push_back(Material{});
+    scene.materials.push_back(occluder);
     return scene;
 }
 
@@ -127,6 +132,120 @@ TEST(PreviewShadows, DirectionalLightIsBlockedExactlyWhereTheOccluderProjects) {
     sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
     sun.intensity = glm::vec3(1.0f);
     expectShadowWhereGeometrySaysSo(sun);
+}
+
+// The floor behind an occluder in `sheet`: per pixel well inside its shadow (as above), the light
+// that reaches the floor with shadows over the light without them, per colour, must be
+// `passed(mu)`, mu the cosine between the light's direction and the sheet's normal. With the
+// environment off, the floor's radiance is its BSDF times that one light, so the ratio is the
+// shadow's factor alone. Returns the mean ratio.
+glm::vec3 expectShadowPasses(const PunctualLight& light, const Material& sheet, const std::function<glm::vec3(float)>& passed) {
+    const SceneDescription scene = occludedCloth(light, sheet);
+    const int w = 256, h = 192;
+    const Image shadowed = previewRadiance(scene, w, h, true, false, true);
+    const Image open = previewRadiance(scene, w, h, true, false, false);
+    const glm::vec3 eye(scene.camera.cameraToWorld[3]);
+    constexpr float kMargin = 0.05f;  // as in expectShadowWhereGeometrySaysSo
+    // The transmitted colour is stored in 8 bits a channel (half a step: 0.002) and filtered
+    // bilinearly over texels whose cosines differ by under 1e-3 this far inside the square: 0.005
+    // is two and a half steps, and a wrong factor (a missed Fresnel, the cosine, the colour's
+    // square) is off by 0.02 or more.
+    constexpr float kTolerance = 0.005f;
+    glm::dvec3 sum(0.0);
+    size_t inShadow = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::vec3 d = cameraRayDirection(scene.camera, x + 0.5f, y + 0.5f, w, h);
+            if (d.y >= 0.0f) continue;
+            if (insideSquare(eye + d * ((kHeight - eye.y) / d.y)) > -kMargin) continue;  // sees the occluder
+            const glm::vec3 p = eye + d * (-eye.y / d.y);
+            if (std::max(std::abs(p.x), std::abs(p.z)) > 1.0f - kMargin) continue;
+            const glm::vec3 toLight = light.type == PunctualLight::Type::Directional ? -light.direction
+                                                                                     : light.position - p;
+            if (insideSquare(p + toLight * (kHeight / toLight.y)) <= kMargin) continue;
+            const size_t i = size_t(y) * w + x;
+            // Yarn edges whose bumped normal faces away from the light get none either way.
+            if (!(glm::min(open.pixels[i].r, glm::min(open.pixels[i].g, open.pixels[i].b)) > 0.0f)) continue;
+            ++inShadow;
+            const glm::vec3 ratio = shadowed.pixels[i] / open.pixels[i];
+            const glm::vec3 expected = passed(std::abs(toLight.y) / glm::length(toLight));
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(ratio[c], expected[c], kTolerance) << "pixel " << x << "," << y << " channel " << c;
+            sum += glm::dvec3(ratio);
+        }
+    EXPECT_GT(inShadow, size_t(300));
+    return glm::vec3(sum / double(std::max<size_t>(inShadow, 1)));
+}
+
+// A woven sheet of red yarns that pass all they do not reflect, diffusely (gloss 0, so the
+// shadow's share, yarnTransmittedAlbedo() in woven_transmission.glsl, is exactly the yarn's
+// transmitted albedo), with see-through gaps between them.
+Material redVoile(float transmission) {
+    WovenParams p;
+    p.warp_color = p.weft_color = glm::vec3(0.6f, 0.15f, 0.1f);
+    p.transmission = transmission;
+    p.transmission_gloss = 0.0f;
+    p.yarn_width = p.warp_width = 0.8f;
+    Material m;
+    m.woven = p;
+    return m;
+}
+
+// Core's YarnTransmission of the voile's yarn integrated over the far side's hemisphere for light
+// arriving at cosine mu, by the midpoint rule over (cosine, azimuth): 64 x 64 cells, well under
+// 1e-4 for this smooth, azimuth-free lobe.
+glm::vec3 transmittedAlbedo(const WovenParams& p, float mu) {
+    const YarnTransmission yarn(LobeShape(p.ex, p.ey, p.rs), yarnTransmittance(p.weft_color, p.transmission),
+                                p.transmission_gloss);
+    const glm::vec3 wi(std::sqrt(1.0f - mu * mu), 0.0f, mu);
+    const int n = 64;
+    glm::dvec3 sum(0.0);
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+            const float cosine = (a + 0.5f) / n, phi = 2.0f * float(M_PI) * (b + 0.5f) / n;
+            const float sine = std::sqrt(1.0f - cosine * cosine);
+            const glm::vec3 wo(sine * std::cos(phi), sine * std::sin(phi), -cosine);
+            sum += glm::dvec3(yarn.eval(wo, wi)) * double(cosine);
+        }
+    return glm::vec3(sum * (2.0 * M_PI / (n * n)));
+}
+
+TEST(PreviewShadows, WovenYarnsThatTransmitCastTheirColouredShadow) {
+    const Material voile = redVoile(1.0f);
+    const WeaveCoverage coverage = weaveCoverage(Weave(*voile.woven), false);
+    const float yarns = coverage.weft + coverage.warp;
+    ASSERT_LT(yarns, 0.99f);  // gaps, which pass everything
+    // The crossing yarns pass the albedo, the gaps all the light.
+    auto passed = [&](float mu) { return yarns * transmittedAlbedo(*voile.woven, mu) + glm::vec3(1.0f - yarns); };
+    const glm::vec3 cube = expectShadowPasses(pointLight({-0.5f, 1.5f, 0.4f}, 3.0f), voile, passed);
+    PunctualLight sun;
+    sun.type = PunctualLight::Type::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+    sun.intensity = glm::vec3(1.0f);
+    const glm::vec3 flat = expectShadowPasses(sun, voile, passed);
+    std::cout << "red voile's shadow passes " << cube.r << " " << cube.g << " " << cube.b << " (cube), " << flat.r << " "
+              << flat.g << " " << flat.b << " (flat)\n";
+    // Lit, darker than the open floor, and red: T = (0.40, 0.053, 0.025) before the gaps.
+    for (const glm::vec3& c : {cube, flat}) {
+        EXPECT_LT(c.r, 0.9f);
+        EXPECT_GT(c.r, c.g + 0.1f);
+        EXPECT_GT(c.g, 1.0f - yarns - 0.01f);  // the gaps' share at least
+    }
+    // The same cloth with yarns that pass nothing is an opaque caster: a solid shadow, its gaps
+    // included (the preview's simplification for opaque cloth, shadow_maps.h).
+    expectShadowPasses(sun, redVoile(0.0f), [](float) { return glm::vec3(0.0f); });
+}
+
+TEST(PreviewShadows, DiffuseTransmissionCastsItsColouredShadow) {
+    Material leaf;
+    leaf.baseColor = glm::vec4(0.3f, 0.5f, 0.2f, 1.0f);
+    leaf.diffuseTransmission.factor = 0.7f;
+    leaf.diffuseTransmission.color = glm::vec3(0.2f, 0.8f, 0.3f);
+    // The factor x colour through the dielectric's Fresnel at normal incidence, F0 = 0.04 for an IOR
+    // of 1.5, whatever the angle (the BTDF is Lambertian).
+    const glm::vec3 expected = 0.7f * (1.0f - 0.04f) * leaf.diffuseTransmission.color;
+    const glm::vec3 cube = expectShadowPasses(pointLight({-0.5f, 1.5f, 0.4f}, 3.0f), leaf, [&](float) { return expected; });
+    EXPECT_GT(cube.g, 2.0f * cube.r);
 }
 
 }  // namespace
