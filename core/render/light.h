@@ -157,6 +157,8 @@ public:
 
     template <class K>
     bool is() const { return std::holds_alternative<K>(kind_); }
+    template <class K>
+    const K* get() const { return std::get_if<K>(&kind_); }  // null when the light is another kind
     bool isDeltaPosition() const { return std::visit([](const auto& k) { return k.kDeltaPosition; }, kind_); }
     bool isDeltaDirection() const { return std::visit([](const auto& k) { return k.kDeltaDirection; }, kind_); }
     bool isDelta() const { return isDeltaPosition() || isDeltaDirection(); }

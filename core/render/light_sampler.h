@@ -1,7 +1,8 @@
 #pragma once
 // Which light a light sample takes, as pbrt-v4's lightsamplers.h keeps the choice apart from the
-// lights: today each in proportion to its power's luminance (pbrt-v4's PowerLightSampler), the
-// same choice wherever the sample is taken from.
+// lights: each in proportion to its power's luminance (pbrt-v4's PowerLightSampler), the same
+// choice wherever the sample is taken from. BDPT's, whose light subpaths start from no point;
+// the path tracer chooses by bvh_light_sampler.h.
 #include <optional>
 #include <vector>
 

@@ -21,7 +21,8 @@ bool isBlack(const glm::vec3& v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0
 glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, int vertex, const Bsdf& bsdf, const glm::vec3& wo,
                                          Sampler& sampler, SampleSink& sink) const {
     float pmf = 0.0f;
-    const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightChoice)), &pmf);
+    const int index = scene_.sampleLight(LightSampleContext{hit.p, hit.ns},
+                                         sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightChoice)), &pmf);
     const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightPoint));
     if (index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
     const Light& light = scene_.lights()[size_t(index)];
@@ -43,7 +44,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
     Ray ray = camera_.generateRay(pRaster);
     // The previous scattering vertex and the BSDF density of the direction sampled there, for
     // weighting emission found by BSDF sampling against next-event estimation.
-    glm::vec3 prevP(0.0f);
+    LightSampleContext prev;
     float prevBsdfPdf = 0.0f;
     for (int bounces = 0;; ++bounces) {
         ++sink.rays;
@@ -54,7 +55,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
                 const Light& light = scene_.lights()[size_t(env)];
                 float weight = 1.0f;
                 if (bounces > 0) {
-                    const float lightPdf = scene_.lightPmf(env) * light.pdfLi(prevP, ray.d, glm::vec3(0.0f), glm::vec3(0.0f));
+                    const float lightPdf = scene_.lightPmf(prev, env) * light.pdfLi(prev.p, ray.d, glm::vec3(0.0f), glm::vec3(0.0f));
                     weight = powerHeuristic(prevBsdfPdf, lightPdf);
                 }
                 L += beta * light.Le(ray.d) * weight;
@@ -67,8 +68,8 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
             float weight = 1.0f;
             const int index = scene_.lightIndex(*hit);
             if (bounces > 0 && index >= 0) {
-                const float lightPdf = scene_.lightPmf(index) *
-                                       scene_.lights()[size_t(index)].pdfLi(prevP, ray.d, hit->p, hit->ng);
+                const float lightPdf = scene_.lightPmf(prev, index) *
+                                       scene_.lights()[size_t(index)].pdfLi(prev.p, ray.d, hit->p, hit->ng);
                 weight = powerHeuristic(prevBsdfPdf, lightPdf);
             }
             L += beta * Le * weight;
@@ -87,7 +88,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
         if (!bs || !connects(*hit, *bsdf, wo, bs->wi)) break;
         beta *= bs->weight;
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;
-        prevP = hit->p;
+        prev = {hit->p, hit->ns};
         prevBsdfPdf = bs->pdf;
         ray = scene_.spawnRay(*hit, bs->wi);
 

@@ -135,6 +135,7 @@ struct RenderScene::Impl {
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
     int environment = -1;
     std::optional<PowerLightSampler> lightSampler;
+    std::optional<BvhLightSampler> lightTree;
     Bounds bounds;
 
     ~Impl() {
@@ -304,6 +305,7 @@ void RenderScene::Impl::buildLights() {
     }
     for (Light& light : lights) light.setSceneBounds(bounds);
     lightSampler.emplace(lights);
+    lightTree.emplace(lights);
 }
 
 SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, int instance, unsigned prim, float u, float v, float t,
@@ -503,6 +505,18 @@ int RenderScene::sampleLight(float u, float* pmf) const {
 }
 
 float RenderScene::lightPmf(int index) const { return impl_->lightSampler ? impl_->lightSampler->pmf(index) : 0.0f; }
+
+int RenderScene::sampleLight(const LightSampleContext& ctx, float u, float* pmf) const {
+    if (!impl_->lightTree) {
+        *pmf = 0.0f;
+        return -1;
+    }
+    return impl_->lightTree->sample(ctx, u, pmf);
+}
+
+float RenderScene::lightPmf(const LightSampleContext& ctx, int index) const {
+    return impl_->lightTree ? impl_->lightTree->pmf(ctx, index) : 0.0f;
+}
 
 RenderScene::GeometryCounts RenderScene::geometryCounts() const {
     GeometryCounts counts;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "camera_model.h"
+#include "bvh_light_sampler.h"
 #include "light.h"
 #include "scene_materials.h"
 
@@ -46,9 +47,13 @@ public:
     const std::vector<Light>& lights() const;
     int lightIndex(const SurfaceHit& hit) const;  // the area light of the hit triangle, or -1
     int environmentLight() const;                 // index of the environment light, or -1
-    // Lights are chosen by light_sampler.h's PowerLightSampler.
+    // Lights chosen by power alone (light_sampler.h), for samples taken from no point: BDPT's
+    // light subpaths, and its strategies, whose weights must count them the same way.
     int sampleLight(float u, float* pmf) const;
     float lightPmf(int index) const;
+    // Lights chosen by what each could send to ctx (bvh_light_sampler.h): the path tracer's.
+    int sampleLight(const LightSampleContext& ctx, float u, float* pmf) const;
+    float lightPmf(const LightSampleContext& ctx, int index) const;
 
     // What Embree holds: each mesh's triangles once, and one instance per copy of an instanced
     // mesh (Mesh::instances); an instanced scene's memory follows these, not the copies' triangles.
