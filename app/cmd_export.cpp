@@ -78,7 +78,7 @@ void runBake(ExportCommand o) {
     for (const MaterialBake& b : bakes) {
         const Material& original = scene.materials[size_t(b.material)];
         const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
-        for (int map = 0; map < BakedMaterial::kMapCount; ++map) {
+        for (int map = 0; map < int(b.baked.textures.size()); ++map) {
             refuseOverwritingInputs(stem + "_" + BakedMaterial::mapName(map) + ".png", scene.inputFiles);
             writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + ".png", b.baked.textures[size_t(map)]);
             if (!o.mips) continue;

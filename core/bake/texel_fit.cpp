@@ -67,6 +67,7 @@ TexelFit fitTexel(const TexelSums& s) {
     t.coverage = float(s.covered / s.points);
     t.baseColor = glm::vec3(glm::clamp(s.color / s.covered, 0.0, 1.0));
     t.rs = float(s.rs / s.covered);
+    t.transmitted = glm::vec3(s.transmitted / s.covered);
     const glm::dvec3 mean = s.normal / s.covered;
     const double length = glm::length(mean);
     t.normal = length > 1e-12 ? glm::vec3(mean / length) : glm::vec3(0.0f, 0.0f, 1.0f);

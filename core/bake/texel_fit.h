@@ -36,6 +36,7 @@ struct TexelFit {
     float roughness = 1.0f, anisotropy = 0.0f;
     glm::vec2 direction{1.0f, 0.0f};  // unit, x + y >= 0 (a direction has no sign)
     float rs = 0.04f;
+    glm::vec3 transmitted{0.0f};  // the covered points' mean body transmittance T
 };
 
 // Throws nothing; a footprint without a covered point gives coverage 0 and the defaults.

@@ -121,10 +121,12 @@ std::vector<TexelFit> fitAll(const std::vector<TexelSums>& sums, glm::ivec2 size
 uint8_t unorm8(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 uint8_t signed8(float v) { return unorm8(0.5f * (v + 1.0f)); }
 
-// `colorScale` multiplies the base colour (the far field's fitted scale).
-std::vector<TextureImage> encode(const std::vector<TexelFit>& fits, glm::ivec2 size, int level, float colorScale) {
-    std::vector<TextureImage> maps(BakedMaterial::kMapCount);
-    for (int m = 0; m < BakedMaterial::kMapCount; ++m) {
+// `colorScale` multiplies the base colour (the far field's fitted scale); a `transmission` above
+// 0 (the diffuse transmission's factor) adds the transmission's colour map, T over it.
+std::vector<TextureImage> encode(const std::vector<TexelFit>& fits, glm::ivec2 size, int level, float colorScale,
+                                 float transmission) {
+    std::vector<TextureImage> maps(BakedMaterial::kMapCount + (transmission > 0.0f ? 1 : 0));
+    for (int m = 0; m < int(maps.size()); ++m) {
         maps[size_t(m)].name = std::string("baked ") + BakedMaterial::mapName(m) + (level ? " level " + std::to_string(level) : "");
         maps[size_t(m)].width = size.x;
         maps[size_t(m)].height = size.y;
@@ -138,6 +140,11 @@ std::vector<TextureImage> encode(const std::vector<TexelFit>& fits, glm::ivec2 s
         // R is occlusion's channel in an ORM texture: 1, nothing occluded.
         maps[BakedMaterial::kMetallicRoughness].bytes.emplace_back(255, unorm8(t.roughness), 0, 255);
         maps[BakedMaterial::kAnisotropy].bytes.emplace_back(signed8(t.direction.x), signed8(t.direction.y), unorm8(t.anisotropy), 255);
+        if (transmission > 0.0f) {
+            const glm::vec3 c = glm::clamp(t.transmitted / transmission, 0.0f, 1.0f);
+            maps[BakedMaterial::kDiffuseTransmission].bytes.emplace_back(unorm8(linearToSrgb(c.r)), unorm8(linearToSrgb(c.g)),
+                                                                         unorm8(linearToSrgb(c.b)), 255);
+        }
     }
     return maps;
 }
@@ -152,7 +159,7 @@ std::string fixed(double v, int digits) {
 }  // namespace
 
 const char* BakedMaterial::mapName(int map) {
-    static const char* const names[kMapCount] = {"base_color", "normal", "metallic_roughness", "anisotropy"};
+    static const char* const names[] = {"base_color", "normal", "metallic_roughness", "anisotropy", "diffuse_transmission"};
     return names[map];
 }
 
@@ -177,14 +184,14 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
 
     const std::vector<TexelSums> sums = sampleTexels(model, size, extent, o.supersamples, o.progress);
     bool gaps = false;
-    double rsMin = 1.0, rsMax = 0.0, covered = 0.0;
-    glm::dvec3 transmitted(0.0);
+    double rsMin = 1.0, rsMax = 0.0, transmission = 0.0;
     for (const TexelSums& s : sums) {
         gaps = gaps || s.covered < s.points;
-        covered += s.covered;
-        transmitted += s.transmitted;
         if (s.covered > 0.0) rsMin = std::min(rsMin, s.rs / s.covered), rsMax = std::max(rsMax, s.rs / s.covered);
+        if (s.covered > 0.0)
+            transmission = std::max({transmission, s.transmitted.r / s.covered, s.transmitted.g / s.covered, s.transmitted.b / s.covered});
     }
+    transmission = std::min(transmission, 1.0);
     std::vector<std::vector<TexelFit>> levels{fitAll(sums, size)};
     std::vector<glm::ivec2> levelSizes{size};
     for (int level = 1; size.x >> (level - 1) > 1 || size.y >> (level - 1) > 1; ++level) {
@@ -194,7 +201,7 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     if (!o.anisotropy)
         for (std::vector<TexelFit>& level : levels)
             for (TexelFit& t : level) t = isotropic(t);
-    baked.textures = encode(levels[0], size, 0, 1.0f);
+    baked.textures = encode(levels[0], size, 0, 1.0f, float(transmission));
 
     // The material: every texture over one tile of the bake, repeated across the mesh's uv.
     TextureRef ref;
@@ -227,27 +234,28 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
                               std::to_string(o.repeats) + " repeat(s) of it, tiled");
     // The yarns' transmission (docs/MODEL_TRANSMISSION.md) as KHR_materials_diffuse_transmission:
     // the light glTF's diffuse base passes, (1 - F) D colour, is the model's T (1 - R_s) at normal
-    // incidence, the mean over the covered points (the gaps stay alpha). D is T's largest channel,
-    // so the colour is at most 1; the far field's base scale below then takes up the (1 - D) that
-    // the diffuse reflection loses. Opaque yarns write no extension.
-    const glm::dvec3 meanTransmitted = covered > 0.0 ? transmitted / covered : glm::dvec3(0.0);
-    if (const double d = std::max({meanTransmitted.r, meanTransmitted.g, meanTransmitted.b}); d > 0.0) {
-        m.diffuseTransmission.factor = float(std::min(d, 1.0));
-        m.diffuseTransmission.color = glm::vec3(glm::clamp(meanTransmitted / d, 0.0, 1.0));
-        baked.notes.push_back("its yarns' transmission is baked as KHR_materials_diffuse_transmission, one factor and colour "
-                              "for the whole material and all of it diffuse: glTF has no forward (transmission_gloss) "
-                              "lobe and no texture per texel is written for it");
+    // incidence, per texel the mean over its covered points (the gaps stay alpha; a gap's texel
+    // takes its neighbours' T, as its other maps do). D is the largest channel of any texel's T,
+    // so the colour texture holds T / D, at most 1; the far field's base scale below then takes up
+    // what the diffuse reflection loses. Opaque yarns write no extension and no map.
+    if (transmission > 0.0) {
+        m.diffuseTransmission.factor = float(transmission);
+        m.diffuseTransmission.colorTexture = ref;
+        m.diffuseTransmission.colorTexture.image = BakedMaterial::kDiffuseTransmission;
+        m.diffuseTransmission.colorTexture.srgb = true;
+        baked.notes.push_back("its yarns' transmission is baked as KHR_materials_diffuse_transmission (its colour a texture "
+                              "per texel), all of it diffuse: glTF has no forward (transmission_gloss) lobe");
     }
     // The factors no texel decides, from the far field; the base colour's scale goes into the textures.
     const FarFieldFit fit = fitFarField(params, m, baked.textures, baked.uvSize, o.sheen);
     m.specular = fit.specular;
     m.sheen = fit.sheen;
     baked.farFieldError = fit.after;
-    baked.textures = encode(levels[0], size, 0, fit.baseScale);
-    baked.mipLevels.assign(BakedMaterial::kMapCount, {});
+    baked.textures = encode(levels[0], size, 0, fit.baseScale, float(transmission));
+    baked.mipLevels.assign(baked.textures.size(), {});
     for (size_t level = 1; level < levels.size(); ++level) {
-        const std::vector<TextureImage> maps = encode(levels[level], levelSizes[level], int(level), fit.baseScale);
-        for (int map = 0; map < BakedMaterial::kMapCount; ++map) baked.mipLevels[size_t(map)].push_back(maps[size_t(map)]);
+        const std::vector<TextureImage> maps = encode(levels[level], levelSizes[level], int(level), fit.baseScale, float(transmission));
+        for (size_t map = 0; map < maps.size(); ++map) baked.mipLevels[map].push_back(maps[map]);
     }
     return baked;
 }
@@ -259,7 +267,8 @@ Material bakedMaterial(const Material& original, const BakedMaterial& baked, int
     m.emission = original.emission;
     m.emissiveTexture = original.emissiveTexture;
     m.doubleSided = original.doubleSided;
-    for (TextureRef* ref : {&m.baseColorTexture, &m.normalTexture, &m.metallicRoughnessTexture, &m.anisotropy.texture})
+    for (TextureRef* ref : {&m.baseColorTexture, &m.normalTexture, &m.metallicRoughnessTexture, &m.anisotropy.texture,
+                            &m.diffuseTransmission.colorTexture})
         if (*ref) ref->image += firstTexture;
     return m;
 }

@@ -5,6 +5,8 @@
 //   normal               the yarns' bump and crimp, tangent space
 //   metallic-roughness   G: roughness across the fitted lobe; metallic 0
 //   anisotropy           KHR_materials_anisotropy: RG direction, B strength, along the top yarn
+//   diffuse transmission KHR_materials_diffuse_transmission's colour texture, where the yarns
+//                        transmit: each texel's body transmittance over the material's factor
 // plus the factors fitted to the model's far field (far_field_fit.h: a base colour scale,
 // KHR_materials_specular, KHR_materials_sheen) and KHR_materials_ior from rs. Every
 // texel is fitted from the model over its footprint (texel_fit.h), and so is every mip level:
@@ -41,9 +43,11 @@ struct BakedMaterial {
     // The glTF material; its textures index `textures`, with KHR_texture_transform's scale set so
     // one texture spans `uvSize` of the mesh's texture coordinates: the weave keeps its size.
     Material material;
-    // Base colour, normal, metallic-roughness, anisotropy (kBaseColor...): level 0.
+    // Base colour, normal, metallic-roughness, anisotropy (kBaseColor...), and the diffuse
+    // transmission's colour where the yarns transmit: level 0.
     std::vector<TextureImage> textures;
-    enum Map { kBaseColor, kNormal, kMetallicRoughness, kAnisotropy, kMapCount };
+    enum Map { kBaseColor, kNormal, kMetallicRoughness, kAnisotropy, kDiffuseTransmission };
+    static constexpr int kMapCount = 4;  // the maps of every bake, before kDiffuseTransmission
     static const char* mapName(int map);  // "base_color", "normal", ...
     // Levels 1, 2, ... of each texture, fitted from the model, down to 1 x 1.
     std::vector<std::vector<TextureImage>> mipLevels;

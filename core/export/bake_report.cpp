@@ -118,10 +118,11 @@ MipComparison compareMipLevels(const WovenParams& params, const BakedMaterial& b
         return relativeRmse(farField(GltfMaterial(baked.material, textures), points, farFieldDirections()), target);
     };
     std::vector<TextureImage> fitted, filtered;
-    for (int map = 0; map < BakedMaterial::kMapCount; ++map) {
+    for (int map = 0; map < int(baked.textures.size()); ++map) {
         fitted.push_back(baked.mipLevels[size_t(map)].empty() ? baked.textures[size_t(map)] : baked.mipLevels[size_t(map)].back());
         TextureImage t = baked.textures[size_t(map)];
-        while (t.width > 1 || t.height > 1) t = boxFiltered(t, map == BakedMaterial::kBaseColor);
+        while (t.width > 1 || t.height > 1)
+            t = boxFiltered(t, map == BakedMaterial::kBaseColor || map == BakedMaterial::kDiffuseTransmission);
         filtered.push_back(t);
     }
     return {farFieldOf(baked.textures), farFieldOf(fitted), farFieldOf(filtered)};

@@ -1,6 +1,7 @@
-// `woven export` and `woven bake` as a user runs them: the exported satin of assets/ and the
-// bake's sample file pass Khronos's glTF validator (gltf-transform from npm; skipped, saying how to
-// get it, where it is not installed), and bad input gets a clear message and leaves no file.
+// `woven export` and `woven bake` as a user runs them: the exported satin of assets/, a gingham
+// whose yarns transmit and the bake's sample file pass Khronos's glTF validator (gltf-transform
+// from npm; skipped, saying how to get it, where it is not installed), and bad input gets a clear
+// message and leaves no file.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -16,6 +17,7 @@
 #include "gltf_loader.h"
 #include "gltf_writer.h"
 #include "scene_camera.h"
+#include "srgb.h"
 #include "temp_dir.h"
 
 namespace woven {
@@ -60,6 +62,13 @@ Validation validate(const std::string& file) {
     return v;
 }
 
+// The mean colour of an sRGB texture, in linear light.
+glm::vec3 meanLinearColour(const TextureImage& t) {
+    glm::dvec3 sum(0.0);
+    for (const glm::u8vec4& b : t.bytes) sum += glm::dvec3(srgbToLinear(b.r / 255.0f), srgbToLinear(b.g / 255.0f), srgbToLinear(b.b / 255.0f));
+    return glm::vec3(sum / double(std::max<size_t>(t.bytes.size(), 1)));
+}
+
 #define REQUIRE_VALIDATOR()                                                                                       \
     if (validator().empty())                                                                                      \
     GTEST_SKIP() << "Khronos's glTF validator is not installed, so the exported files were not validated: "     \
@@ -86,8 +95,8 @@ TEST(ExportCommand, TheExportedSatinPassesKhronossValidator) {
 
 TEST(ExportCommand, YarnTransmissionIsWrittenAsDiffuseTransmissionAndPassesKhronossValidator) {
     // A red satin whose yarns pass 80 % (MODEL_TRANSMISSION.md 1): T = t (1 - R_d) (R_d / max R_d)^2
-    // per channel, so the baked colour is red and the factor T's red, 0.8 (1 - 0.55) = 0.36,
-    // within the far field's mixing of both faces' yarns. Without transmission no extension.
+    // per channel, so the baked colour is red and T's red 0.8 (1 - 0.55) = 0.36, within the far
+    // field's mixing of both faces' yarns. Without transmission no extension.
     TempDir dir;
     const std::string scene = quoted(std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json");
     const std::string red = R"("pattern": [9, 1, 3], "weft_color": [0.55, 0.12, 0.1], "warp_color": [0.55, 0.12, 0.1])";
@@ -98,9 +107,16 @@ TEST(ExportCommand, YarnTransmissionIsWrittenAsDiffuseTransmissionAndPassesKhron
     const SceneDescription sheer = loadGltf(dir.file("sheer.gltf"));
     const auto cloth = std::find_if(sheer.materials.begin(), sheer.materials.end(), [](const Material& m) { return m.name == "Cloth"; });
     ASSERT_NE(cloth, sheer.materials.end());
-    EXPECT_NEAR(cloth->diffuseTransmission.factor, 0.36f, 0.01f);
-    EXPECT_NEAR(cloth->diffuseTransmission.color.r, 1.0f, 1e-6f);
-    EXPECT_NEAR(cloth->diffuseTransmission.color.g, 0.8f * 0.88f * (0.12f / 0.55f) * (0.12f / 0.55f) / 0.36f, 0.01f);
+    // T per texel is the factor times the colour texture (the factor the largest texel's T, which
+    // the satin's colour noise lifts above the mean): over the texels, the mean T (8-bit sRGB
+    // rounds G's 0.034 by 0.001 at most).
+    EXPECT_EQ(cloth->diffuseTransmission.color, glm::vec3(1.0f));
+    ASSERT_TRUE(cloth->diffuseTransmission.colorTexture);
+    const glm::vec3 T = cloth->diffuseTransmission.factor *
+                        meanLinearColour(sheer.textures.at(size_t(cloth->diffuseTransmission.colorTexture.image)));
+    EXPECT_NEAR(T.r, 0.36f, 0.01f);
+    EXPECT_NEAR(T.g, 0.8f * 0.88f * (0.12f / 0.55f) * (0.12f / 0.55f), 0.003f);
+    EXPECT_GE(cloth->diffuseTransmission.factor, T.r);
     EXPECT_EQ(cloth->alphaMode, AlphaMode::Opaque);  // a gap-free satin: alpha stays for gaps only
     const auto opaque = runWoven("export " + scene + " --woven 'Cloth={" + red + "}' --size 128 -o " + quoted(dir.file("opaque.gltf")) + " 2>&1");
     ASSERT_EQ(opaque.exitCode, 0) << opaque.out;
@@ -109,6 +125,37 @@ TEST(ExportCommand, YarnTransmissionIsWrittenAsDiffuseTransmissionAndPassesKhron
     EXPECT_EQ(text.find("KHR_materials_diffuse_transmission"), std::string::npos);
     if (validator().empty()) return;
     const Validation v = validate(dir.file("sheer.gltf"));
+    EXPECT_NE(v.report.find("code,message,severity,pointer"), std::string::npos) << "the validator did not run:\n" << v.report;
+    EXPECT_EQ(v.errors, 0) << v.report;
+    EXPECT_EQ(v.warnings, 0) << v.report;
+}
+
+TEST(ExportCommand, StripedYarnTransmissionIsATexturePerTexelAndPassesKhronossValidator) {
+    // Gingham's dark and light threads with their yarns passing 80 %: T = t (1 - R_d) (R_d /
+    // max R_d)^2 is several times larger for the dark thread than for the light one, and a
+    // crossing passes the smaller of its two yarns' T, so the texels of dark-on-dark crossings
+    // must come out far brighter than the others, the brightest at the factor itself.
+    TempDir dir;
+    const std::string scene = quoted(std::string(WOVEN_ASSETS_DIR) + "/gingham.json");
+    const auto r = runWoven("export " + scene + " --woven 'Cloth={\"transmission\": 0.8}' --size 128 -o " +
+                            quoted(dir.file("gingham.gltf")) + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const SceneDescription gingham = loadGltf(dir.file("gingham.gltf"));
+    const auto cloth = std::find_if(gingham.materials.begin(), gingham.materials.end(), [](const Material& m) { return m.name == "Cloth"; });
+    ASSERT_NE(cloth, gingham.materials.end());
+    ASSERT_TRUE(cloth->diffuseTransmission.colorTexture);
+    const TextureImage& t = gingham.textures.at(size_t(cloth->diffuseTransmission.colorTexture.image));
+    ASSERT_FALSE(t.bytes.empty());
+    float brightest = 0.0f, darkest = 1.0f;
+    for (const glm::u8vec4& b : t.bytes) {
+        const float peak = srgbToLinear(std::max({b.r, b.g, b.b}) / 255.0f);
+        brightest = std::max(brightest, peak);
+        darkest = std::min(darkest, peak);
+    }
+    EXPECT_NEAR(brightest, 1.0f, 0.01f);  // the factor is the largest texel's T
+    EXPECT_LT(darkest, 0.5f * brightest) << "one colour for every texel: the stripes' transmission is lost";
+    if (validator().empty()) return;
+    const Validation v = validate(dir.file("gingham.gltf"));
     EXPECT_NE(v.report.find("code,message,severity,pointer"), std::string::npos) << "the validator did not run:\n" << v.report;
     EXPECT_EQ(v.errors, 0) << v.report;
     EXPECT_EQ(v.warnings, 0) << v.report;
