@@ -76,7 +76,7 @@ LightBounds BvhLightSampler::build(std::vector<std::pair<int, LightBounds>>& bvh
                                    uint64_t bits, int depth) {
     if (end - begin == 1) {
         const auto& [light, bounds] = bvhLights[begin];
-        nodes_.push_back({bounds, light, true});
+        nodes_.push_back({LightImportance(bounds), light, true});
         trail_[size_t(light)] = bits;
         return bounds;
     }
@@ -126,8 +126,9 @@ LightBounds BvhLightSampler::build(std::vector<std::pair<int, LightBounds>>& bvh
     const LightBounds first = build(bvhLights, begin, middle, bits, depth + 1);
     nodes_[node].childOrLight = int(nodes_.size());
     const LightBounds second = build(bvhLights, middle, end, bits | uint64_t(1) << depth, depth + 1);
-    nodes_[node].bounds = unionOf(first, second);
-    return nodes_[node].bounds;
+    const LightBounds both = unionOf(first, second);
+    nodes_[node].importance = LightImportance(both);
+    return both;
 }
 
 int BvhLightSampler::sample(const LightSampleContext& ctx, float u, float* pmf) const {
@@ -148,7 +149,7 @@ int BvhLightSampler::sample(const LightSampleContext& ctx, float u, float* pmf) 
             return node.childOrLight;
         }
         const size_t second = size_t(node.childOrLight);
-        const float i0 = nodes_[at + 1].bounds.importance(ctx.p, ctx.n), i1 = nodes_[second].bounds.importance(ctx.p, ctx.n);
+        const float i0 = nodes_[at + 1].importance(ctx.p, ctx.n), i1 = nodes_[second].importance(ctx.p, ctx.n);
         if (!(i0 + i1 > 0.0f)) return -1;
         const float p0 = childProbability(i0, i1, 0);
         if (u < p0) {
@@ -170,7 +171,7 @@ float BvhLightSampler::pmf(const LightSampleContext& ctx, int index) const {
     uint64_t bits = trail_[size_t(index)];
     for (size_t at = 0; !nodes_[at].leaf; bits >>= 1) {
         const size_t second = size_t(nodes_[at].childOrLight);
-        const float i0 = nodes_[at + 1].bounds.importance(ctx.p, ctx.n), i1 = nodes_[second].bounds.importance(ctx.p, ctx.n);
+        const float i0 = nodes_[at + 1].importance(ctx.p, ctx.n), i1 = nodes_[second].importance(ctx.p, ctx.n);
         if (!(i0 + i1 > 0.0f)) return 0.0f;
         const int child = int(bits & 1);
         p *= childProbability(i0, i1, child);

@@ -34,7 +34,7 @@ public:
 
 private:
     struct Node {
-        LightBounds bounds;
+        LightImportance importance;
         // An inner node's second child (its first follows it), or a leaf's light.
         int childOrLight = 0;
         bool leaf = false;

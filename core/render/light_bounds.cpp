@@ -27,17 +27,6 @@ glm::vec3 rotate(const glm::vec3& v, const glm::vec3& axis, float angle) {
     return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0f - c);
 }
 
-// The cosine of the half-angle of the cone of directions from p that the box's bounding sphere
-// subtends: -1 (every direction) from inside it.
-float cosSubtended(const Bounds& b, const glm::vec3& p) {
-    const glm::vec3 centre = b.centre();
-    const float r2 = glm::dot(b.hi - b.lo, b.hi - b.lo) / 4.0f;
-    const glm::vec3 d = p - centre;
-    const float d2 = glm::dot(d, d);
-    if (d2 < r2) return -1.0f;
-    return safeSqrt(1.0f - r2 / d2);
-}
-
 Bounds unionOf(const Bounds& a, const Bounds& b) { return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)}; }
 
 }  // namespace
@@ -70,26 +59,37 @@ LightBounds unionOf(const LightBounds& a, const LightBounds& b) {
     return u;
 }
 
-float LightBounds::importance(const glm::vec3& p, const glm::vec3& n) const {
-    const glm::vec3 centre = bounds.centre();
-    // Clamped below by half the box's diagonal, as pbrt-v4 does, so that points inside or near
-    // a group do not give it unbounded weight.
-    const float d2 = std::max(glm::dot(p - centre, p - centre), glm::length(bounds.hi - bounds.lo) / 2.0f);
-    const glm::vec3 toP = p - centre;
-    const float toPLength = glm::length(toP);
-    const glm::vec3 wi = toPLength > 0.0f ? toP / toPLength : cone.w;
-    float cosThetaW = glm::dot(cone.w, wi);
-    if (twoSided) cosThetaW = std::abs(cosThetaW);
+LightImportance::LightImportance(const LightBounds& b)
+    : centre_(b.bounds.centre()),
+      w_(b.cone.w),
+      radius2_(glm::dot(b.bounds.hi - b.bounds.lo, b.bounds.hi - b.bounds.lo) / 4.0f),
+      // Clamped below by half the box's diagonal (a length, as pbrt-v4 has it), so that points
+      // inside or near a group do not give it unbounded weight.
+      minDistance2_(glm::length(b.bounds.hi - b.bounds.lo) / 2.0f),
+      phi_(b.phi),
+      cosThetaO_(b.cone.cosTheta),
+      sinThetaO_(safeSqrt(1.0f - b.cone.cosTheta * b.cone.cosTheta)),
+      cosThetaE_(b.cosThetaE),
+      twoSided_(b.twoSided) {}
+
+float LightImportance::operator()(const glm::vec3& p, const glm::vec3& n) const {
+    const glm::vec3 toP = p - centre_;
+    const float distance2 = glm::dot(toP, toP);
+    const glm::vec3 wi = distance2 > 0.0f ? toP / std::sqrt(distance2) : w_;
+    float cosThetaW = glm::dot(w_, wi);
+    if (twoSided_) cosThetaW = std::abs(cosThetaW);
     const float sinThetaW = safeSqrt(1.0f - cosThetaW * cosThetaW);
+    // The half-angle theta_b that the bounding sphere subtends from p: everything from inside.
+    const bool inside = distance2 < radius2_;
+    const float sinThetaB = inside ? 0.0f : std::sqrt(radius2_ / distance2);
+    const float cosThetaB = inside ? -1.0f : safeSqrt(1.0f - radius2_ / distance2);
     // The smallest angle between an emitting normal and the direction to p: theta_w less theta_o
-    // and less the angle the bounds subtend from p.
-    const float cosThetaB = cosSubtended(bounds, p), sinThetaB = safeSqrt(1.0f - cosThetaB * cosThetaB);
-    const float sinThetaO = safeSqrt(1.0f - cone.cosTheta * cone.cosTheta);
-    const float cosThetaX = cosSubClamped(sinThetaW, cosThetaW, sinThetaO, cone.cosTheta);
-    const float sinThetaX = sinSubClamped(sinThetaW, cosThetaW, sinThetaO, cone.cosTheta);
+    // and less theta_b.
+    const float cosThetaX = cosSubClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
+    const float sinThetaX = sinSubClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
     const float cosThetaP = cosSubClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
-    if (cosThetaP <= cosThetaE) return 0.0f;
-    float importance = phi * cosThetaP / d2;
+    if (cosThetaP <= cosThetaE_) return 0.0f;
+    float importance = phi_ * cosThetaP / std::max(distance2, minDistance2_);
     if (n != glm::vec3(0.0f)) {
         // Both sides of the surface: a cloth's yarns let light through.
         const float cosThetaI = std::abs(glm::dot(wi, n)), sinThetaI = safeSqrt(1.0f - cosThetaI * cosThetaI);

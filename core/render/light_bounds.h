@@ -30,14 +30,29 @@ struct LightBounds {
     DirectionCone cone;
     float cosThetaE = 1.0f;
     bool twoSided = false;
-
-    // An upper bound on what these lights could send to p on a surface of normal n, relative to
-    // other bounds' (n zero away from surfaces): the power over the squared distance, times the
-    // best cosines that the bounds allow at the lights and at p. 0 only where none can reach p.
-    float importance(const glm::vec3& p, const glm::vec3& n) const;
 };
 
 LightBounds unionOf(const LightBounds& a, const LightBounds& b);
+
+// A LightBounds as the light BVH's walk reads it, with what does not depend on the point worked
+// out once: the box as its bounding sphere, and the cone's sine.
+class LightImportance {
+public:
+    LightImportance() = default;
+    explicit LightImportance(const LightBounds& b);
+
+    // An upper bound on what the lights could send to p on a surface of normal n, relative to
+    // other bounds' (n zero away from surfaces): the power over the squared distance, times the
+    // best cosines that the bounds allow at the lights and at p. 0 only where none can reach p.
+    float operator()(const glm::vec3& p, const glm::vec3& n) const;
+
+private:
+    glm::vec3 centre_{0.0f}, w_{0.0f, 0.0f, 1.0f};
+    float radius2_ = 0.0f;       // the bounding sphere's squared radius
+    float minDistance2_ = 0.0f;  // pbrt-v4's floor on the squared distance: half the diagonal
+    float phi_ = 0.0f, cosThetaO_ = 1.0f, sinThetaO_ = 0.0f, cosThetaE_ = 1.0f;
+    bool twoSided_ = false;
+};
 
 // The bounds of one light; none for infinite lights, which are not in the BVH, and for lights
 // of no power.
