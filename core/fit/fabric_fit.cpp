@@ -12,6 +12,7 @@
 #include "photo_model.h"
 #include "power_spectrum.h"
 #include "weave_candidates.h"
+#include "weave_lattice.h"
 
 namespace woven {
 
@@ -23,10 +24,17 @@ using Clock = std::chrono::steady_clock;
 // camera's axes still finds its threads, while a twill's or satin's off-axis peaks (14 degrees
 // and more from the axes at the thread counts of real cloth) are left alone.
 constexpr double kPeakHalfAngle = 4.0 * M_PI / 180.0;
-// Colour mixtures per weave candidate (stage 2): BOBYQA needs 2n + 1 = 13 to set up its model of
-// six colours, and this leaves it as many again: enough to tell the weaves apart, as stage 4
-// refines the colours of the one chosen.
-constexpr int kColourEvaluations = 24;
+// Colour mixtures per shortlisted weave (stage 2), which cost no rendering: enough for BOBYQA to
+// converge on six colours (2n + 1 = 13 set up its model), as the weave whose colours are only
+// half fitted can score worse than a wrong one.
+constexpr int kColourEvaluations = 200;
+// Full renders each shortlisted weave's gloss, widths and bump are refined with before the weaves
+// are compared (stage 2): BOBYQA's 2n + 1 = 25 to set up its model of the 12 parameters and as
+// many steps. A weave and its complement only tell apart once the yarns' widths and gloss are
+// near: with the defaults' the synthetic 3/1 twill's colour mixtures preferred its complement.
+constexpr int kShortlistRefineRenders = 50;
+// Stage 4 restarts BOBYQA while a run lowers the loss by more than this fraction.
+constexpr double kRestartGain = 1e-3;
 
 struct ThreadPeaks {
     std::optional<SpectralPeak> ends, picks;  // across u (warp ends) and across v (weft picks)
@@ -148,7 +156,10 @@ public:
 
 private:
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    bool stop() const { return cancel_.load() || elapsed() >= options_.seconds; }
+    bool stop() const {
+        return cancel_.load() || elapsed() >= options_.seconds ||
+               (options_.renders > 0 && result_.evaluations >= options_.renders);
+    }
 
     void progress() {
         if (!onProgress_) return;
@@ -259,9 +270,10 @@ private:
         return p;
     }
 
-    // Stage 2: every weave with its colours fitted. False when the budget ran out first.
+    // Stage 2: the weaves the photo's spectrum shortlists (weave_lattice.h), each with its
+    // colours fitted, the best kept. False when the budget ran out first.
     bool chooseWeave(const WovenParams& start) {
-        const auto& candidates = weaveCandidates();
+        const std::vector<glm::ivec3> candidates = shortlist();
         for (size_t c = 0; c < candidates.size(); ++c) {
             if (stop()) {
                 result_.warnings.push_back("the time ran out during the weave search (" + std::to_string(c) + " of " +
@@ -270,11 +282,35 @@ private:
             }
             stage_ = "weave " + std::to_string(c + 1) + "/" + std::to_string(candidates.size());
             WovenParams p = start;
-            p.pattern = candidates[c].pattern;
+            p.pattern = candidates[c];
             fitColours(p);
-            evaluate(p);
+            if (candidates.size() == 1) {
+                evaluate(p);
+                continue;
+            }
+            std::vector<double> x = encode(p);
+            const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, p)); };
+            minimise(x, objective, kShortlistRefineRenders);
         }
         return true;
+    }
+
+    // The weaves whose lattice of peaks the first shot that shows both thread directions has;
+    // every candidate where none does.
+    std::vector<glm::ivec3> shortlist() const {
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            const ThreadPeaks& peaks = photoPeaks_[i];
+            if (!peaks.ends || !peaks.picks) continue;
+            const glm::dmat2& uvPerPixel = shots_[i].uvPerPixel;
+            const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+            // Signed as U and V grow: the sign of one against the other is a twill's direction.
+            const glm::dvec2 ends = glm::dot(peaks.ends->frequency, gradU) < 0.0 ? -peaks.ends->frequency : peaks.ends->frequency;
+            const glm::dvec2 picks = glm::dot(peaks.picks->frequency, gradV) < 0.0 ? -peaks.picks->frequency : peaks.picks->frequency;
+            return weaveShortlist(rankWeavesBySpectrum(shots_[i].image, ends, picks));
+        }
+        std::vector<glm::ivec3> all;
+        for (const WeaveCandidate& c : weaveCandidates()) all.push_back(c.pattern);
+        return all;
     }
 
     // Renders linear in the yarn colours (black, white weft, white warp) and NLopt over their
@@ -313,7 +349,7 @@ private:
         std::vector<double> best = x;
         double bestValue = INFINITY;
         const Objective counted = [&](const std::vector<double>& v) {
-            if (cancel_.load() || elapsed() >= options_.seconds) throw nlopt::forced_stop();
+            if (stop()) throw nlopt::forced_stop();
             ++count;
             const double f = objective(v);
             if (f < bestValue) {
@@ -349,20 +385,27 @@ private:
             if (photo.picks && r.picks)
                 p.repeat.y *= float(glm::length(photo.picks->frequency) / glm::length(r.picks->frequency));
         }
-        // The calibrated counts replace the best so far even where their loss is higher: the
-        // loss's spectrum bins are too coarse to see a shift of a few percent, the peaks are not.
-        result_.loss = INFINITY;
+        // Kept where their loss is lower: a render's peak can be pulled by the weave's own peaks
+        // beside it (the synthetic 3/1 twill's ends' peak moved 3 % from the photo's after the
+        // counts had been scaled to meet it, the counts 3 % off and the loss 5 times the truth's).
         evaluate(p);
         return true;
     }
 
-    // Stage 4.
+    // Stage 4: BOBYQA from the best so far, again from where it stopped while that gains (it
+    // stops where its trust region shrinks, often short of the minimum of so many parameters),
+    // until the budget is spent. Returns the renders it took.
     int refine() {
         stage_ = "gloss, widths, bump";
-        const WovenParams base = result_.params;
-        std::vector<double> x = encode(base);
-        const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, base)); };
-        return minimise(x, objective, 0);
+        int renders = 0;
+        for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
+            before = result_.loss;
+            const WovenParams base = result_.params;
+            std::vector<double> x = encode(base);
+            const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, base)); };
+            renders += minimise(x, objective, 0);
+        }
+        return renders;
     }
 
     void measureThreads() {

@@ -23,6 +23,7 @@ namespace woven {
 
 struct FitOptions {
     double seconds = 180.0;  // the time budget
+    int renders = 0;         // a budget of renders besides (0: none), which makes a fit repeatable
     FitRenderSettings render;
 };
 
