@@ -37,14 +37,8 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
         }
     }
     measuresLine_.clear();
-    auto [scale, first] = metresPerUv_.try_emplace(target);
-    if (first) {
-        try {
-            scale->second = worldLengthPerUv(scene(), edits_->meshesOf(target));
-        } catch (const std::invalid_argument&) {  // no UVs: a cloth of no known size
-        }
-    }
-    if (!scale->second) {
+    const std::optional<glm::dvec2>& scale = metresPerUvOf(target);
+    if (!scale) {
         ImGui::TextDisabled("(its meshes have no UVs to measure the cloth by)");
         return;
     }
@@ -53,7 +47,7 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
     } catch (const std::invalid_argument&) {
         return;
     }
-    measuresLine_ = describe(measureOnMesh(p, *scale->second, chosenHere()));
+    measuresLine_ = describe(measureOnMesh(p, *scale, chosenHere()));
     // One figure a line: ImGui wraps within a number ("0." and "16 cm").
     std::string lines = measuresLine_;
     for (size_t at = lines.find(", "); at != std::string::npos; at = lines.find(", ", at)) lines.replace(at, 2, "\n");
@@ -61,7 +55,7 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the repeat on its meshes, %.3g x %.3g cm per UV unit; the yarn counts of the fabric chosen "
                           "while its repeat and yarn widths stay, else each side weighed from its width",
-                          100.0 * scale->second->x, 100.0 * scale->second->y);
+                          100.0 * scale->x, 100.0 * scale->y);
 }
 
 void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>& warnings) {

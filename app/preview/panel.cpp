@@ -23,7 +23,7 @@ float PreviewWindow::labelWidth() {
     static const char* const labels[] = {"exposure",   "tone map",        "target",     "woven",    "fabric",  "weave preset",
                                          "scene file", "draft file",      "render size", "spp",     "noise threshold",
                                          "integrator", "image file",      "intensity",  "position", "direction",
-                                         "environment"};
+                                         "environment", "shot files",    "swatch",     "fit seconds"};
     float width = 0.0f;
     for (const char* label : labels) width = std::max(width, ImGui::CalcTextSize(label, nullptr, true).x);
     for (const ParamInfo& info : wovenParamTable())
@@ -96,6 +96,12 @@ void PreviewWindow::drawPanel() {
         drawLightControls();
         ImGui::PopID();
     }
+    if (ui::CollapsingHeader("Fit")) {
+        ImGui::PushID("fit");
+        drawFitControls();
+        ImGui::PopID();
+    }
+    applyFinishedFit();
     if (ui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushID("selection");
         drawSelection();

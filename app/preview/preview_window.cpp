@@ -215,11 +215,33 @@ void PreviewWindow::onKey(GLFWwindow* window, int key, int scancode, int action,
     if (self->imguiKeyCallback_) self->imguiKeyCallback_(window, key, scancode, action, mods);
 }
 
-// After ImGui::NewFrame(), which saw the keys down.
+namespace {
+
+bool isModifier(int key) {
+    return key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT || key == GLFW_KEY_LEFT_CONTROL ||
+           key == GLFW_KEY_RIGHT_CONTROL || key == GLFW_KEY_LEFT_ALT || key == GLFW_KEY_RIGHT_ALT ||
+           key == GLFW_KEY_LEFT_SUPER || key == GLFW_KEY_RIGHT_SUPER;
+}
+
+}  // namespace
+
+// After ImGui::NewFrame(), which saw the keys down. A modifier stays down for the whole frame,
+// released before the next NewFrame() (releaseDeferredModifiers): ImGui 1.86 asserts that the
+// modifiers do not change within a frame (a quick Ctrl+A in a text field aborted the window),
+// and the shortcut needs it held while the frame reads the key it modifies.
 void PreviewWindow::releaseDeferredKeys() {
     pressedSinceFrame_.clear();
     std::vector<glm::ivec3> releases;
     releases.swap(deferredReleases_);
+    for (const glm::ivec3& r : releases) {
+        if (isModifier(r.x)) deferredModifierReleases_.push_back(r);
+        else if (imguiKeyCallback_) imguiKeyCallback_(window_, r.x, r.y, GLFW_RELEASE, r.z);
+    }
+}
+
+void PreviewWindow::releaseDeferredModifiers() {
+    std::vector<glm::ivec3> releases;
+    releases.swap(deferredModifierReleases_);
     for (const glm::ivec3& r : releases)
         if (imguiKeyCallback_) imguiKeyCallback_(window_, r.x, r.y, GLFW_RELEASE, r.z);
 }
@@ -331,6 +353,8 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"material", material},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
                     {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
+        {"fit", {{"running", fit_.running()}, {"stage", fit_.progress().stage}, {"evaluations", fit_.progress().evaluations},
+                 {"error", fit_.error()}, {"applied", fitApplied_}}},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
                    {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image},
                    {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},
@@ -374,6 +398,7 @@ void PreviewWindow::run() {
         }
         finalDone_ = renderStopped && finalImage_ && final_.error().empty();
 
+        releaseDeferredModifiers();
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();

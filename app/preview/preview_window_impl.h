@@ -1,7 +1,8 @@
 #pragma once
 // The previewer window's class, private to app/preview: its loop and mouse handling are in
 // preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
-// render_panel.cpp (the Render button) and material_panel.cpp (selection, material, draft).
+// render_panel.cpp (the Render button), fit_panel.cpp (woven fit) and material_panel.cpp
+// (selection, material, draft).
 #include <epoxy/gl.h>
 // epoxy must come first: GLFW would otherwise include the system GL header.
 #include <GLFW/glfw3.h>
@@ -18,6 +19,7 @@
 #include "fabric_choice.h"
 #include "fabric_menu.h"
 #include "final_render.h"
+#include "fit_job.h"
 #include "interactive_resolution.h"
 #include "orbit_camera.h"
 #include "preview_lights.h"
@@ -66,6 +68,10 @@ private:
     void applyEdits();
     void drawLightControls();
     void drawRenderControls();
+    void drawFitControls();
+    void applyFinishedFit();
+    // The length per UV unit of the target's meshes, measured once a scene (nullopt: no UVs).
+    const std::optional<glm::dvec2>& metresPerUvOf(const std::string& target);
     void updateFinalTexture(const FilmImage& film);
     void drawFinalImage();
     void writeWindowScreenshot(const std::string& path);
@@ -84,6 +90,7 @@ private:
     // whether a key is down, not that it went down; it does so for mouse buttons alone.
     static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
     void releaseDeferredKeys();
+    void releaseDeferredModifiers();
 
     PreviewWindowOptions options_;
     GLFWwindow* window_ = nullptr;
@@ -105,6 +112,7 @@ private:
     GLFWkeyfun imguiKeyCallback_ = nullptr;
     std::vector<int> pressedSinceFrame_;       // keys that went down since the last NewFrame()
     std::vector<glm::ivec3> deferredReleases_;  // key, scancode, mods
+    std::vector<glm::ivec3> deferredModifierReleases_;  // for the next frame, before NewFrame()
     glm::dvec2 lastCursor_{0.0};
     std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
     bool steering_ = false;                // the camera is being dragged or zoomed
@@ -129,6 +137,14 @@ private:
     std::optional<ChosenFabric> chosenFabric_;
     std::map<std::string, std::optional<glm::dvec2>> metresPerUv_;
     std::string measuresLine_;
+
+    // The Fit section's job, the edit it fits (until it is applied) and whether the last one was.
+    FitJob fit_;
+    std::string fitTarget_;
+    bool fitApplied_ = false;
+    char fitShots_[1024] = "";
+    char fitSwatch_[256] = "";
+    double fitSeconds_ = 180.0;
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;

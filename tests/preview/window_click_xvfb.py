@@ -81,7 +81,7 @@ def png_pixels(path):
 
 
 class Window:
-    def __init__(self, woven, tmp, display):
+    def __init__(self, woven, tmp, display, args=('--spp', '4', '--integrator', 'path')):
         self.tmp = tmp
         self.map_path = os.path.join(tmp, 'map.json')
         self.env = dict(os.environ, DISPLAY=f':{display}', LIBGL_ALWAYS_SOFTWARE='1')
@@ -89,7 +89,7 @@ class Window:
         # The Render button's settings come from the command line but for the size, which the
         # test types into the panel; the window keeps its default 1280x800.
         self.process = subprocess.Popen(
-            [woven, 'preview', '--spp', '4', '--integrator', 'path', '--frames', '0', '--widget-map', self.map_path],
+            [woven, 'preview', *args, '--frames', '0', '--widget-map', self.map_path],
             cwd=tmp, env=self.env, stdout=subprocess.DEVNULL, stderr=self.stderr)
         self.map = None
 
@@ -176,18 +176,26 @@ def check_panel(m, where):
               f'the panel shows up to {clip[2]}')
 
 
-def main(woven):
-    woven = os.path.abspath(woven)
-    tmp = tempfile.mkdtemp(prefix='woven-click-')
+def start_xvfb():
+    """An X server on a free display, and the display; the caller kills it."""
     display = free_display()
     xvfb = subprocess.Popen(['Xvfb', f':{display}', '-screen', '0', '1600x1000x24', '-nolisten', 'tcp'],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 10
+    while not os.path.exists(f'/tmp/.X11-unix/X{display}'):
+        if time.monotonic() >= deadline:
+            xvfb.kill()
+            raise Failure('Xvfb did not start within 10 s')
+        time.sleep(0.1)
+    return xvfb, display
+
+
+def main(woven):
+    woven = os.path.abspath(woven)
+    tmp = tempfile.mkdtemp(prefix='woven-click-')
+    xvfb, display = start_xvfb()
     window = None
     try:
-        deadline = time.monotonic() + 10
-        while not os.path.exists(f'/tmp/.X11-unix/X{display}'):
-            check(time.monotonic() < deadline, 'Xvfb did not start within 10 s')
-            time.sleep(0.1)
         window = Window(woven, tmp, display)
         m = window.wait('the first widget map', lambda m: m['state']['frame'] >= 2, 60)
         check(m['state']['window']['size'] == list(WINDOW), f'window size {m["state"]["window"]["size"]}')

@@ -1,0 +1,77 @@
+#include "fit_job.h"
+
+#include "fit_output.h"
+#include "shot.h"
+
+namespace woven {
+
+FitJob::~FitJob() { cancel(); }
+
+void FitJob::start(const std::vector<std::string>& shotPaths, const std::string& target, double seconds) {
+    cancel();
+    cancel_ = false;
+    running_ = true;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        progress_ = FitProgress{"loading the shots", 0, 0.0, seconds, 0.0};
+        history_.clear();
+        result_.reset();
+        error_.clear();
+    }
+    worker_ = std::thread([this, shotPaths, target, seconds] {
+        try {
+            if (shotPaths.empty()) throw FitError("no shot files: name one or more scene files with a \"photo\" key");
+            std::vector<Shot> shots;
+            for (const std::string& path : shotPaths) shots.push_back(loadShot(path, target));
+            FitOptions options;
+            options.seconds = seconds;
+            FittedFabric fitted;
+            fitted.fit = fitFabric(shots, options, cancel_, [&](const FitProgress& p) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                progress_ = p;
+                history_.push_back(float(p.bestLoss));
+            });
+            fitted.threadsPerCm = threadsPerCm(shots[0], fitted.fit.params.repeat);
+            std::lock_guard<std::mutex> lock(mutex_);
+            result_ = std::move(fitted);
+        } catch (const std::exception& e) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = e.what();
+        }
+        running_ = false;
+    });
+}
+
+void FitJob::cancel() {
+    cancel_ = true;
+    wait();
+}
+
+void FitJob::wait() {
+    if (worker_.joinable()) worker_.join();
+}
+
+FitProgress FitJob::progress() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return progress_;
+}
+
+std::vector<float> FitJob::lossHistory() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return history_;
+}
+
+std::optional<FittedFabric> FitJob::takeResult() {
+    if (running_) return std::nullopt;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<FittedFabric> result = std::move(result_);
+    result_.reset();
+    return result;
+}
+
+std::string FitJob::error() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+}
+
+}  // namespace woven
