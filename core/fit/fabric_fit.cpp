@@ -288,6 +288,7 @@ private:
                 evaluate(p);
                 continue;
             }
+            p = rescaled(p);
             std::vector<double> x = encode(p);
             const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, p)); };
             minimise(x, objective, kShortlistRefineRenders);
@@ -392,6 +393,24 @@ private:
         return true;
     }
 
+    // A free exposure scales the render as the yarns' colours and rs do together, so the
+    // optimiser drifts along that valley, and a colour that reaches its axis's end is held there
+    // (the synthetic satin's warp ended at 0.002 for 0.1 with the exposure 4 times the truth's).
+    // Where an exposure is free, the colours and rs scaled so the brightest channel is 0.5, the
+    // middle of its axis; the loss stays what it was (the exposure takes the scale back).
+    WovenParams rescaled(WovenParams p) const {
+        bool free = false;
+        for (const Shot& s : shots_) free = free || !s.photo.exposure;
+        const float brightest = std::max({p.weft_color.r, p.weft_color.g, p.weft_color.b, p.warp_color.r,
+                                          p.warp_color.g, p.warp_color.b});
+        if (!free || !(brightest > 0.0f)) return p;
+        const float k = 0.5f / brightest;
+        p.weft_color *= k;
+        p.warp_color *= k;
+        p.rs = float(fullAxes()[6].value(fullAxes()[6].unit(double(p.rs * k))));
+        return p;
+    }
+
     // Stage 4: BOBYQA from the best so far, again from where it stopped while that gains (it
     // stops where its trust region shrinks, often short of the minimum of so many parameters),
     // until the budget is spent. Returns the renders it took.
@@ -400,7 +419,7 @@ private:
         int renders = 0;
         for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
             before = result_.loss;
-            const WovenParams base = result_.params;
+            const WovenParams base = rescaled(result_.params);
             std::vector<double> x = encode(base);
             const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, base)); };
             renders += minimise(x, objective, 0);
