@@ -1,6 +1,8 @@
 #include "denoiser.h"
 
 #include <algorithm>
+#include <cmath>
+#include <array>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -9,31 +11,83 @@
 #include "albedo_demodulation.h"
 #include "fast_math.h"
 #include "padded_planes.h"
+#include "sure_selection.h"
+#include "vector_clones.h"
 
 namespace woven {
 
 namespace {
 
-// Rows filtered together: the patch distances of a tile's rows need f rows above and below, so a
-// taller tile wastes less on them, a shorter one shares the frame out more evenly.
-constexpr int kTileRows = 32;
+// Pixels filtered together: the patch distances of a tile need f pixels around it, so a larger
+// tile wastes less on them, a smaller one shares the frame out more evenly and keeps its sums
+// (eight floats a pixel per candidate) in the core's cache, which whole rows of a 1280-pixel
+// frame, 32 at a time, overflowed (2.6 MB for two candidates).
+constexpr int kTileRows = 32, kTileColumns = 256;
 // eps in D_c: keeps 0 / 0 (two noise-free pixels) finite; their difference then decides alone.
 constexpr float kEpsilon = 1e-10f;
 
-// Adds the weights exp(-dist[i]) of neighbours q = p + offset (0 for unusable ones) and their
-// weighted differences to p, for count pixels p of a row. __restrict: nothing here overlaps, and
-// without it the compiler would not vectorise the loop.
-void accumulate(int count, const float* __restrict dist, const float* __restrict usable, const float* __restrict u0,
-                const float* __restrict u1, const float* __restrict u2, ptrdiff_t offset, float* __restrict weights,
-                float* __restrict s0, float* __restrict s1, float* __restrict s2) {
+// One candidate filter's sums over the window, per pixel of a tile: the weights w_q (the centre's
+// own 1 included), the weighted differences w_q (u_q - u_p), and what SURE needs of how the
+// weights move with p's own colour (sure_selection.h): per channel the sum of w_q s_q, s_q the
+// slope of q's weight distance in u_p, and over channels the sum of w_q Var_p s_q (u_q - u_p).
+struct CandidateSums {
+    std::vector<float> weight, varianceSlopeDifference;
+    std::array<std::vector<float>, 3> difference, slope;
+    explicit CandidateSums(size_t n) : weight(n, 1.0f), varianceSlopeDifference(n, 0.0f) {
+        for (int c = 0; c < 3; ++c) {
+            difference[size_t(c)].assign(n, 0.0f);
+            slope[size_t(c)].assign(n, 0.0f);
+        }
+    }
+};
+
+// What the candidates share of one row of neighbours q = p + offset: per channel the slope s of
+// D_c (k_c^2 left out) in u_p, and over channels Var_p s (u_q - u_p), Var_p the radiance's.
+struct RowTerms {
+    std::array<std::vector<float>, 3> slope;
+    std::vector<float> varianceSlopeDifference;
+    explicit RowTerms(size_t n) : varianceSlopeDifference(n) {
+        for (auto& plane : slope) plane.resize(n);
+    }
+};
+
+// One channel's part of accumulate() below.
+inline __attribute__((always_inline)) void addChannel(int count, const float* __restrict weight, const float* __restrict weightedGain,
+                const float* __restrict u, ptrdiff_t offset, const float* __restrict slope, float* __restrict d,
+                float* __restrict sl) {
     for (int i = 0; i < count; ++i) {
-        const float weight = usable[i] * fastExpInRange(-dist[i]);
-        weights[i] += weight;
-        s0[i] += weight * (u0[i + offset] - u0[i]);
-        s1[i] += weight * (u1[i + offset] - u1[i]);
-        s2[i] += weight * (u2[i + offset] - u2[i]);
+        d[i] += weight[i] * (u[i + offset] - u[i]);
+        sl[i] += weightedGain[i] * slope[i];
     }
 }
+
+// Adds the weights exp(-dist[i]) of count neighbours q = p + offset (0 for unusable ones), their
+// weighted differences and slope sums to one candidate's sums from index a; gain[i]: 1 / k_c^2
+// where the colour term decides the weight, else 0; weight, weightedGain: scratch for count
+// floats. __restrict: nothing here overlaps, and without it the compiler would not vectorise the
+// loops.
+inline __attribute__((always_inline)) void accumulate(int count, const float* __restrict dist, const float* __restrict gain, const float* __restrict usable,
+                const float* const* u, ptrdiff_t offset, const RowTerms& row, CandidateSums& sums, size_t a,
+                float* __restrict weight, float* __restrict weightedGain) {
+    float* __restrict weights = &sums.weight[a];
+    float* __restrict vsd = &sums.varianceSlopeDifference[a];
+    const float* __restrict rowVsd = row.varianceSlopeDifference.data();
+    for (int i = 0; i < count; ++i) {
+        weight[i] = usable[i] * fastExpInRange(-dist[i]);
+        weights[i] += weight[i];
+        weightedGain[i] = weight[i] * gain[i];
+        vsd[i] += weightedGain[i] * rowVsd[i];
+    }
+    for (int c = 0; c < 3; ++c)
+        addChannel(count, weight, weightedGain, u[c], offset, row.slope[size_t(c)].data(), &sums.difference[size_t(c)][a],
+                   &sums.slope[size_t(c)][a]);
+}
+
+// Each candidate filter's denoised frame and its per-pixel SURE, what sure_selection.h picks from.
+struct Candidates {
+    std::vector<std::vector<glm::vec3>> color;
+    std::vector<std::vector<float>> risk;
+};
 
 struct Planes {
     PaddedPlanes irradiance, variance, divisor, usable;
@@ -53,7 +107,8 @@ public:
         planes_.usable = PaddedPlanes(b.width, b.height, 1, pad_, [&](size_t i, int) { return b.usable(i) ? 1.0f : 0.0f; });
     }
 
-    void rows(int y0, int y1, std::vector<glm::vec3>& out) const;
+    // Filters the pixels xa <= x < xb of rows y0 <= y < y1 with every candidate.
+    void tile(int xa, int y0, int xb, int y1, Candidates& out) const;
 
 private:
     const DenoiseBuffers& b_;
@@ -63,93 +118,164 @@ private:
     Planes planes_;
 };
 
-void Filter::rows(int y0, int y1, std::vector<glm::vec3>& out) const {
+WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates& out) const {
     const int w = b_.width, h = b_.height, f = s_.patchRadius, r = s_.radius;
-    const int tile = y1 - y0, patchRows = tile + 2 * f, patchCols = w + 2 * f;
-    const float k2 = s_.k * s_.k, alpha = s_.alpha, patchNorm = 1.0f / float((2 * f + 1) * (2 * f + 1) * 3);
+    const int th = y1 - y0, tw = xb - xa, patchRows = th + 2 * f, patchCols = tw + 2 * f;
+    const float alpha = s_.alpha, patchNorm = 1.0f / float((2 * f + 1) * (2 * f + 1) * 3);
+    const size_t candidates = s_.candidateK.size();
+    std::vector<float> inverseK2;
+    for (float k : s_.candidateK) inverseK2.push_back(1.0f / (k * k));
     const ptrdiff_t stride = planes_.irradiance.stride();
-    std::vector<float> distance(size_t(patchRows) * patchCols), horizontal(size_t(patchRows) * w), patch(w), features(w);
-    std::vector<float> weights(size_t(tile) * w, 1.0f);  // the centre's own weight
-    std::vector<float> sums[3];
-    for (auto& sum : sums) sum.assign(size_t(tile) * w, 0.0f);
+    std::vector<float> distance(size_t(patchRows) * patchCols), horizontal(size_t(patchRows) * tw), patch(tw), features(tw),
+        candidateDistance(tw);
+    std::vector<CandidateSums> sums(candidates, CandidateSums(size_t(th) * tw));
+    // Per channel over the patches' pixels, (u_p - u_q) / (eps + Var_p + Var_q): half the slope of
+    // each pixel's term of D_c in u_p.
+    std::array<std::vector<float>, 3> halfSlope;
+    for (auto& plane : halfSlope) plane.resize(distance.size());
+    RowTerms row(static_cast<size_t>(tw));
+    std::vector<float> gain(static_cast<size_t>(tw)), weightScratch(static_cast<size_t>(tw)),
+        weightedGain(static_cast<size_t>(tw));
     const float* u[3] = {planes_.irradiance.plane(0), planes_.irradiance.plane(1), planes_.irradiance.plane(2)};
     const float* v[3] = {planes_.variance.plane(0), planes_.variance.plane(1), planes_.variance.plane(2)};
     const float* usable = planes_.usable.plane(0);
+    const float* divisor[3] = {planes_.divisor.plane(0), planes_.divisor.plane(1), planes_.divisor.plane(2)};
 
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
             if (dx == 0 && dy == 0) continue;
             const ptrdiff_t offset = dy * stride + dx;
-            // D_c's terms at every pixel of the patches, the frame's edge repeated beyond it.
+            // D_c's terms at every pixel of the patches, the frame's edge repeated beyond it, with
+            // k_c^2 left out: the candidates differ only in it and share the rest.
             for (int j = 0; j < patchRows; ++j) {
-                const size_t p = planes_.irradiance.index(-f, y0 - f + j);
+                const size_t p = planes_.irradiance.index(xa - f, y0 - f + j);
                 float* d = &distance[size_t(j) * patchCols];
                 std::fill(d, d + patchCols, 0.0f);
                 for (int c = 0; c < 3; ++c) {
                     const float* uc = u[c] + p;
                     const float* vc = v[c] + p;
+                    float* hs = &halfSlope[size_t(c)][size_t(j) * patchCols];
                     for (int i = 0; i < patchCols; ++i) {
                         const float vp = vc[i], vq = vc[i + offset], diff = uc[i] - uc[i + offset];
-                        d[i] += (diff * diff - alpha * (vp + std::min(vp, vq))) / (kEpsilon + k2 * (vp + vq));
+                        const float inverse = 1.0f / (kEpsilon + vp + vq);
+                        d[i] += (diff * diff - alpha * (vp + std::min(vp, vq))) * inverse;
+                        hs[i] = diff * inverse;
                     }
                 }
-                float* hz = &horizontal[size_t(j) * w];
-                for (int x = 0; x < w; ++x) {
+                float* hz = &horizontal[size_t(j) * tw];
+                for (int x = 0; x < tw; ++x) {
                     float sum = 0.0f;
                     for (int t = 0; t <= 2 * f; ++t) sum += d[x + t];
                     hz[x] = sum;
                 }
             }
             // Only neighbours inside the frame are averaged in.
-            const int x0 = std::max(0, -dx), x1 = std::min(w, w - dx);
-            for (int t = 0; t < tile; ++t) {
+            const int x0 = std::max(xa, -dx), x1 = std::min(xb, w - dx);
+            for (int t = 0; t < th; ++t) {
                 const int y = y0 + t;
                 if (y + dy < 0 || y + dy >= h || x1 <= x0) continue;
                 const size_t p = planes_.irradiance.index(x0, y);
                 const int count = x1 - x0;
-                // The patch distance, then the weight, each in a loop of its own that vectorises.
+                // The patch distance, then each candidate's weight, each in a loop of its own that
+                // vectorises.
                 float* const dist = patch.data();
                 std::fill(dist, dist + count, 0.0f);
                 for (int j = 0; j <= 2 * f; ++j) {
-                    const float* hz = &horizontal[size_t(t + j) * w + x0];
+                    const float* hz = &horizontal[size_t(t + j) * tw + (x0 - xa)];
                     for (int i = 0; i < count; ++i) dist[i] += hz[i];
                 }
+                for (int i = 0; i < count; ++i) dist[i] = dist[i] * patchNorm;
+                // The slope of D_c (k_c^2 left out) in p's own colour, per channel: p is the centre
+                // of its patch, and where q is within a patch of p, p is in q's patch too, at the
+                // place of p - (q - p) in p's, where the pair is (p - offset, p).
+                const bool inPatch = std::abs(dx) <= f && std::abs(dy) <= f;
+                const size_t centre = size_t(t + f) * patchCols + size_t(x0 - xa + f);
+                const ptrdiff_t mirrored = -ptrdiff_t(dy) * patchCols - dx;
+                float* const vsd = row.varianceSlopeDifference.data();
+                std::fill(vsd, vsd + count, 0.0f);
+                for (int c = 0; c < 3; ++c) {
+                    const float* uc = u[c] + p;
+                    const float* vc = v[c] + p;
+                    const float* dc = divisor[c] + p;
+                    const float* hs = &halfSlope[size_t(c)][centre];
+                    float* slope = row.slope[size_t(c)].data();
+                    for (int i = 0; i < count; ++i) slope[i] = 2.0f * patchNorm * hs[i];
+                    if (inPatch)
+                        for (int i = 0; i < count; ++i) slope[i] -= 2.0f * patchNorm * hs[i + mirrored];
+                    for (int i = 0; i < count; ++i) vsd[i] += dc[i] * dc[i] * vc[i] * slope[i] * (uc[i + offset] - uc[i]);
+                }
                 guide_.distances(p, offset, count, features.data());
-                for (int i = 0; i < count; ++i)
-                    dist[i] = std::min(80.0f, std::max(std::max(0.0f, dist[i] * patchNorm), features[size_t(i)]));
-                const size_t a = size_t(t) * w + x0;
-                accumulate(count, dist, usable + p + offset, u[0] + p, u[1] + p, u[2] + p, offset, &weights[a], &sums[0][a],
-                           &sums[1][a], &sums[2][a]);
+                const size_t a = size_t(t) * tw + (x0 - xa);
+                const float* uRow[3] = {u[0] + p, u[1] + p, u[2] + p};
+                for (size_t k = 0; k < candidates; ++k) {
+                    float* const weightDistance = candidateDistance.data();
+                    for (int i = 0; i < count; ++i) {
+                        const float colour = dist[i] * inverseK2[k];
+                        weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, colour), features[size_t(i)]));
+                        // The colour term decides the weight, so the weight moves with p's colour.
+                        gain[size_t(i)] = colour > 0.0f && colour >= features[size_t(i)] && colour < 80.0f ? inverseK2[k] : 0.0f;
+                    }
+                    accumulate(count, weightDistance, gain.data(), usable + p + offset, uRow, offset, row, sums[k], a,
+                               weightScratch.data(), weightedGain.data());
+                }
             }
         }
-    // The colour plus the weighted mean of the neighbours' differences, remodulated: a pixel
-    // whose neighbours all equal it is returned exactly.
-    const float* divisor[3] = {planes_.divisor.plane(0), planes_.divisor.plane(1), planes_.divisor.plane(2)};
-    for (int t = 0; t < tile; ++t)
-        for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * w + x;
-            glm::vec3 c = b_.color[i];
-            if (usable[p] != 0.0f)
-                for (int ch = 0; ch < 3; ++ch) c[ch] += divisor[ch][p] * sums[ch][a] / weights[a];
-            out[i] = c;
-        }
+    // Each candidate: the colour plus the weighted mean of the neighbours' differences,
+    // remodulated (a pixel whose neighbours all equal it is returned exactly), and its SURE.
+    for (size_t k = 0; k < candidates; ++k)
+        for (int t = 0; t < th; ++t)
+            for (int x = xa; x < xb; ++x) {
+                const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * tw + (x - xa);
+                glm::vec3 c = b_.color[i];
+                float risk = 0.0f;
+                const CandidateSums& sum = sums[k];
+                if (usable[p] != 0.0f) {
+                    // F = u + D / W, D the weighted differences; with the weights w_q = exp(-d_q)
+                    // moving with u, dF/du = (1 - sum w_q d'_q (u_q - u) + (F - u) sum w_q d'_q) / W
+                    // (Van De Ville and Kocher 2009, for non-local means); the middle sum is
+                    // gathered over channels with their variances as SURE takes it.
+                    const float weight = sum.weight[a];
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const float mean = sum.difference[size_t(ch)][a] / weight, change = divisor[ch][p] * mean;
+                        const float variance = divisor[ch][p] * divisor[ch][p] * v[ch][p];
+                        c[ch] += change;
+                        risk += steinUnbiasedRisk(change, variance, (1.0f + mean * sum.slope[size_t(ch)][a]) / weight);
+                    }
+                    risk -= 2.0f * sum.varianceSlopeDifference[a] / weight;
+                }
+                out.color[k][i] = c;
+                out.risk[k][i] = risk;
+            }
 }
 
 }  // namespace
 
 DenoiseResult denoise(const DenoiseBuffers& buffers, const DenoiseSettings& settings) {
     checkDenoiseBuffers(buffers);
-    if (settings.radius < 1 || settings.patchRadius < 0 || !(settings.k > 0.0f) || !(settings.alpha >= 0.0f))
-        throw std::invalid_argument("denoise: radius must be at least 1, patch radius at least 0, k above 0 and alpha at least 0");
+    const bool everyKPositive = std::all_of(settings.candidateK.begin(), settings.candidateK.end(), [](float k) { return k > 0.0f; });
+    if (settings.radius < 1 || settings.patchRadius < 0 || settings.candidateK.empty() || !everyKPositive ||
+        !(settings.alpha >= 0.0f) || settings.selectionRadius < 0)
+        throw std::invalid_argument(
+            "denoise: radius must be at least 1, patch radius at least 0, at least one candidate k, each above 0, alpha and "
+            "the selection radius at least 0");
     const Filter filter(buffers, settings);
-    DenoiseResult result;
-    result.color.resize(buffers.pixels());
-    const int tiles = (buffers.height + kTileRows - 1) / kTileRows;
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
-        for (int t = range.begin(); t != range.end(); ++t)
-            filter.rows(t * kTileRows, std::min(buffers.height, (t + 1) * kTileRows), result.color);
+    const size_t n = buffers.pixels(), candidates = settings.candidateK.size();
+    Candidates out{std::vector<std::vector<glm::vec3>>(candidates, std::vector<glm::vec3>(n)),
+                   std::vector<std::vector<float>>(candidates, std::vector<float>(n))};
+    const int rows = (buffers.height + kTileRows - 1) / kTileRows, columns = (buffers.width + kTileColumns - 1) / kTileColumns;
+    tbb::parallel_for(tbb::blocked_range<int>(0, rows * columns, 1), [&](const tbb::blocked_range<int>& range) {
+        for (int t = range.begin(); t != range.end(); ++t) {
+            const int x0 = (t % columns) * kTileColumns, y0 = (t / columns) * kTileRows;
+            filter.tile(x0, y0, std::min(buffers.width, x0 + kTileColumns), std::min(buffers.height, y0 + kTileRows), out);
+        }
     });
-    for (size_t i = 0; i < buffers.pixels(); ++i) result.unusablePixels += buffers.usable(i) ? 0 : 1;
+    DenoiseResult result;
+    result.color = selectBySure(buffers.width, buffers.height, out.color, out.risk, settings.selectionRadius);
+    for (size_t i = 0; i < n; ++i)
+        if (!buffers.usable(i)) {
+            result.color[i] = buffers.color[i];
+            ++result.unusablePixels;
+        }
     return result;
 }
 

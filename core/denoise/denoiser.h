@@ -10,6 +10,8 @@
 // the squared difference less what the pixels' noise explains, in units of that noise; D_f is
 // FeatureGuide's. What is filtered is the colour with the albedo divided out
 // (albedo_demodulation.h), multiplied back after: the threads stay as sharp as the albedo pass.
+// The filter is run with several k_c at once (they share the patch distances) and each pixel
+// takes the one of least estimated error (sure_selection.h).
 #include <cstddef>
 #include <vector>
 
@@ -23,8 +25,12 @@ namespace woven {
 struct DenoiseSettings {
     int radius = 7;         // r: the window is 15 x 15 pixels
     int patchRadius = 3;    // f: 7 x 7 patches, the papers'
-    float k = 0.45f;        // k_c, the papers'
+    // k_c of each candidate filter, the strongest first, chosen among per pixel by SURE
+    // (sure_selection.h): the papers' 0.45, and a stricter one that keeps shading no pass shows
+    // (the satin's float highlights) where the papers' blurs it (docs/RESULTS.md).
+    std::vector<float> candidateK = {0.45f, 0.1f};
     float alpha = 1.0f;     // variance cancellation, the 2012 paper's
+    int selectionRadius = 2;  // SURE and the choice are averaged over 5 x 5 pixels
     FeatureSettings features{};
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vector_clones.h"
+
 namespace woven {
 
 namespace {
@@ -63,7 +65,7 @@ FeatureGuide::FeatureGuide(const DenoiseBuffers& b, const FeatureSettings& s, in
     }
 }
 
-void FeatureGuide::distances(size_t p, ptrdiff_t offset, int count, float* out) const {
+WOVEN_VECTOR_CLONES void FeatureGuide::distances(size_t p, ptrdiff_t offset, int count, float* out) const {
     std::fill(out, out + count, 0.0f);
     for (const Feature& f : features_) {
         const float* scale = f.inverseScale.plane(0) + p;
