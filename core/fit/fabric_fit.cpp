@@ -33,6 +33,10 @@ constexpr int kColourEvaluations = 200;
 // many steps. A weave and its complement only tell apart once the yarns' widths and gloss are
 // near: with the defaults' the synthetic 3/1 twill's colour mixtures preferred its complement.
 constexpr int kShortlistRefineRenders = 50;
+// Fixed-point steps of a free exposure where the photo clips (evaluate()): each leaves of the
+// exposure's error the share of the block means that clipped pixels hold, so 4 leave 6 % of it
+// where that share is a half (the rig's satin at exposure 1.6 clips half its pixels).
+constexpr int kClippedExposureSteps = 4;
 // Stage 4 restarts BOBYQA while a run lowers the loss by more than this fraction.
 constexpr double kRestartGain = 1e-3;
 
@@ -194,13 +198,27 @@ private:
             const std::vector<float> rm = blockMeans(images[i]);
             renderMeans.insert(renderMeans.end(), rm.begin(), rm.end());
         }
-        const double free = anyFree ? bestExposure(photoMeans, renderMeans) : 1.0;
+        double free = anyFree ? bestExposure(photoMeans, renderMeans) : 1.0;
+        // Where a free shot's photo clips its highlights, the exposure whose render, clipped
+        // alike, has the photo's block means: a few steps of that fixed point, each raising the
+        // exposure by what the clipping took away.
+        bool clips = false;
+        for (const Shot& s : shots_) clips = clips || (!s.photo.exposure && std::isfinite(photoSaturation(s.photo)));
+        for (int step = 0; clips && step < kClippedExposureSteps; ++step) {
+            std::vector<float> clipped;
+            for (size_t i = 0; i < shots_.size(); ++i) {
+                if (shots_[i].photo.exposure) continue;
+                Image exposed = images[i];
+                expose(exposed, float(free), photoSaturation(shots_[i].photo));
+                const std::vector<float> m = blockMeans(exposed);
+                clipped.insert(clipped.end(), m.begin(), m.end());
+            }
+            free *= bestExposure(photoMeans, clipped);
+        }
         double total = 0.0;
         std::vector<LossTerms> terms(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) {
-            const float e = float(shots_[i].photo.exposure.value_or(float(free)));
-            if (e != 1.0f)
-                for (glm::vec3& v : images[i].pixels) v *= e;
+            expose(images[i], float(shots_[i].photo.exposure.value_or(float(free))), photoSaturation(shots_[i].photo));
             terms[i] = loss(photoStats_[i], imageStats(images[i], threadFrequencies_[i]));
             total += terms[i].total;
         }

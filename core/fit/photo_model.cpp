@@ -6,16 +6,25 @@
 
 namespace woven {
 
+namespace {
+
+bool holdsFloats(const std::string& path) {
+    const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+    return ext == ".exr" || ext == ".hdr" || ext == ".EXR" || ext == ".HDR";
+}
+
+}  // namespace
+
 Image readPhoto(const ShotPhoto& photo) {
     if (photo.encoding == ShotPhoto::Encoding::Srgb) return readImage(photo.image, ChannelEncoding::Srgb);
     Image image = readImage(photo.image, ChannelEncoding::Linear);
     // A float file holds linear values whatever the key says; only 8- and 16-bit ones are encoded.
-    const std::string ext = photo.image.size() >= 4 ? photo.image.substr(photo.image.size() - 4) : "";
-    const bool floats = ext == ".exr" || ext == ".hdr" || ext == ".EXR" || ext == ".HDR";
-    if (photo.encoding == ShotPhoto::Encoding::Gamma22 && !floats)
+    if (photo.encoding == ShotPhoto::Encoding::Gamma22 && !holdsFloats(photo.image))
         for (glm::vec3& p : image.pixels) p = glm::pow(glm::max(p, glm::vec3(0.0f)), glm::vec3(2.2f));
     return image;
 }
+
+float photoSaturation(const ShotPhoto& photo) { return holdsFloats(photo.image) ? INFINITY : 1.0f; }
 
 void applyVignette(Image& image, float sigmaPx) {
     if (!(sigmaPx > 0.0f)) return;
@@ -35,6 +44,10 @@ double bestExposure(const std::vector<float>& photo, const std::vector<float>& r
         rr += double(render[i]) * render[i];
     }
     return rr > 0.0 ? pr / rr : 1.0;
+}
+
+void expose(Image& image, float exposure, float saturation) {
+    for (glm::vec3& v : image.pixels) v = glm::min(v * exposure, glm::vec3(saturation));
 }
 
 }  // namespace woven

@@ -12,6 +12,10 @@ namespace woven {
 // ("linear"; float formats always). Throws ImageError naming the file.
 Image readPhoto(const ShotPhoto& photo);
 
+// The largest value the photo's file can hold: 1 where it is 8- or 16-bit (a highlight brighter
+// than the sensor's full scale is clipped there), infinite for EXR and HDR.
+float photoSaturation(const ShotPhoto& photo);
+
 // The render darkened toward the corners by the Gaussian of `sigmaPx` pixels about the image
 // centre; unchanged for sigmaPx = 0.
 void applyVignette(Image& image, float sigmaPx);
@@ -19,5 +23,8 @@ void applyVignette(Image& image, float sigmaPx);
 // The exposure s minimising sum |photo_i - s render_i|^2 over paired values (block means of
 // every shot whose exposure is free): one scale for all of them.
 double bestExposure(const std::vector<float>& photo, const std::vector<float>& render);
+
+// `image` times `exposure`, clipped at `saturation` as the photo's file clips.
+void expose(Image& image, float exposure, float saturation);
 
 }  // namespace woven
