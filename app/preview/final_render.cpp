@@ -10,9 +10,7 @@ namespace woven {
 FinalRender::~FinalRender() { cancel(); }
 
 void FinalRender::start(const SceneDescription& scene, const RenderSettings& settings, bool denoise) {
-    cancel();
-    cancel_ = false;
-    running_ = true;
+    task_.cancel();
     {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_ = RenderProgress{};
@@ -20,46 +18,34 @@ void FinalRender::start(const SceneDescription& scene, const RenderSettings& set
         adaptive_ = settings.noiseThreshold > 0.0;
         snapshot_.reset();
         fresh_ = false;
-        error_.clear();
     }
     auto shared = std::make_shared<const SceneDescription>(scene);
-    worker_ = std::thread([this, shared, settings, denoise] {
-        try {
-            RenderJob job(shared, settings);
-            {
-                std::lock_guard<std::mutex> lock(mutex_);
-                integrator_ = job.integratorName();
-            }
-            job.run(cancel_, [&](const RenderProgress& p) {
-                FilmImage image = job.snapshot();
-                std::lock_guard<std::mutex> lock(mutex_);
-                progress_ = p;
-                snapshot_ = std::move(image);
-                fresh_ = true;
-            });
-            if (denoise && !cancel_) {
-                FilmImage image = job.snapshot();
-                denoiseFilm(image);
-                std::lock_guard<std::mutex> lock(mutex_);
-                snapshot_ = std::move(image);
-                fresh_ = true;
-            }
-        } catch (const std::exception& e) {
+    task_.start([this, shared, settings, denoise](const std::atomic<bool>& cancel) {
+        RenderJob job(shared, settings);
+        {
             std::lock_guard<std::mutex> lock(mutex_);
-            error_ = e.what();
+            integrator_ = job.integratorName();
         }
-        running_ = false;
+        job.run(cancel, [&](const RenderProgress& p) {
+            FilmImage image = job.snapshot();
+            std::lock_guard<std::mutex> lock(mutex_);
+            progress_ = p;
+            snapshot_ = std::move(image);
+            fresh_ = true;
+        });
+        if (denoise && !cancel) {
+            FilmImage image = job.snapshot();
+            denoiseFilm(image);
+            std::lock_guard<std::mutex> lock(mutex_);
+            snapshot_ = std::move(image);
+            fresh_ = true;
+        }
     });
 }
 
-void FinalRender::cancel() {
-    cancel_ = true;
-    wait();
-}
+void FinalRender::cancel() { task_.cancel(); }
 
-void FinalRender::wait() {
-    if (worker_.joinable()) worker_.join();
-}
+void FinalRender::wait() { task_.wait(); }
 
 float FinalRender::fractionDone() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -96,9 +82,6 @@ std::string FinalRender::integrator() const {
     return integrator_;
 }
 
-std::string FinalRender::error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-}
+std::string FinalRender::error() const { return task_.error(); }
 
 }  // namespace woven

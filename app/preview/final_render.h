@@ -1,14 +1,14 @@
 #pragma once
 // The Render button's job: core's RenderJob (BDPT or path tracing) for a copy of the scene, a
-// camera and a size, on a background thread, so the window stays responsive. The window polls
-// progress and the latest snapshot (one after each pass) and may cancel.
-#include <atomic>
+// camera and a size, on a background thread (background_task.h), so the window stays
+// responsive. The window polls progress and the latest snapshot (one after each pass) and may
+// cancel.
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "background_task.h"
 #include "render_job.h"
 
 namespace woven {
@@ -28,7 +28,7 @@ public:
     // Blocks until the job has finished (or was cancelled).
     void wait();
 
-    bool running() const { return running_; }
+    bool running() const { return task_.running(); }
     // For the window's progress bar: the fraction done (all of it once every pixel is below the
     // noise threshold), and a line such as "12/64 spp, 35% of pixels sampling, 4.2 s left".
     float fractionDone() const;
@@ -41,14 +41,13 @@ public:
     std::string integrator() const;  // the one RenderJob chose
 
 private:
-    std::thread worker_;
-    std::atomic<bool> cancel_{false}, running_{false};
     mutable std::mutex mutex_;
     RenderProgress progress_;
     bool adaptive_ = false;  // a noise threshold was given
     std::optional<FilmImage> snapshot_;
     bool fresh_ = false;
-    std::string error_, integrator_;
+    std::string integrator_;
+    BackgroundTask task_;  // last: it stops before what its work writes to goes
 };
 
 }  // namespace woven

@@ -8,48 +8,32 @@ namespace woven {
 FitJob::~FitJob() { cancel(); }
 
 void FitJob::start(const std::vector<std::string>& shotPaths, const std::string& target, double seconds) {
-    cancel();
-    cancel_ = false;
-    running_ = true;
+    task_.cancel();
     {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_ = FitProgress{"loading the shots", 0, 0.0, seconds, 0.0};
         history_.clear();
         result_.reset();
-        error_.clear();
     }
-    worker_ = std::thread([this, shotPaths, target, seconds] {
-        try {
-            if (shotPaths.empty()) throw FitError("no shot files: name one or more scene files with a \"photo\" key");
-            std::vector<Shot> shots;
-            for (const std::string& path : shotPaths) shots.push_back(loadShot(path, target));
-            FitOptions options;
-            options.seconds = seconds;
-            FittedFabric fitted;
-            fitted.fit = fitFabric(shots, options, cancel_, [&](const FitProgress& p) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                progress_ = p;
-                history_.push_back(float(p.bestLoss));
-            });
-            fitted.threadsPerCm = threadsPerCm(shots[0], fitted.fit.params.repeat);
+    task_.start([this, shotPaths, target, seconds](const std::atomic<bool>& cancel) {
+        if (shotPaths.empty()) throw FitError("no shot files: name one or more scene files with a \"photo\" key");
+        std::vector<Shot> shots;
+        for (const std::string& path : shotPaths) shots.push_back(loadShot(path, target));
+        FitOptions options;
+        options.seconds = seconds;
+        FittedFabric fitted;
+        fitted.fit = fitFabric(shots, options, cancel, [&](const FitProgress& p) {
             std::lock_guard<std::mutex> lock(mutex_);
-            result_ = std::move(fitted);
-        } catch (const std::exception& e) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            error_ = e.what();
-        }
-        running_ = false;
+            progress_ = p;
+            history_.push_back(float(p.bestLoss));
+        });
+        fitted.threadsPerCm = threadsPerCm(shots[0], fitted.fit.params.repeat);
+        std::lock_guard<std::mutex> lock(mutex_);
+        result_ = std::move(fitted);
     });
 }
 
-void FitJob::cancel() {
-    cancel_ = true;
-    wait();
-}
-
-void FitJob::wait() {
-    if (worker_.joinable()) worker_.join();
-}
+void FitJob::cancel() { task_.cancel(); }
 
 FitProgress FitJob::progress() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -62,16 +46,13 @@ std::vector<float> FitJob::lossHistory() const {
 }
 
 std::optional<FittedFabric> FitJob::takeResult() {
-    if (running_) return std::nullopt;
+    if (task_.running()) return std::nullopt;
     std::lock_guard<std::mutex> lock(mutex_);
     std::optional<FittedFabric> result = std::move(result_);
     result_.reset();
     return result;
 }
 
-std::string FitJob::error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-}
+std::string FitJob::error() const { return task_.error(); }
 
 }  // namespace woven

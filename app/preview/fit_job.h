@@ -1,15 +1,14 @@
 #pragma once
 // The panel's Fit button's job: `woven fit` (core/fit, docs/FIT.md) of shot files on a
-// background thread, so the window stays responsive while it renders the candidates. The window
+// background thread (background_task.h), so the window stays responsive while it renders the candidates. The window
 // polls its progress and the loss so far, may cancel (the best fit so far is kept, as Ctrl-C
 // keeps it for the command), and takes the result once.
-#include <atomic>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "background_task.h"
 #include "fabric_fit.h"
 
 namespace woven {
@@ -30,9 +29,8 @@ public:
     // Cancels a running fit first. The shots are loaded on the worker: a bad one is error().
     void start(const std::vector<std::string>& shotPaths, const std::string& target, double seconds);
     void cancel();
-    void wait();
 
-    bool running() const { return running_; }
+    bool running() const { return task_.running(); }
     FitProgress progress() const;
     std::vector<float> lossHistory() const;  // the best loss after each render
     // The finished (or cancelled) fit, once; nullopt while it runs, after a failure, or when taken.
@@ -40,13 +38,11 @@ public:
     std::string error() const;  // why the last fit failed, empty if it did not
 
 private:
-    std::thread worker_;
-    std::atomic<bool> cancel_{false}, running_{false};
     mutable std::mutex mutex_;
     FitProgress progress_;
     std::vector<float> history_;
     std::optional<FittedFabric> result_;
-    std::string error_;
+    BackgroundTask task_;  // last: it stops before what its work writes to goes
 };
 
 }  // namespace woven
