@@ -14,12 +14,8 @@ namespace {
 // Lights nearer the centre than this many bounding radii get cube maps.
 constexpr float kCubeReach = 2.0f;
 
-void allocateDepth(GLenum target, GLuint texture, int size, int layers) {
-    glBindTexture(target, texture);
-    glTexImage3D(target, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-    // Hardware comparison with bilinear filtering: 2 x 2 percentage-closer filtering for free.
-    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+// Bilinear, clamped at the map's edges: the bound texture's sampling for both kinds of map.
+void setBilinearClamped(GLenum target) {
     glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -27,16 +23,21 @@ void allocateDepth(GLenum target, GLuint texture, int size, int layers) {
     glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
 }
 
+void allocateDepth(GLenum target, GLuint texture, int size, int layers) {
+    glBindTexture(target, texture);
+    glTexImage3D(target, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    // Hardware comparison with bilinear filtering: 2 x 2 percentage-closer filtering for free.
+    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    setBilinearClamped(target);
+}
+
 // What a transmitting caster passes, 8 bits a channel (a share in [0, 1]), bilinearly filtered;
 // white where no such caster is.
 void allocateColor(GLenum target, GLuint texture, int size, int layers) {
     glBindTexture(target, texture);
     glTexImage3D(target, 0, GL_RGBA8, size, size, layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    setBilinearClamped(target);
 }
 
 void deleteTextures(const std::initializer_list<GLuint>& textures) {
