@@ -12,6 +12,7 @@ window. While a text field has the focus, the view is drawn at full resolution.
 
 Usage: window_click_xvfb.py WOVEN_BINARY
 """
+import contextlib
 import json
 import os
 import signal
@@ -23,6 +24,8 @@ import time
 import zlib
 
 WINDOW = (1280, 800)
+# The Render button's settings come from the command line but for the size, which the test types.
+DEFAULT_ARGS = ('--spp', '4', '--integrator', 'path')
 
 
 class Failure(Exception):
@@ -81,13 +84,12 @@ def png_pixels(path):
 
 
 class Window:
-    def __init__(self, woven, tmp, display, args=('--spp', '4', '--integrator', 'path')):
+    def __init__(self, woven, tmp, display, args):
         self.tmp = tmp
         self.map_path = os.path.join(tmp, 'map.json')
         self.env = dict(os.environ, DISPLAY=f':{display}', LIBGL_ALWAYS_SOFTWARE='1')
         self.stderr = open(os.path.join(tmp, 'woven.stderr'), 'w+')
-        # The Render button's settings come from the command line but for the size, which the
-        # test types into the panel; the window keeps its default 1280x800.
+        # The window keeps its default 1280x800.
         self.process = subprocess.Popen(
             [woven, 'preview', *args, '--frames', '0', '--widget-map', self.map_path],
             cwd=tmp, env=self.env, stdout=subprocess.DEVNULL, stderr=self.stderr)
@@ -190,13 +192,39 @@ def start_xvfb():
     return xvfb, display
 
 
-def main(woven):
-    woven = os.path.abspath(woven)
-    tmp = tempfile.mkdtemp(prefix='woven-click-')
+@contextlib.contextmanager
+def window_under_xvfb(woven, tmp, args=DEFAULT_ARGS):
+    """The window on its own X server; at the end it must close on SIGTERM with status 0. Whatever
+    happens, the window and the server are stopped."""
     xvfb, display = start_xvfb()
     window = None
     try:
-        window = Window(woven, tmp, display)
+        window = Window(os.path.abspath(woven), tmp, display, args)
+        yield window
+        code = window.close()
+        check(code == 0, f'woven preview exited with {code} on SIGTERM: {window.errors()}')
+        print('closed on SIGTERM')
+    finally:
+        if window is not None and window.process.poll() is None:
+            window.process.kill()
+            window.process.wait()
+        xvfb.kill()
+        xvfb.wait()
+
+
+def run(main, *args):
+    """main(*args) as a test's process: CTest's timeout (SIGTERM) and Ctrl-C still go through its
+    cleanup; a Failure is printed and exits 1."""
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
+    try:
+        main(*args)
+    except Failure as e:
+        print(f'FAILED: {e}', file=sys.stderr)
+        sys.exit(1)
+
+
+def main(woven):
+    with tempfile.TemporaryDirectory(prefix='woven-click-') as tmp, window_under_xvfb(woven, tmp) as window:
         m = window.wait('the first widget map', lambda m: m['state']['frame'] >= 2, 60)
         check(m['state']['window']['size'] == list(WINDOW), f'window size {m["state"]["window"]["size"]}')
 
@@ -291,24 +319,7 @@ def main(woven):
         print(f'Fabrics menu: {len(names)} fabrics; denim chosen: repeat {repeat[0]:.0f} x {repeat[1]:.0f}, {measures}')
 
         check('ID clash' not in window.errors(), f'clash warnings on stderr: {window.errors()}')
-        code = window.close()
-        check(code == 0, f'woven preview exited with {code} on SIGTERM: {window.errors()}')
-        window = None
-        print('closed on SIGTERM')
-    finally:
-        if window is not None and window.process.poll() is None:
-            window.process.kill()
-            window.process.wait()
-        xvfb.kill()
-        xvfb.wait()
-        subprocess.run(['rm', '-rf', tmp])
 
 
 if __name__ == '__main__':
-    # CTest's timeout (SIGTERM), Ctrl-C: still through main's cleanup of Xvfb and the window.
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
-    try:
-        main(sys.argv[1])
-    except Failure as e:
-        print(f'FAILED: {e}', file=sys.stderr)
-        sys.exit(1)
+    run(main, sys.argv[1])

@@ -10,80 +10,63 @@ Usage: window_fit_xvfb.py WOVEN_BINARY WRITE_CAPTURE_SHOT_BINARY
 """
 import json
 import os
-import signal
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from window_click_xvfb import Failure, Window, check, check_panel, start_xvfb  # noqa: E402
+from window_click_xvfb import check, check_panel, run, window_under_xvfb  # noqa: E402
 
 
 def main(woven, writer):
-    woven = os.path.abspath(woven)
-    tmp = tempfile.mkdtemp(prefix='woven-fit-')
-    rig = json.loads(subprocess.run([writer, tmp], check=True, capture_output=True, text=True, timeout=120).stdout)
-    xvfb, display = start_xvfb()
-    window = None
-    try:
-        window = Window(woven, tmp, display, args=(rig['shot'], '--woven', 'Swatch={}'))
-        m = window.wait('the swatch as the edited material',
-                        lambda m: (m['state']['material'] or {}).get('target') == 'Swatch', 60)
-        window.click('Fit', 'header')
-        m = window.wait('the Fit section open', lambda m: any(i['label'] == 'shot files' for i in m['items']), 30)
-        check_panel(m, 'with Fit open')
+    with tempfile.TemporaryDirectory(prefix='woven-fit-') as tmp:
+        rig = json.loads(subprocess.run([writer, tmp], check=True, capture_output=True, text=True, timeout=120).stdout)
+        with window_under_xvfb(woven, tmp, (rig['shot'], '--woven', 'Swatch={}')) as window:
+            fit_in_window(window, rig)
 
-        # A shot file that is not there: refused, naming it, and nothing applied.
-        window.click('shot files', 'input')
-        window.type('missing.json')
-        window.key('Return')
-        window.click('Fit', 'button')
-        m = window.wait('the missing shot refused', lambda m: not m['state']['fit']['running']
-                        and 'missing.json' in m['state']['fit']['error'], 30)
-        check(not m['state']['fit']['applied'], 'a failed fit was applied')
-        check('missing.json' in m['state']['status'], f'status "{m["state"]["status"]}" does not name the file')
-        print(f'missing shot: {m["state"]["fit"]["error"]}')
 
-        # The rig's shot, 6 s: the fit runs in the background and its material becomes the edited one.
-        window.click('shot files', 'input')
-        window.key('ctrl+a')
-        window.type(rig['shot'])
-        window.key('Return')
-        window.click('fit seconds', 'input')
-        window.key('ctrl+a')
-        window.type('6')
-        window.key('Return')
-        before = window.read()['state']['material']['repeat']
-        window.click('Fit', 'button')
-        window.wait('the fit to start', lambda m: m['state']['fit']['running'] or m['state']['fit']['applied'], 30)
-        m = window.wait('the fit applied', lambda m: m['state']['fit']['applied'], 120)
-        state = m['state']
-        check(not state['fit']['error'], f'the fit failed: {state["fit"]["error"]}')
-        repeat = state['material']['repeat']
-        # One UV unit of the rig's swatch is a metre: threads per cm x 100.
-        expected = [100 * n for n in rig['threads_per_cm']]
-        check(all(abs(r / e - 1) <= 0.03 for r, e in zip(repeat, expected)),
-              f'the fitted repeat {repeat} is not the cloth\'s {expected} within 3 % (it was {before})')
-        check(state['status'].startswith('fit: ') and 'applied to Swatch' in state['status'],
-              f'status "{state["status"]}"')
-        print(f'fitted: repeat {repeat[0]:.0f} x {repeat[1]:.0f} (cloth {expected}); {state["status"]}')
+def fit_in_window(window, rig):
+    m = window.wait('the swatch as the edited material',
+                    lambda m: (m['state']['material'] or {}).get('target') == 'Swatch', 60)
+    window.click('Fit', 'header')
+    m = window.wait('the Fit section open', lambda m: any(i['label'] == 'shot files' for i in m['items']), 30)
+    check_panel(m, 'with Fit open')
 
-        code = window.close()
-        check(code == 0, f'woven preview exited with {code} on SIGTERM: {window.errors()}')
-        window = None
-    finally:
-        if window is not None and window.process.poll() is None:
-            window.process.kill()
-            window.process.wait()
-        xvfb.kill()
-        xvfb.wait()
-        subprocess.run(['rm', '-rf', tmp])
+    # A shot file that is not there: refused, naming it, and nothing applied.
+    window.click('shot files', 'input')
+    window.type('missing.json')
+    window.key('Return')
+    window.click('Fit', 'button')
+    m = window.wait('the missing shot refused', lambda m: not m['state']['fit']['running']
+                    and 'missing.json' in m['state']['fit']['error'], 30)
+    check(not m['state']['fit']['applied'], 'a failed fit was applied')
+    check('missing.json' in m['state']['status'], f'status "{m["state"]["status"]}" does not name the file')
+    print(f'missing shot: {m["state"]["fit"]["error"]}')
+
+    # The rig's shot, 6 s: the fit runs in the background and its material becomes the edited one.
+    window.click('shot files', 'input')
+    window.key('ctrl+a')
+    window.type(rig['shot'])
+    window.key('Return')
+    window.click('fit seconds', 'input')
+    window.key('ctrl+a')
+    window.type('6')
+    window.key('Return')
+    before = window.read()['state']['material']['repeat']
+    window.click('Fit', 'button')
+    window.wait('the fit to start', lambda m: m['state']['fit']['running'] or m['state']['fit']['applied'], 30)
+    m = window.wait('the fit applied', lambda m: m['state']['fit']['applied'], 120)
+    state = m['state']
+    check(not state['fit']['error'], f'the fit failed: {state["fit"]["error"]}')
+    repeat = state['material']['repeat']
+    # One UV unit of the rig's swatch is a metre: threads per cm x 100.
+    expected = [100 * n for n in rig['threads_per_cm']]
+    check(all(abs(r / e - 1) <= 0.03 for r, e in zip(repeat, expected)),
+          f'the fitted repeat {repeat} is not the cloth\'s {expected} within 3 % (it was {before})')
+    check(state['status'].startswith('fit: ') and 'applied to Swatch' in state['status'],
+          f'status "{state["status"]}"')
+    print(f'fitted: repeat {repeat[0]:.0f} x {repeat[1]:.0f} (cloth {expected}); {state["status"]}')
 
 
 if __name__ == '__main__':
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
-    try:
-        main(sys.argv[1], sys.argv[2])
-    except Failure as e:
-        print(f'FAILED: {e}', file=sys.stderr)
-        sys.exit(1)
+    run(main, sys.argv[1], sys.argv[2])
