@@ -44,7 +44,9 @@ private:
     LightBounds build(std::vector<std::pair<int, LightBounds>>& bvhLights, size_t begin, size_t end, uint64_t bits, int depth);
 
     std::vector<Node> nodes_;
-    std::vector<uint64_t> trail_;  // per light: its path down the tree (1: the second child)
+    // Per light in the tree: its path down it (bit d set: the second child at depth d); per
+    // infinite light: its place in infinite_.
+    std::vector<uint64_t> trail_;
     std::vector<int8_t> where_;     // per light: kInTree, kInfinite or kNever
     std::vector<int> infinite_;     // the infinite lights' indices
     std::optional<PiecewiseConstant1D> infiniteChoice_;  // among them, by power
