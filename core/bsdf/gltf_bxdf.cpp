@@ -45,7 +45,9 @@ GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
       iridescence_(clamp01(in.iridescence)),
       iridescenceIor_(std::max(in.iridescenceIor, 1.0f)),
       iridescenceThickness_(std::max(in.iridescenceThickness, 0.0f)),
-      outsideIor_(1.0f + 0.5f * clamp01(in.clearcoat)) {}
+      outsideIor_(1.0f + 0.5f * clamp01(in.clearcoat)),
+      lambertian_(!specularReflects(metallic_, f0_, f90_, iridescence_) && transmission_ == 0.0f &&
+                  diffuseTransmission_ == 0.0f && !sheen_.active() && !clearcoat_.active()) {}
 
 GltfBxdf::Fresnel GltfBxdf::fresnel(float cosTheta) const {
     const float weight = schlickWeight(cosTheta);
@@ -65,6 +67,7 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z == 0.0f) return glm::vec3(0.0f);
     const bool reflection = wi.z > 0.0f;
     if (!reflection && !transmits()) return glm::vec3(0.0f);
+    if (lambertian_) return baseColor_ * kInvPi;
     // Thin-walled transmission is the reflection lobe mirrored through the surface.
     const glm::vec3 w = reflection ? wi : mirrorThroughSurface(wi);
     const glm::vec3 H = wo + w;
@@ -106,6 +109,7 @@ glm::vec3 GltfBxdf::eval(const glm::vec3& wo, const glm::vec3& wi) const {
 }
 
 GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
+    if (lambertian_) return LobeChoice{0.0f, 1.0f};
     const Fresnel F = fresnel(wo.z);
     const float dielectricF = luminance(F.dielectric);
     const float metalF = luminance(F.metal);

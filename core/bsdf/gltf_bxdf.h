@@ -91,6 +91,10 @@ private:
     ClearcoatLobe clearcoat_;
     float iridescence_, iridescenceIor_, iridescenceThickness_;
     float outsideIor_;  // over the film: air, or the clearcoat's 1.5 as far as it covers it
+    // Only the Lambertian base reflects (no specular, transmission, sheen or coat): choose()
+    // and eval() then skip the Fresnel terms and lobes that would only add zeros, with the same
+    // result to the bit, so a matte wall costs what a Lambertian BSDF does.
+    bool lambertian_;
 };
 
 }  // namespace woven
