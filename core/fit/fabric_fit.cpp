@@ -11,6 +11,7 @@
 #include "image_stats.h"
 #include "photo_model.h"
 #include "power_spectrum.h"
+#include "tile_fold.h"
 #include "weave_candidates.h"
 #include "weave_lattice.h"
 
@@ -50,7 +51,10 @@ ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel) {
     const PowerSpectrum s = powerSpectrum(lum, image.width, image.height);
     const double fMin = 3.0 / std::min(image.width, image.height);
     const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
-    return {fundamentalPeak(s, gradU, kPeakHalfAngle, fMin, 0.5), fundamentalPeak(s, gradV, kPeakHalfAngle, fMin, 0.5)};
+    ThreadPeaks peaks{fundamentalPeak(s, gradU, kPeakHalfAngle, fMin, 0.5), fundamentalPeak(s, gradV, kPeakHalfAngle, fMin, 0.5)};
+    for (std::optional<SpectralPeak>* peak : {&peaks.ends, &peaks.picks})
+        if (*peak) (*peak)->frequency = refineThreadFrequency(lum, image.width, image.height, (*peak)->frequency);
+    return peaks;
 }
 
 double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
@@ -135,14 +139,7 @@ public:
         p.warp_ey = p.ey;
 
         stage_ = "thread counts";
-        p.repeat = threadCountsFromPhotos(p.repeat);
-        for (size_t i = 0; i < shots_.size(); ++i) {
-            std::vector<glm::dvec2> threads;
-            if (photoPeaks_[i].ends) threads.push_back(photoPeaks_[i].ends->frequency);
-            if (photoPeaks_[i].picks) threads.push_back(photoPeaks_[i].picks->frequency);
-            threadFrequencies_.push_back(threads);
-            photoStats_.push_back(imageStats(shots_[i].image, threads));
-        }
+        p.repeat = measurePhotos(p.repeat);
         p = initialColours(p);
         const bool weaveDone = chooseWeave(p);
         bool calibrated = false;
@@ -158,7 +155,28 @@ public:
         return std::move(result_);
     }
 
+    // The loss of one material, the photos measured as run() measures them.
+    FitResult lossOf(const WovenParams& p) {
+        measurePhotos(p.repeat);
+        evaluate(p);
+        return std::move(result_);
+    }
+
 private:
+    // Stage 1, and the photos' statistics. Returns the thread counts.
+    glm::vec2 measurePhotos(glm::vec2 repeat) {
+        repeat = threadCountsFromPhotos(repeat);
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            std::vector<glm::dvec2> threads;
+            if (photoPeaks_[i].ends) threads.push_back(photoPeaks_[i].ends->frequency);
+            if (photoPeaks_[i].picks) threads.push_back(photoPeaks_[i].picks->frequency);
+            threadFrequencies_.push_back(threads);
+            photoStats_.push_back(imageStats(shots_[i].image, threads));
+            photoGrids_.push_back(photoGrid(i));
+        }
+        return repeat;
+    }
+
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
     bool stop() const {
         return cancel_.load() || elapsed() >= options_.seconds ||
@@ -219,7 +237,9 @@ private:
         std::vector<LossTerms> terms(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) {
             expose(images[i], float(shots_[i].photo.exposure.value_or(float(free))), photoSaturation(shots_[i].photo));
-            terms[i] = loss(photoStats_[i], imageStats(images[i], threadFrequencies_[i]));
+            std::optional<ThreadGrid> grid = renderGrid(p, i);
+            if (grid) foldPhoto(i, grid->period);
+            terms[i] = loss(photoStats_[i], imageStats(images[i], threadFrequencies_[i], grid ? &*grid : nullptr));
             total += terms[i].total;
         }
 
@@ -243,6 +263,39 @@ private:
     double evaluate(const WovenParams& p) {
         std::vector<Image> images = render(p);
         return cancel_.load() ? INFINITY : evaluate(p, std::move(images), true);
+    }
+
+    // Where the photo's threads are: its peaks, signed as U and V grow (the sign of one against
+    // the other is a twill's direction). None where the photo shows either direction no peak.
+    std::optional<ThreadGrid> photoGrid(size_t i) const {
+        const ThreadPeaks& peaks = photoPeaks_[i];
+        if (!peaks.ends || !peaks.picks) return std::nullopt;
+        const glm::dmat2& uvPerPixel = shots_[i].uvPerPixel;
+        const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+        ThreadGrid g;
+        g.ends = glm::dot(peaks.ends->frequency, gradU) < 0.0 ? -peaks.ends->frequency : peaks.ends->frequency;
+        g.picks = glm::dot(peaks.picks->frequency, gradV) < 0.0 ? -peaks.picks->frequency : peaks.picks->frequency;
+        return g;
+    }
+
+    // Where a render of p puts its threads: the material's threads per UV unit through the
+    // shot's camera, exactly, so its fold needs no peak of the render's noisy spectrum.
+    std::optional<ThreadGrid> renderGrid(const WovenParams& p, size_t i) const {
+        if (!photoGrids_[i]) return std::nullopt;
+        const glm::dmat2& uvPerPixel = shots_[i].uvPerPixel;
+        ThreadGrid g;
+        g.ends = double(p.repeat.x) * glm::dvec2(uvPerPixel[0][0], uvPerPixel[1][0]);
+        g.picks = double(p.repeat.y) * glm::dvec2(uvPerPixel[0][1], uvPerPixel[1][1]);
+        g.period = p.pattern.x + p.pattern.y;
+        return g;
+    }
+
+    // The photo's tile fold on the repeat of the weave being tried.
+    void foldPhoto(size_t i, int period) {
+        if (photoStats_[i].fold.side == 0 || photoGrids_[i]->period != period) {
+            photoGrids_[i]->period = period;
+            photoStats_[i].fold = foldTile(shots_[i].image, *photoGrids_[i]);
+        }
     }
 
     // Stage 1: each direction's peak in the first shot that shows one.
@@ -318,14 +371,8 @@ private:
     // every candidate where none does.
     std::vector<glm::ivec3> shortlist() const {
         for (size_t i = 0; i < shots_.size(); ++i) {
-            const ThreadPeaks& peaks = photoPeaks_[i];
-            if (!peaks.ends || !peaks.picks) continue;
-            const glm::dmat2& uvPerPixel = shots_[i].uvPerPixel;
-            const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
-            // Signed as U and V grow: the sign of one against the other is a twill's direction.
-            const glm::dvec2 ends = glm::dot(peaks.ends->frequency, gradU) < 0.0 ? -peaks.ends->frequency : peaks.ends->frequency;
-            const glm::dvec2 picks = glm::dot(peaks.picks->frequency, gradV) < 0.0 ? -peaks.picks->frequency : peaks.picks->frequency;
-            return weaveShortlist(rankWeavesBySpectrum(shots_[i].image, ends, picks));
+            if (!photoGrids_[i]) continue;
+            return weaveShortlist(rankWeavesBySpectrum(shots_[i].image, photoGrids_[i]->ends, photoGrids_[i]->picks));
         }
         std::vector<glm::ivec3> all;
         for (const WeaveCandidate& c : weaveCandidates()) all.push_back(c.pattern);
@@ -466,6 +513,7 @@ private:
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
     std::vector<std::vector<glm::dvec2>> threadFrequencies_;  // per shot, where its thread peaks are read
+    std::vector<std::optional<ThreadGrid>> photoGrids_;        // per shot, where its tile fold is read
     std::string stage_;
     FitResult result_;
 };
@@ -476,6 +524,12 @@ FitResult fitFabric(const std::vector<Shot>& shots, const FitOptions& options, c
                     const std::function<void(const FitProgress&)>& onProgress) {
     if (shots.empty()) throw FitError("woven fit: no shots");
     return Fitter(shots, options, cancel, onProgress).run();
+}
+
+FitResult fitLoss(const std::vector<Shot>& shots, const WovenParams& params, const FitOptions& options) {
+    if (shots.empty()) throw FitError("woven fit: no shots");
+    const std::atomic<bool> cancel{false};
+    return Fitter(shots, options, cancel, {}).lossOf(params);
 }
 
 }  // namespace woven

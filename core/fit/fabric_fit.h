@@ -57,4 +57,8 @@ struct FitResult {
 FitResult fitFabric(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
                     const std::function<void(const FitProgress&)>& onProgress = {});
 
+// What fitFabric() makes of one material: its loss, terms and render (one render of each shot),
+// for a known material's loss beside a fit's.
+FitResult fitLoss(const std::vector<Shot>& shots, const WovenParams& params, const FitOptions& options);
+
 }  // namespace woven

@@ -56,7 +56,8 @@ const std::array<double, kStatGroupCount>& lossWeights() {
     // The spectrum's log error is larger by nature (a factor of 2 in power is 0.09); at half the
     // colours' weight it still decides between weaves whose colours are only half fitted (stage 2
     // of fabric_fit.h): at 0.05 the synthetic 3/1 twill came out plain, at 0.5 a twill.
-    static const std::array<double, kStatGroupCount> w{1.0, 1.0, 0.5, 1.0, 0.1};
+    // The tile fold weighs as the block means: both are relative colour errors.
+    static const std::array<double, kStatGroupCount> w{1.0, 1.0, 0.5, 1.0, 0.1, 1.0};
     return w;
 }
 
@@ -72,6 +73,7 @@ LossTerms loss(const ImageStats& photo, const ImageStats& render) {
         t.error[kStatThreadPeaks] =
             colourError(photo.values[kStatThreadPeaks], render.values[kStatThreadPeaks], perChannel);
     t.error[kStatGram] = relativeError(photo.values[kStatGram], render.values[kStatGram]);
+    t.error[kStatTileFold] = foldError(photo.fold, render.fold);
     for (int g = 0; g < kStatGroupCount; ++g) t.total += lossWeights()[size_t(g)] * t.error[size_t(g)];
     return t;
 }

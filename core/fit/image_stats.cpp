@@ -109,16 +109,17 @@ std::vector<float> blockMeans(const Image& im) {
 }
 
 const std::array<const char*, kStatGroupCount>& statGroupNames() {
-    static const std::array<const char*, kStatGroupCount> names{"block means", "quantiles", "spectrum", "thread peaks", "gram"};
+    static const std::array<const char*, kStatGroupCount> names{"block means", "quantiles", "spectrum", "thread peaks", "gram", "tile fold"};
     return names;
 }
 
-ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads) {
+ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads, const ThreadGrid* grid) {
     ImageStats s;
     s.values[kStatBlockMeans] = blockMeans(image);
     s.values[kStatQuantiles] = quantiles(image);
     spectrumStats(image, threads, s.values[kStatSpectrum], s.values[kStatThreadPeaks]);
     s.values[kStatGram] = gram(image);
+    if (grid) s.fold = foldTile(image, *grid);
     return s;
 }
 

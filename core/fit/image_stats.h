@@ -12,23 +12,27 @@
 //   gram           the second moments of the features (R, G, B, |d/dx|, |d/dy|) over the image,
 //                  as a Gram matrix of image features does for texture: which colour the edges
 //                  across each direction have
+//   tile fold      the mean colour at each place of one repeat of the weave (tile_fold.h): each
+//                  yarn's colour where it floats, where a thread grid is given
 #include <array>
 #include <vector>
 
 #include "scene_description.h"
+#include "tile_fold.h"
 
 namespace woven {
 
-enum StatGroup { kStatBlockMeans, kStatQuantiles, kStatSpectrum, kStatThreadPeaks, kStatGram, kStatGroupCount };
+enum StatGroup { kStatBlockMeans, kStatQuantiles, kStatSpectrum, kStatThreadPeaks, kStatGram, kStatTileFold, kStatGroupCount };
 const std::array<const char*, kStatGroupCount>& statGroupNames();  // "block means", ...
 
 struct ImageStats {
-    std::array<std::vector<float>, kStatGroupCount> values;
+    std::array<std::vector<float>, kStatGroupCount> values;  // all but the tile fold's
+    TileFold fold;
 };
 
 // `threads`: the frequencies (cycles per pixel, x and y) the thread peaks are read at; none, no
-// thread peaks.
-ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads);
+// thread peaks. `grid`: where the image's threads are; none, no tile fold.
+ImageStats imageStats(const Image& image, const std::vector<glm::dvec2>& threads, const ThreadGrid* grid = nullptr);
 std::vector<float> blockMeans(const Image& image);  // imageStats()'s first group alone
 
 }  // namespace woven

@@ -41,7 +41,9 @@ protected:
                   << r.params.repeat.y << ", loss " << r.loss << ", " << r.evaluations << " renders, weft "
                   << r.params.weft_color.r << " " << r.params.weft_color.g << " " << r.params.weft_color.b << ", warp "
                   << r.params.warp_color.r << " " << r.params.warp_color.g << " " << r.params.warp_color.b
-                  << ", exposure " << r.exposure
+                  << ", exposure " << r.exposure << ", rs " << r.params.rs << ", ex " << r.params.ex << ", ey "
+                  << r.params.ey << ", widths " << r.params.yarn_width << " " << r.params.warp_width << ", cy "
+                  << r.params.cy
                   << (r.complete ? "" : ", incomplete") << "\n";
         for (const std::string& w : r.warnings) std::cerr << "fit: " << w << "\n";
         return r;
@@ -95,6 +97,26 @@ protected:
         expectThreadCounts(r, photo.truth);
     }
 
+    // The truth's tile fold against the photo's (tile_fold.h): the photo folded on its measured
+    // threads, the render on the material's. Measured 1.7e-5 (plain) and 5.8e-5 (3/1 twill) with
+    // the threads' frequencies refined by the fold's sharpness; 5.7e-4 and 2.1e-3 with the
+    // spectrum's peaks alone, whose 0.9 % error drifts the fold by a tenth of a thread at the
+    // edges. The 5-end satin's stays at 2e-3 (not understood yet), so it is not checked here.
+    void expectTruthFolds(glm::ivec3 pattern) {
+        RigPhoto photo;
+        photo.truth = cloth(pattern);
+        photo.noise = 0.03f;
+        photo.vignetteSigmaPx = 150.0f;
+        photo.exposure = 0.5f;
+        photo.exposureKnown = false;
+        shots_ = {loadShot(writeCaptureShot(dir_.string(), "shot", photo), "Swatch")};
+        FitOptions options;
+        options.render.spp = 8;
+        const FitResult truth = fitLoss(shots_, photo.truth, options);
+        EXPECT_LT(truth.shots[0].terms.error[kStatTileFold], 2e-4);
+        EXPECT_NEAR(truth.exposure, photo.exposure, 0.01);
+    }
+
     fs::path dir_;
     std::vector<Shot> shots_;
 };
@@ -133,6 +155,9 @@ TEST_F(RoundTrip, PlainWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWe
 TEST_F(RoundTrip, TwillWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({1, 3, 1}); }
 TEST_F(RoundTrip, SatinWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({4, 1, 2}); }
 TEST_F(RoundTrip, SatinWeaveClassFromAPhotoHalfClipped) { expectWeave({4, 1, 2}, 1.6f); }
+
+TEST_F(RoundTrip, PlainWeaveTruthFoldsOntoThePhoto) { expectTruthFolds({1, 1, 1}); }
+TEST_F(RoundTrip, TwillTruthFoldsOntoThePhoto) { expectTruthFolds({1, 3, 1}); }
 
 }  // namespace
 }  // namespace woven::test

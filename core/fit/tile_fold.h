@@ -1,0 +1,60 @@
+#pragma once
+// The weave's repeat folded (docs/FIT.md, "How it compares"): the mean colour of an image at each
+// place of one repeat of its weave, every repeat the image shows laid on top of the others, as
+// astronomers fold a periodic signal on its period. It sees each yarn's colour where it floats,
+// the gaps and the gloss across a thread, which the whole image's statistics mix. It needs the
+// threads' frequencies but no alignment: the fold starts where the threads' fundamentals peak,
+// and two folds are compared at the circular shift that matches them best, so that a photo and a
+// render whose threads lie elsewhere still compare.
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven {
+
+// Where an image's threads are: cycles per pixel of the warp ends (the weave's U grows along
+// `ends`) and of the weft picks (V along `picks`), and the weave's repeat in threads either way.
+struct ThreadGrid {
+    glm::dvec2 ends{0.0}, picks{0.0};
+    int period = 1;
+};
+
+struct TileFold {
+    int side = 0;                  // bins a side: kFoldBinsPerThread x the grid's period
+    std::vector<glm::vec3> mean;   // side x side, row V first
+    std::vector<float> weight;     // the pixels' share in each bin (0: none fell there)
+};
+
+// The fold's origin, in threads along U and V: where the luminance's components at the grid's
+// two frequencies peak.
+glm::dvec2 foldPhase(const Image& image, const ThreadGrid& grid);
+TileFold foldTile(const Image& image, const ThreadGrid& grid, const glm::dvec2& phase);
+inline TileFold foldTile(const Image& image, const ThreadGrid& grid) { return foldTile(image, grid, foldPhase(image, grid)); }
+
+// The circular shift, in bins, that lays a render's fold on a photo's: bin (u, v) of the photo's
+// against bin (u + u', v + v') of the render's, the one whose luminance matches best.
+struct FoldShift {
+    int u = 0, v = 0;
+};
+FoldShift alignFolds(const TileFold& photo, const TileFold& render);
+// The render's bin that lies on the photo's bin (u, v) at `shift`.
+inline size_t shiftedBin(const TileFold& fold, int u, int v, const FoldShift& shift) {
+    const int n = fold.side;
+    return size_t((v + shift.v) % n) * size_t(n) + size_t((u + shift.u) % n);
+}
+
+// The frequency near `f` (cycles per pixel, x and y) at which the luminance `values` (width x
+// height) folded on one thread is sharpest: the largest variance of its mean profile across the
+// thread, searched over the frequency's length within 3 % and its direction within 1.5 degrees.
+// Phase dispersion minimisation (Stellingwerf 1978): a spectrum's peak is only as sharp as the
+// image is wide, and the weave's own peaks beside it pull it, while a fold drifts off the threads
+// by the frequency's error times the threads the image shows, so the fold is the finer measure.
+glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, int height, const glm::dvec2& f);
+
+// Mean of ((render - photo) / the photo's channel mean)^2 over the bins both folds fill, at
+// alignFolds()' shift. 0 when the folds differ in size or either is empty.
+double foldError(const TileFold& photo, const TileFold& render);
+// The photo fold's mean of each channel, over the bins it fills.
+glm::dvec3 foldChannelMeans(const TileFold& photo);
+
+}  // namespace woven
