@@ -6,7 +6,7 @@ namespace woven {
 
 namespace {
 
-uint32_t reverseBits(uint32_t v) {
+constexpr uint32_t reverseBits(uint32_t v) {
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
     v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
     v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
@@ -18,7 +18,8 @@ uint32_t reverseBits(uint32_t v) {
 // direction numbers follow v_k = v_{k-1} ^ (v_{k-1} >> 1), the Pascal matrix mod 2. The first
 // dimension is the van der Corput sequence, reverseBits(). The matrix is applied a byte of the
 // index at a time, from the XORs of its columns for each byte value: a sample costs four loads,
-// not a loop over 32 bits, which in a small scene cost as much as the rays.
+// not a loop over 32 bits, which in a small scene cost as much as the rays. The tables hold the
+// columns bit-reversed, as the scrambling wants them (permuteReversed()).
 struct SecondDimensionTables {
     uint32_t byByte[4][256];
 };
@@ -32,55 +33,63 @@ constexpr SecondDimensionTables secondDimensionTables() {
             uint32_t x = 0;
             for (int k = 0; k < 8; ++k)
                 if (value & (1 << k)) x ^= v[8 * b + k];
-            t.byByte[b][value] = x;
+            t.byByte[b][value] = reverseBits(x);
         }
     return t;
 }
 constexpr SecondDimensionTables kSecondDimension = secondDimensionTables();
 
-uint32_t sobolSecondDimension(uint32_t index) {
+// reverseBits() of Sobol's second dimension at `index`.
+uint32_t sobolSecondDimensionReversed(uint32_t index) {
     return kSecondDimension.byByte[0][index & 0xffu] ^ kSecondDimension.byByte[1][(index >> 8) & 0xffu] ^
            kSecondDimension.byByte[2][(index >> 16) & 0xffu] ^ kSecondDimension.byByte[3][index >> 24];
+}
+
+// Laine and Karras's permutation with Vegard Nossum's constants, as pbrt-v4's
+// FastOwenScrambler, of bit-reversed values: additions and multiplications by even constants
+// only carry upwards, so each original bit depends on the bits above it alone. The sampler
+// keeps its values reversed between scramblings, which saves two of owenScramble()'s
+// reversals each.
+uint32_t permuteReversed(uint32_t v, uint32_t seed) {
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return v;
 }
 
 float toUnit(uint32_t x) { return float(x >> 8) * 0x1p-24f; }  // [0, 1), as Rng::uniform()
 
 }  // namespace
 
-uint32_t owenScramble(uint32_t v, uint32_t seed) {
-    // Laine and Karras's permutation with Vegard Nossum's constants, as pbrt-v4's
-    // FastOwenScrambler: on the reversed bits, additions and multiplications by even constants
-    // only carry upwards, so each original bit depends on the bits above it alone.
-    v = reverseBits(v);
-    v ^= v * 0x3d20adeau;
-    v += seed;
-    v *= (seed >> 16) | 1u;
-    v ^= v * 0x05526c56u;
-    v ^= v * 0x53a22864u;
-    return reverseBits(v);
-}
+uint32_t owenScramble(uint32_t v, uint32_t seed) { return reverseBits(permuteReversed(reverseBits(v), seed)); }
 
 SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel, uint64_t sampleIndex)
     : key_(mix64(seed ^ mix64(pixel * 0x9e3779b97f4a7c15ULL ^ mix64((sampleIndex >> 32) + 0x2545f4914f6cdd1dULL)))),
-      index_(uint32_t(sampleIndex)) {}
+      reversedIndex_(reverseBits(uint32_t(sampleIndex))) {}
 
 uint64_t SobolSampler::dimensionKey(uint32_t dimension) const { return mix64(key_ ^ mix64(uint64_t(dimension) + 1)); }
 
 // Every dimension shuffles the sample index its own way. Without that, the scrambled points'
 // coarsest bit would be the index's lowest bit flipped by a constant in every dimension: two
 // dimensions would fall in the same (or opposite) halves for all samples.
+// Written with owenScramble(), the value of get1D() is
+//   owenScramble(reverseBits(owenScramble(index, k1)), k2),
+// and get2D()'s are owenScramble(reverseBits(i), k2) and owenScramble(sobolSecondDimension(i), k3)
+// of i = owenScramble(index, k1); below the same with the reversals that cancel left out.
 float SobolSampler::get1D(uint32_t dimension) const {
     const uint64_t key = dimensionKey(dimension);
-    const uint32_t index = owenScramble(index_, uint32_t(key));
-    return toUnit(owenScramble(reverseBits(index), uint32_t(key >> 32)));
+    const uint32_t index = reverseBits(permuteReversed(reversedIndex_, uint32_t(key)));
+    return toUnit(reverseBits(permuteReversed(index, uint32_t(key >> 32))));
 }
 
 glm::vec2 SobolSampler::get2D(uint32_t dimension) const {
     const uint64_t key = dimensionKey(dimension);
-    const uint32_t index = owenScramble(index_, uint32_t(key >> 32));  // not get1D's shuffle
+    const uint32_t index = reverseBits(permuteReversed(reversedIndex_, uint32_t(key >> 32)));  // not get1D's shuffle
     const uint64_t valueKey = mix64(key);
-    return {toUnit(owenScramble(reverseBits(index), uint32_t(valueKey))),
-            toUnit(owenScramble(sobolSecondDimension(index), uint32_t(valueKey >> 32)))};
+    return {toUnit(reverseBits(permuteReversed(index, uint32_t(valueKey)))),
+            toUnit(reverseBits(permuteReversed(sobolSecondDimensionReversed(index), uint32_t(valueKey >> 32))))};
 }
 
 }  // namespace woven

@@ -23,7 +23,7 @@ private:
     uint64_t dimensionKey(uint32_t dimension) const;
 
     uint64_t key_;     // of (seed, pixel, sample block)
-    uint32_t index_;   // the sample's index within its block
+    uint32_t reversedIndex_;  // the sample's index within its block, its bits reversed
 };
 
 // A nested uniform (Owen) scrambling of a 32-bit fixed-point fraction: each bit is flipped by a
