@@ -98,6 +98,65 @@ double maximise(const G& g, double lo, double hi, int steps) {
     return 0.5 * (a + b);
 }
 
+// The fold's origin, in threads along U and V: where the luminance's components at the grid's
+// two frequencies peak.
+glm::dvec2 foldPhase(const Image& image, const ThreadGrid& grid) {
+    std::vector<float> l(image.pixels.size());
+    double mean = 0.0;
+    for (size_t i = 0; i < l.size(); ++i) mean += l[i] = luminance(image.pixels[i]);
+    mean /= double(std::max<size_t>(l.size(), 1));
+    return {peakPhase(l, image.width, image.height, mean, grid.ends), peakPhase(l, image.width, image.height, mean, grid.picks)};
+}
+
+// The circular shift, in bins, that lays a render's fold on a photo's: bin (u, v) of the photo's
+// against bin (u + u', v + v') of the render's.
+struct FoldShift {
+    int u = 0, v = 0;
+};
+
+size_t shiftedBin(const TileFold& fold, int u, int v, const FoldShift& shift) {
+    const int n = fold.side;
+    return size_t((v + shift.v) % n) * size_t(n) + size_t((u + shift.u) % n);
+}
+
+// The shift whose luminance matches best.
+FoldShift alignFolds(const TileFold& photo, const TileFold& render) {
+    FoldShift best;
+    if (photo.side == 0 || photo.side != render.side) return best;
+    const int n = photo.side;
+    // Every shift, not only whole threads from the fundamentals' peaks: those are the same place
+    // of the weave in both only while the yarns' colours order alike.
+    double bestError = INFINITY;
+    for (int sv = 0; sv < n; ++sv)
+        for (int su = 0; su < n; ++su) {
+            const FoldShift shift{su, sv};
+            double e = 0.0;
+            for (int v = 0; v < n; ++v)
+                for (int u = 0; u < n; ++u) {
+                    const size_t p = size_t(v) * size_t(n) + size_t(u), r = shiftedBin(render, u, v, shift);
+                    if (photo.weight[p] <= 0.0f || render.weight[r] <= 0.0f) continue;
+                    const double d = double(luminance(render.mean[r])) - luminance(photo.mean[p]);
+                    e += d * d;
+                }
+            if (e < bestError) {
+                bestError = e;
+                best = shift;
+            }
+        }
+    return best;
+}
+
+// The photo fold's mean of each channel, over the bins it fills.
+glm::dvec3 foldChannelMeans(const TileFold& photo) {
+    glm::dvec3 sum(0.0);
+    double total = 0.0;
+    for (size_t b = 0; b < photo.mean.size(); ++b) {
+        sum += double(photo.weight[b]) * glm::dvec3(photo.mean[b]);
+        total += photo.weight[b];
+    }
+    return glm::max(sum / std::max(total, 1e-30), glm::dvec3(1e-4));
+}
+
 }  // namespace
 
 glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, int height, const glm::dvec2& f) {
@@ -119,21 +178,14 @@ glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, in
     return frequency(scale, angle);
 }
 
-glm::dvec2 foldPhase(const Image& image, const ThreadGrid& grid) {
-    std::vector<float> l(image.pixels.size());
-    double mean = 0.0;
-    for (size_t i = 0; i < l.size(); ++i) mean += l[i] = luminance(image.pixels[i]);
-    mean /= double(std::max<size_t>(l.size(), 1));
-    return {peakPhase(l, image.width, image.height, mean, grid.ends), peakPhase(l, image.width, image.height, mean, grid.picks)};
-}
-
-TileFold foldTile(const Image& image, const ThreadGrid& grid, const glm::dvec2& phase) {
+TileFold foldTile(const Image& image, const ThreadGrid& grid) {
     TileFold fold;
     if (image.pixels.empty() || grid.period < 1) return fold;
     fold.side = kFoldBinsPerThread * grid.period;
     const size_t bins = size_t(fold.side) * size_t(fold.side);
     std::vector<glm::dvec3> sum(bins, glm::dvec3(0.0));
     std::vector<double> weight(bins, 0.0);
+    const glm::dvec2 phase = foldPhase(image, grid);
     const double phaseU = phase.x, phaseV = phase.y;
 
     const double period = grid.period;
@@ -166,42 +218,6 @@ TileFold foldTile(const Image& image, const ThreadGrid& grid, const glm::dvec2& 
         fold.mean[b] = weight[b] > 0.0 ? glm::vec3(sum[b] / weight[b]) : glm::vec3(0.0f);
     }
     return fold;
-}
-
-FoldShift alignFolds(const TileFold& photo, const TileFold& render) {
-    FoldShift best;
-    if (photo.side == 0 || photo.side != render.side) return best;
-    const int n = photo.side;
-    // Every shift, not only whole threads from the fundamentals' peaks: those are the same place
-    // of the weave in both only while the yarns' colours order alike.
-    double bestError = INFINITY;
-    for (int sv = 0; sv < n; ++sv)
-        for (int su = 0; su < n; ++su) {
-            const FoldShift shift{su, sv};
-            double e = 0.0;
-            for (int v = 0; v < n; ++v)
-                for (int u = 0; u < n; ++u) {
-                    const size_t p = size_t(v) * size_t(n) + size_t(u), r = shiftedBin(render, u, v, shift);
-                    if (photo.weight[p] <= 0.0f || render.weight[r] <= 0.0f) continue;
-                    const double d = double(luminance(render.mean[r])) - luminance(photo.mean[p]);
-                    e += d * d;
-                }
-            if (e < bestError) {
-                bestError = e;
-                best = shift;
-            }
-        }
-    return best;
-}
-
-glm::dvec3 foldChannelMeans(const TileFold& photo) {
-    glm::dvec3 sum(0.0);
-    double total = 0.0;
-    for (size_t b = 0; b < photo.mean.size(); ++b) {
-        sum += double(photo.weight[b]) * glm::dvec3(photo.mean[b]);
-        total += photo.weight[b];
-    }
-    return glm::max(sum / std::max(total, 1e-30), glm::dvec3(1e-4));
 }
 
 double foldError(const TileFold& photo, const TileFold& render) {

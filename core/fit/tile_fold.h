@@ -25,23 +25,7 @@ struct TileFold {
     std::vector<float> weight;     // the pixels' share in each bin (0: none fell there)
 };
 
-// The fold's origin, in threads along U and V: where the luminance's components at the grid's
-// two frequencies peak.
-glm::dvec2 foldPhase(const Image& image, const ThreadGrid& grid);
-TileFold foldTile(const Image& image, const ThreadGrid& grid, const glm::dvec2& phase);
-inline TileFold foldTile(const Image& image, const ThreadGrid& grid) { return foldTile(image, grid, foldPhase(image, grid)); }
-
-// The circular shift, in bins, that lays a render's fold on a photo's: bin (u, v) of the photo's
-// against bin (u + u', v + v') of the render's, the one whose luminance matches best.
-struct FoldShift {
-    int u = 0, v = 0;
-};
-FoldShift alignFolds(const TileFold& photo, const TileFold& render);
-// The render's bin that lies on the photo's bin (u, v) at `shift`.
-inline size_t shiftedBin(const TileFold& fold, int u, int v, const FoldShift& shift) {
-    const int n = fold.side;
-    return size_t((v + shift.v) % n) * size_t(n) + size_t((u + shift.u) % n);
-}
+TileFold foldTile(const Image& image, const ThreadGrid& grid);
 
 // The frequency near `f` (cycles per pixel, x and y) at which the luminance `values` (width x
 // height) folded on one thread is sharpest: the largest variance of its mean profile across the
@@ -52,9 +36,8 @@ inline size_t shiftedBin(const TileFold& fold, int u, int v, const FoldShift& sh
 glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, int height, const glm::dvec2& f);
 
 // Mean of ((render - photo) / the photo's channel mean)^2 over the bins both folds fill, at
-// alignFolds()' shift. 0 when the folds differ in size or either is empty.
+// the circular shift of the render's fold whose luminance matches the photo's best. 0 when the
+// folds differ in size or either is empty.
 double foldError(const TileFold& photo, const TileFold& render);
-// The photo fold's mean of each channel, over the bins it fills.
-glm::dvec3 foldChannelMeans(const TileFold& photo);
 
 }  // namespace woven
