@@ -70,8 +70,7 @@ glm::vec4 TextureSampler::texel(int x, int y) const {
     return glm::vec4(b) / 255.0f;
 }
 
-glm::vec4 TextureSampler::eval(const TexCoords& tc, const glm::vec4& fallback) const {
-    if (!image_) return fallback;
+glm::vec4 TextureSampler::lookup(const TexCoords& tc) const {
     const glm::vec2 p = uv(tc);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return texel(0, 0);
     // glTF puts uv (0, 0) at the image's top-left corner, as TextureImage's row 0 is the top.

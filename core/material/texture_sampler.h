@@ -15,13 +15,17 @@ public:
     TextureSampler(const TextureRef& ref, const std::vector<TextureImage>& images);
 
     explicit operator bool() const { return image_ != nullptr; }
-    // Linear RGBA at the point, or `fallback` when there is no texture.
-    glm::vec4 eval(const TexCoords& tc, const glm::vec4& fallback = glm::vec4(1.0f)) const;
+    // Linear RGBA at the point, or `fallback` when there is no texture: inline, since a
+    // material asks for each of its inputs' textures at every hit, most of them absent.
+    glm::vec4 eval(const TexCoords& tc, const glm::vec4& fallback = glm::vec4(1.0f)) const {
+        return image_ ? lookup(tc) : fallback;
+    }
     glm::vec2 uv(const TexCoords& tc) const;  // the transformed coordinates looked up
     float scale() const { return ref_.scale; }
     const TextureRef& ref() const { return ref_; }
 
 private:
+    glm::vec4 lookup(const TexCoords& tc) const;  // the image's filtered value at the point
     glm::vec4 texel(int x, int y) const;
 
     TextureRef ref_;
