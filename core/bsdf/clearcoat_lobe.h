@@ -14,6 +14,8 @@ namespace woven {
 
 class ClearcoatLobe {
 public:
+    // No coat (active() is false), for nothing: GltfBxdf builds one for every surface.
+    ClearcoatLobe() = default;
     ClearcoatLobe(float weight, float roughness, const glm::vec3& normal);
 
     bool active() const { return weight_ > 0.0f; }
@@ -27,8 +29,8 @@ public:
     float reflectance(const glm::vec3& wo) const;
 
 private:
-    float weight_;
-    TrowbridgeReitz ggx_;
+    float weight_ = 0.0f;
+    TrowbridgeReitz ggx_{1.0f};
     Frame frame_;  // z = the coat's normal, in the base's frame
 };
 

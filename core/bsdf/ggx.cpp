@@ -7,10 +7,7 @@ namespace woven {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
-float clampAlpha(float alpha) { return std::clamp(std::isfinite(alpha) ? alpha : 1.0f, TrowbridgeReitz::kMinAlpha, 1.0f); }
 }  // namespace
-
-TrowbridgeReitz::TrowbridgeReitz(float alphaX, float alphaY) : alphaX_(clampAlpha(alphaX)), alphaY_(clampAlpha(alphaY)) {}
 
 float TrowbridgeReitz::D(const glm::vec3& h) const {
     if (h.z <= 0.0f) return 0.0f;

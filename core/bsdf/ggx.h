@@ -3,6 +3,8 @@
 // KHR_materials_anisotropy's two roughnesses, in a local frame with z = the normal and x = the
 // direction of alphaX: D, the height-correlated Smith visibility V = G2 / (4 |n.wo| |n.wi|), and
 // sampling of the visible normals (Heitz 2018).
+#include <algorithm>
+#include <cmath>
 #include <glm/glm.hpp>
 
 namespace woven {
@@ -13,7 +15,7 @@ public:
     // since no BSDF in woven is a delta function.
     explicit TrowbridgeReitz(float alpha) : TrowbridgeReitz(alpha, alpha) {}
     // alphaX along the frame's x axis, alphaY along y, each clamped to [kMinAlpha, 1].
-    TrowbridgeReitz(float alphaX, float alphaY);
+    TrowbridgeReitz(float alphaX, float alphaY) : alphaX_(clampAlpha(alphaX)), alphaY_(clampAlpha(alphaY)) {}
     static constexpr float kMinAlpha = 1e-3f;
 
     float alphaX() const { return alphaX_; }
@@ -31,6 +33,7 @@ public:
     float reflectionPdf(const glm::vec3& wo, const glm::vec3& wi) const;
 
 private:
+    static float clampAlpha(float alpha) { return std::clamp(std::isfinite(alpha) ? alpha : 1.0f, kMinAlpha, 1.0f); }
     // |(alphaX w.x, alphaY w.y, w.z)|: the length of w in the stretched configuration.
     float stretchedLength(const glm::vec3& w) const;
 

@@ -40,8 +40,10 @@ GltfBxdf::GltfBxdf(const GltfBxdfInputs& in)
       transmittance_(clamp01(in.transmittance)),
       diffuseTransmission_(clamp01(in.diffuseTransmission)),
       diffuseTransmissionColor_(clamp01(in.diffuseTransmissionColor)),
-      sheen_(in.sheenColor, in.sheenRoughness),
-      clearcoat_(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal),
+      // A surface without sheen or coat builds neither lobe (the coat's frame, the tables' clamps).
+      sheen_(in.sheenColor != glm::vec3(0.0f) ? SheenLobe(in.sheenColor, in.sheenRoughness) : SheenLobe()),
+      clearcoat_(in.clearcoat > 0.0f ? ClearcoatLobe(in.clearcoat, clamp01(in.clearcoatRoughness), in.clearcoatNormal)
+                                     : ClearcoatLobe()),
       iridescence_(clamp01(in.iridescence)),
       iridescenceIor_(std::max(in.iridescenceIor, 1.0f)),
       iridescenceThickness_(std::max(in.iridescenceThickness, 0.0f)),

@@ -11,6 +11,8 @@ namespace woven {
 
 class SheenLobe {
 public:
+    // No sheen (active() is false), for nothing: GltfBxdf builds one for every surface.
+    SheenLobe() = default;
     // `roughness` is the extension's sheenRoughness, clamped to [kMinRoughness, 1]; the
     // distribution's alpha is its square, as the extension's reference implementation has it.
     SheenLobe(const glm::vec3& color, float roughness);
@@ -34,8 +36,8 @@ public:
     float visibility(float cosO, float cosI) const;
 
 private:
-    glm::vec3 color_;
-    float roughness_, alpha_, maxColor_;
+    glm::vec3 color_{0.0f};
+    float roughness_ = 1.0f, alpha_ = 1.0f, maxColor_ = 0.0f;
 };
 
 }  // namespace woven
