@@ -161,31 +161,44 @@ namespace {
 struct Corners {
     glm::uvec3 tri;  // the vertex indices in the world's winding
     float b1, b2;    // the hit's barycentrics in that winding
+    const glm::mat4* placement;  // an instanced copy's matrix, or null
+    bool mirrored;               // the placement swaps the winding
     glm::vec3 p[3];
-    glm::vec3 n[3];  // where the mesh has normals
-    glm::vec4 t[3];  // where it has tangents
+    glm::vec3 n[3];  // where the mesh has normals (hitCorners)
+    glm::vec4 t[3];  // where it has tangents (hitCorners)
 };
 
-Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
+// The corners' positions and winding alone: what spawnRay needs of them, at every bounce and
+// every shadow ray.
+Corners cornerPositions(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
     Corners c;
     c.tri = mesh.triangles[prim];
     c.b1 = b1;
     c.b2 = b2;
-    const glm::mat4* m = instance >= 0 ? &(*mesh.instances)[size_t(instance)] : nullptr;
-    const bool mirrored = m && glm::determinant(glm::mat3(*m)) < 0.0f;
-    if (mirrored) {
+    c.placement = instance >= 0 ? &(*mesh.instances)[size_t(instance)] : nullptr;
+    c.mirrored = c.placement && glm::determinant(glm::mat3(*c.placement)) < 0.0f;
+    if (c.mirrored) {
         std::swap(c.tri.y, c.tri.z);
         std::swap(c.b1, c.b2);
     }
+    const glm::mat4* m = c.placement;
+    for (int k = 0; k < 3; ++k)
+        c.p[k] = m ? glm::vec3(*m * glm::vec4(mesh.positions[c.tri[k]], 1.0f)) : mesh.positions[c.tri[k]];
+    return c;
+}
+
+// The positions, normals and tangents.
+Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
+    Corners c = cornerPositions(mesh, instance, prim, b1, b2);
+    const glm::mat4* m = c.placement;
     const glm::mat3 normalMatrix = m ? glm::transpose(glm::inverse(glm::mat3(*m))) : glm::mat3(1.0f);
     for (int k = 0; k < 3; ++k) {
         const unsigned v = c.tri[k];
-        c.p[k] = m ? glm::vec3(*m * glm::vec4(mesh.positions[v], 1.0f)) : mesh.positions[v];
         if (!mesh.normals.empty()) c.n[k] = m ? glm::normalize(normalMatrix * mesh.normals[v]) : mesh.normals[v];
         if (!mesh.tangents.empty()) {
             const glm::vec4& t = mesh.tangents[v];
             c.t[k] = m ? glm::vec4(Frame::fromNormalAndAxis(c.n[k], glm::mat3(*m) * glm::vec3(t)).x,
-                                   mirrored ? -t.w : t.w)
+                                   c.mirrored ? -t.w : t.w)
                        : t;
         }
     }
@@ -452,7 +465,8 @@ Ray RenderScene::spawnRay(const SurfaceHit& from, const glm::vec3& d) const {
     // onto the far side of an edge where two walls meet (a box's corner seen from inside) would
     // otherwise start outside the closed surface and escape through the seam.
     if (from.mesh >= 0 && from.triangle >= 0 && from.mesh < int(impl_->scene->meshes.size())) {
-        const Corners c = hitCorners(impl_->scene->meshes[size_t(from.mesh)], from.instance, unsigned(from.triangle), 0.0f, 0.0f);
+        const Corners c =
+            cornerPositions(impl_->scene->meshes[size_t(from.mesh)], from.instance, unsigned(from.triangle), 0.0f, 0.0f);
         const glm::vec3 toCentroid = (c.p[0] + c.p[1] + c.p[2]) / 3.0f - from.p;
         const float length = glm::length(toCentroid);
         if (length > offset) ray.o += toCentroid * (offset / length);
