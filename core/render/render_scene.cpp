@@ -52,7 +52,8 @@ struct CullContext {
     Cull cull = Cull::Back;
 };
 
-// The context filter of camera rays (and of rays towards the camera): only they pay for it.
+// The context filter of camera rays (and of rays towards the camera): only they pay for it, and
+// only in a scene where some mesh is single-sided (Impl::culls).
 void cullSingleSided(const RTCFilterFunctionNArguments* args) {
     const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
     if (!filter->singleSided) return;
@@ -130,6 +131,10 @@ struct RenderScene::Impl {
         unsigned mesh, instance;
     };
     std::vector<InstanceRef> instanceRefs;  // by instance ID - meshes.size()
+    // Some mesh is single-sided: only then do camera rays (and rays towards the camera) take the
+    // context filter that culls backs, and the scenes Embree's support for it.
+    bool culls = false;
+    RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;
 
     std::vector<Light> lights;
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
@@ -145,6 +150,10 @@ struct RenderScene::Impl {
 
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
 
+    // glTF's doubleSided false.
+    bool singleSided(const Mesh& mesh) const {
+        return mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
+    }
     void buildGeometry();
     RTCGeometry triangleGeometry(size_t m);
     void addInstances(size_t m, RTCGeometry triangles);
@@ -211,7 +220,9 @@ void RenderScene::Impl::buildGeometry() {
     if (!device) fail("cannot create the Embree device");
     rtcSetDeviceErrorFunction(device, embreeError, &embreeMessage);
     rtcScene = rtcNewScene(device);
-    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    culls = std::any_of(scene->meshes.begin(), scene->meshes.end(), [&](const Mesh& mesh) { return singleSided(mesh); });
+    if (culls) sceneFlags = RTCSceneFlags(sceneFlags | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneFlags(rtcScene, sceneFlags);
     // High quality (spatial splits) costs about a second for millions of triangles, little beside
     // a final frame's tracing, which it speeds up. No quality helps coincident triangles, which
     // every ray through them tests one by one (under 100 rays/s a thread for a million copies
@@ -248,8 +259,7 @@ RTCGeometry RenderScene::Impl::triangleGeometry(size_t m) {
     std::copy(mesh.positions.begin(), mesh.positions.end(), vertices);
     std::copy(mesh.triangles.begin(), mesh.triangles.end(), indices);
     const SurfaceMaterial& material = (*materials)[mesh.material];
-    const bool singleSided = mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
-    hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided};
+    hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided(mesh)};
     rtcSetGeometryUserData(geom, &hitFilters[m]);
     // Only meshes whose material can let rays through pay for the geometry's filter.
     if (material.mayPassThrough(mesh)) {
@@ -264,7 +274,7 @@ RTCGeometry RenderScene::Impl::triangleGeometry(size_t m) {
 // file's: a mirroring matrix turns both the ray and the front, so the cull's sign holds.
 void RenderScene::Impl::addInstances(size_t m, RTCGeometry triangles) {
     RTCScene own = rtcNewScene(device);
-    rtcSetSceneFlags(own, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneFlags(own, sceneFlags);
     rtcSetSceneBuildQuality(own, RTC_BUILD_QUALITY_HIGH);
     rtcAttachGeometryByID(own, triangles, 0);
     rtcReleaseGeometry(triangles);
@@ -431,7 +441,8 @@ float segmentEnd(const glm::vec3& from, const glm::vec3& target) {
 }  // namespace
 
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
-    CullContext context = intersectContext(kind == RayKind::Camera ? std::optional(Cull::Back) : std::nullopt);
+    CullContext context =
+        intersectContext(kind == RayKind::Camera && impl_->culls ? std::optional(Cull::Back) : std::nullopt);
     RTCRayHit rh;
     rh.ray = toRtcRay(ray.o, ray.d, ray.tMax);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -489,7 +500,8 @@ bool RenderScene::seenFromCamera(const SurfaceHit& from, const glm::vec3& camera
     const bool singleSided = from.material >= 0 && !materials[size_t(from.material)].doubleSided;
     if (singleSided && glm::dot(from.ng, camera - from.p) < 0.0f) return false;  // the camera sees its back
     const Ray ray = spawnRay(from, camera - from.p);
-    return !occludedRay(impl_->rtcScene, ray.o, camera - ray.o, segmentEnd(ray.o, camera), Cull::Front);
+    return !occludedRay(impl_->rtcScene, ray.o, camera - ray.o, segmentEnd(ray.o, camera),
+                        impl_->culls ? std::optional(Cull::Front) : std::nullopt);
 }
 
 const SceneMaterials& RenderScene::materials() const { return *impl_->materials; }
