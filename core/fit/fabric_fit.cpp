@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "image_stats.h"
+#include "linear_colours.h"
 #include "photo_model.h"
 #include "power_spectrum.h"
 #include "tile_fold.h"
@@ -40,6 +41,9 @@ constexpr int kShortlistRefineRenders = 50;
 constexpr int kClippedExposureSteps = 4;
 // Stage 4 restarts BOBYQA while a run lowers the loss by more than this fraction.
 constexpr double kRestartGain = 1e-3;
+// Closed-form colour solves at each point of stage 4: the fold's phase and shift come from the
+// colours before the solve, so a second solve from the first's colours lays the folds right.
+constexpr int kColourSolves = 2;
 
 struct ThreadPeaks {
     std::optional<SpectralPeak> ends, picks;  // across u (warp ends) and across v (weft picks)
@@ -128,6 +132,11 @@ public:
         : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()) {
         result_.shots.resize(shots_.size());
         result_.loss = INFINITY;
+        for (const Shot& s : shots_) {
+            anyFree_ = anyFree_ || !s.photo.exposure;
+            allFree_ = allFree_ && !s.photo.exposure;
+            whiteLight_ = whiteLight_ && litWhiteAndTargetOnly(s);
+        }
     }
 
     FitResult run() {
@@ -138,6 +147,7 @@ public:
         p.warp_ex = p.ex;
         p.warp_ey = p.ey;
 
+        const float shotRs = p.rs;
         stage_ = "thread counts";
         p.repeat = measurePhotos(p.repeat);
         p = initialColours(p);
@@ -149,9 +159,9 @@ public:
             calibrated = calibrateThreadCounts(p);
         }
         int refined = 0;
-        if (calibrated && !stop()) refined = refine();
+        if (calibrated && !stop()) refined = refine(shotRs);
         measureThreads();
-        result_.complete = weaveDone && calibrated && refined >= 2 * int(fullAxes().size()) + 1 && !cancel_;
+        result_.complete = weaveDone && calibrated && refined >= 2 * int(shapeAxes().size()) + 1 && !cancel_;
         return std::move(result_);
     }
 
@@ -379,25 +389,76 @@ private:
         return all;
     }
 
-    // Renders linear in the yarn colours (black, white weft, white warp) and NLopt over their
-    // mixtures, which cost no rendering.
+    // Each shot's K_weft, K_warp and R (linear_colours.h) at p's shape, vignetted: renders whose
+    // mixtures are p's renders with any yarn colours, exactly, under direct light from point
+    // lights. Under white light one render holds all three (the weft red and the warp green, so
+    // that blue is R's alone, as the gloss is white); otherwise three: both yarns black, a white
+    // weft, a white warp.
+    using ColourBasis = std::vector<std::array<Image, 3>>;
+    ColourBasis colourBasis(WovenParams p) {
+        ColourBasis basis(shots_.size());
+        if (whiteLight_) {
+            p.weft_color = glm::vec3(1.0f, 0.0f, 0.0f);
+            p.warp_color = glm::vec3(0.0f, 1.0f, 0.0f);
+            const std::vector<Image> images = render(p);
+            for (size_t s = 0; s < shots_.size(); ++s) {
+                basis[s] = {images[s], images[s], images[s]};
+                for (size_t i = 0; i < images[s].pixels.size(); ++i) {
+                    const glm::vec3 v = images[s].pixels[i];
+                    basis[s][0].pixels[i] = glm::vec3(v.r - v.b);
+                    basis[s][1].pixels[i] = glm::vec3(v.g - v.b);
+                    basis[s][2].pixels[i] = glm::vec3(v.b);
+                }
+            }
+            return basis;
+        }
+        p.weft_color = p.warp_color = glm::vec3(0.0f);
+        const std::vector<Image> black = render(p);
+        p.weft_color = glm::vec3(1.0f);
+        const std::vector<Image> weft = render(p);
+        p.weft_color = glm::vec3(0.0f);
+        p.warp_color = glm::vec3(1.0f);
+        const std::vector<Image> warp = render(p);
+        for (size_t s = 0; s < shots_.size(); ++s) {
+            basis[s] = {weft[s], warp[s], black[s]};
+            for (size_t i = 0; i < black[s].pixels.size(); ++i) {
+                basis[s][0].pixels[i] -= black[s].pixels[i];
+                basis[s][1].pixels[i] -= black[s].pixels[i];
+            }
+        }
+        return basis;
+    }
+
+    // The renders of p's colours at the basis's shape.
+    static std::vector<Image> mixture(const ColourBasis& basis, const WovenParams& p) {
+        std::vector<Image> images;
+        for (const std::array<Image, 3>& b : basis) {
+            images.push_back(b[2]);
+            for (size_t i = 0; i < b[2].pixels.size(); ++i)
+                images.back().pixels[i] += p.weft_color * b[0].pixels[i] + p.warp_color * b[1].pixels[i];
+        }
+        return images;
+    }
+
+    // Where one render makes the colour basis: every light and the environment white (or grey),
+    // and nothing in view but the target, so that no coloured surface adds to R.
+    static bool litWhiteAndTargetOnly(const Shot& shot) {
+        const SceneDescription& scene = *shot.scene;
+        auto grey = [](const glm::vec3& c) { return c.r == c.g && c.g == c.b; };
+        for (const PunctualLight& l : scene.lights)
+            if (!grey(l.intensity)) return false;
+        if (!grey(scene.environment.color) || scene.environment.image) return false;
+        for (const Mesh& m : scene.meshes)
+            if (std::find(shot.materials.begin(), shot.materials.end(), m.material) == shot.materials.end()) return false;
+        return true;
+    }
+
+    // NLopt over mixtures of the colour basis, which cost no rendering.
     void fitColours(WovenParams& p) {
-        WovenParams basis = p;
-        basis.weft_color = basis.warp_color = glm::vec3(0.0f);
-        const std::vector<Image> black = render(basis);
-        basis.weft_color = glm::vec3(1.0f);
-        const std::vector<Image> weft = render(basis);
-        basis.weft_color = glm::vec3(0.0f);
-        basis.warp_color = glm::vec3(1.0f);
-        const std::vector<Image> warp = render(basis);
+        const ColourBasis basis = colourBasis(p);
         const Objective objective = [&](const std::vector<double>& x) {
             const WovenParams q = decode(x, p);
-            std::vector<Image> images = black;
-            for (size_t s = 0; s < images.size(); ++s)
-                for (size_t i = 0; i < images[s].pixels.size(); ++i)
-                    images[s].pixels[i] += q.weft_color * (weft[s].pixels[i] - black[s].pixels[i]) +
-                                           q.warp_color * (warp[s].pixels[i] - black[s].pixels[i]);
-            return evaluate(q, std::move(images), false);
+            return evaluate(q, mixture(basis, q), false);
         };
         std::vector<double> x = encode(p);
         x.resize(kColourAxes);
@@ -462,13 +523,12 @@ private:
     // optimiser drifts along that valley, and a colour that reaches its axis's end is held there
     // (the synthetic satin's warp ended at 0.002 for 0.1 with the exposure 4 times the truth's).
     // Where an exposure is free, the colours and rs scaled so the brightest channel is 0.5, the
-    // middle of its axis; the loss stays what it was (the exposure takes the scale back).
+    // middle of its axis, before each weave's refinement (stage 2); the loss stays what it was
+    // (the exposure takes the scale back).
     WovenParams rescaled(WovenParams p) const {
-        bool free = false;
-        for (const Shot& s : shots_) free = free || !s.photo.exposure;
         const float brightest = std::max({p.weft_color.r, p.weft_color.g, p.weft_color.b, p.warp_color.r,
                                           p.warp_color.g, p.warp_color.b});
-        if (!free || !(brightest > 0.0f)) return p;
+        if (!anyFree_ || !(brightest > 0.0f)) return p;
         const float k = 0.5f / brightest;
         p.weft_color *= k;
         p.warp_color *= k;
@@ -476,20 +536,74 @@ private:
         return p;
     }
 
-    // Stage 4: BOBYQA from the best so far, again from where it stopped while that gains (it
-    // stops where its trust region shrinks, often short of the minimum of so many parameters),
-    // until the budget is spent. Returns the renders it took.
-    int refine() {
+    // Stage 4's axes of fullAxes(), searched by BOBYQA: the shape, as the colours are solved at
+    // each point. rs too where no exposure is free; a free exposure scales the gloss as it does
+    // the colours (a photo shows only exposure x rs), so rs is held there.
+    std::vector<size_t> shapeAxes() const {
+        if (anyFree_) return {7, 8, 9, 10, 11};
+        return {6, 7, 8, 9, 10, 11};
+    }
+
+    // The loss of p's shape with the colours (and a free exposure) that match the photos' block
+    // means and tile folds best (linear_colours.h); kept if the best so far. One colour basis,
+    // kColourSolves solves, each folding the basis at the phase and shift of the last colours'
+    // mixture.
+    double evaluateSolvingColours(WovenParams p) {
+        const ColourBasis basis = colourBasis(p);
+        if (cancel_.load()) return INFINITY;
+        // Where only some exposures are free, the free one is held at its best so far: the
+        // colours and the exposure are then a product only in the free shots.
+        std::vector<std::optional<double>> exposures;
+        for (const Shot& s : shots_)
+            exposures.push_back(s.photo.exposure ? std::optional<double>(*s.photo.exposure)
+                                : allFree_        ? std::nullopt
+                                                  : std::optional<double>(result_.exposure));
+        std::vector<const ImageStats*> photos;
+        for (const ImageStats& s : photoStats_) photos.push_back(&s);
+        for (int solve = 0; solve < kColourSolves; ++solve) {
+            const std::vector<Image> reference = mixture(basis, p);
+            std::vector<LinearStats> stats(shots_.size());
+            for (size_t i = 0; i < shots_.size(); ++i) {
+                for (size_t k = 0; k < 3; ++k) stats[i].blockMeans[k] = blockMeans(basis[i][k]);
+                const std::optional<ThreadGrid> grid = renderGrid(p, i);
+                if (!grid) continue;
+                foldPhoto(i, grid->period);
+                const std::vector<TileFold> folds =
+                    foldsLaidOn(photoStats_[i].fold, reference[i], {&basis[i][0], &basis[i][1], &basis[i][2]}, *grid);
+                std::copy(folds.begin(), folds.end(), stats[i].folds.begin());
+            }
+            const LinearColours c = solveColours(photos, stats, exposures);
+            if (!c.valid) break;
+            const Axis& axis = fullAxes()[0];
+            p.weft_color = glm::vec3(glm::clamp(c.weft, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
+            p.warp_color = glm::vec3(glm::clamp(c.warp, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
+        }
+        return evaluate(p, mixture(basis, p), true);
+    }
+
+    // Stage 4: BOBYQA over the shape from the best so far, the colours solved at each point,
+    // again from where it stopped while that gains (it stops where its trust region shrinks,
+    // often short of the minimum), until the budget is spent. `shotRs`: the shot material's rs,
+    // held where an exposure is free. Returns the points it tried.
+    int refine(float shotRs) {
         stage_ = "gloss, widths, bump";
-        int renders = 0;
+        const std::vector<size_t> axes = shapeAxes();
+        int points = 0;
         for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
             before = result_.loss;
-            const WovenParams base = rescaled(result_.params);
-            std::vector<double> x = encode(base);
-            const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, base)); };
-            renders += minimise(x, objective, 0);
+            WovenParams base = result_.params;
+            if (anyFree_) base.rs = shotRs;
+            const std::vector<double> full = encode(base);
+            std::vector<double> x;
+            for (size_t a : axes) x.push_back(full[a]);
+            const Objective objective = [&](const std::vector<double>& v) {
+                std::vector<double> y = full;
+                for (size_t k = 0; k < axes.size(); ++k) y[axes[k]] = v[k];
+                return evaluateSolvingColours(decode(y, base));
+            };
+            points += minimise(x, objective, 0);
         }
-        return renders;
+        return points;
     }
 
     void measureThreads() {
@@ -516,6 +630,8 @@ private:
     std::vector<std::optional<ThreadGrid>> photoGrids_;        // per shot, where its tile fold is read
     std::string stage_;
     FitResult result_;
+    bool anyFree_ = false, allFree_ = true;  // of the shots' exposures
+    bool whiteLight_ = true;                 // every shot makes its colour basis in one render
 };
 
 }  // namespace

@@ -3,12 +3,14 @@
 // photos' statistics. In stages, each starting from the last one's best:
 //   1. thread counts from the photo's spectrum (power_spectrum.h): the peak of each thread
 //      direction, which the shot's camera turns into threads per UV unit (Shot::uvPerPixel);
-//   2. the weave: each of weaveCandidates() with its yarn colours fitted (by NLopt, on renders
-//      that are linear in the colours: a render with white weft, one with white warp and one
-//      with both black, which direct light from point lights makes exact), the best kept;
+//   2. the weave: each of weaveCandidates() with its yarn colours fitted (by NLopt, on mixtures
+//      of renders whose mixtures are exact for any colours under direct light from point lights:
+//      one render with the weft red and the warp green under white light, else three), the best
+//      kept;
 //   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
-//   4. colours, gloss (ex, ey, rs), yarn widths and bump (cy) by NLopt's BOBYQA on full renders,
-//      until the time budget is spent.
+//   4. gloss (ex, ey, and rs where no exposure is free), yarn widths and bump (cy) by NLopt's
+//      BOBYQA, the colours and a free exposure solved in closed form at each point from the same
+//      mixtures (linear_colours.h), until the time budget is spent.
 // The best parameters met are kept throughout: a cancelled or timed-out fit returns them.
 #include <atomic>
 #include <functional>

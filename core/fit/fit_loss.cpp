@@ -8,19 +8,13 @@ namespace woven {
 
 namespace {
 
-// Mean of ((render - photo) / scale of the photo's channel)^2, for values laid out with the
+// Mean of ((render - photo) / the photo's channel mean)^2, for values laid out with the
 // channel varying as (index / stride) % 3.
 double colourError(const std::vector<float>& photo, const std::vector<float>& render, size_t stride) {
-    std::array<double, 3> mean{};
-    std::array<double, 3> n{};
-    for (size_t i = 0; i < photo.size(); ++i) {
-        mean[(i / stride) % 3] += photo[i];
-        n[(i / stride) % 3] += 1.0;
-    }
-    for (int c = 0; c < 3; ++c) mean[size_t(c)] = std::max(mean[size_t(c)] / std::max(n[size_t(c)], 1.0), 1e-4);
+    const glm::dvec3 mean = channelMeans(photo, stride);
     double e = 0.0;
     for (size_t i = 0; i < photo.size(); ++i) {
-        const double d = (double(render[i]) - photo[i]) / mean[(i / stride) % 3];
+        const double d = (double(render[i]) - photo[i]) / mean[int((i / stride) % 3)];
         e += d * d;
     }
     return e / double(std::max<size_t>(photo.size(), 1));
@@ -51,6 +45,15 @@ double relativeError(const std::vector<float>& photo, const std::vector<float>& 
 }
 
 }  // namespace
+
+glm::dvec3 channelMeans(const std::vector<float>& values, size_t stride) {
+    glm::dvec3 mean(0.0), n(0.0);
+    for (size_t i = 0; i < values.size(); ++i) {
+        mean[int((i / stride) % 3)] += values[i];
+        n[int((i / stride) % 3)] += 1.0;
+    }
+    return glm::max(mean / glm::max(n, glm::dvec3(1.0)), glm::dvec3(1e-4));
+}
 
 const std::array<double, kStatGroupCount>& lossWeights() {
     // The spectrum's log error is larger by nature (a factor of 2 in power is 0.09); at half the

@@ -146,46 +146,14 @@ FoldShift alignFolds(const TileFold& photo, const TileFold& render) {
     return best;
 }
 
-// The photo fold's mean of each channel, over the bins it fills.
-glm::dvec3 foldChannelMeans(const TileFold& photo) {
-    glm::dvec3 sum(0.0);
-    double total = 0.0;
-    for (size_t b = 0; b < photo.mean.size(); ++b) {
-        sum += double(photo.weight[b]) * glm::dvec3(photo.mean[b]);
-        total += photo.weight[b];
-    }
-    return glm::max(sum / std::max(total, 1e-30), glm::dvec3(1e-4));
-}
-
-}  // namespace
-
-glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, int height, const glm::dvec2& f) {
-    const double length = glm::length(f);
-    if (!(length > 0.0) || values.size() != size_t(width) * size_t(height)) return f;
-    double scale = 1.0, angle = 0.0;
-    auto frequency = [&](double s, double a) {
-        const double c = std::cos(a), sn = std::sin(a);
-        return s * glm::dvec2(c * f.x - sn * f.y, sn * f.x + c * f.y);
-    };
-    // Length and direction in turn: each barely moves the other's optimum.
-    for (int pass = 0; pass < 2; ++pass) {
-        scale = maximise([&](double s) { return profileVariance(values, width, height, frequency(s, angle)); }, 0.97,
-                         1.03, 30);
-        const double halfAngle = 1.5 * M_PI / 180.0;
-        angle = maximise([&](double a) { return profileVariance(values, width, height, frequency(scale, a)); },
-                         -halfAngle, halfAngle, 15);
-    }
-    return frequency(scale, angle);
-}
-
-TileFold foldTile(const Image& image, const ThreadGrid& grid) {
+// The fold of `image` with its origin at `phase` (threads along U and V).
+TileFold foldAtPhase(const Image& image, const ThreadGrid& grid, const glm::dvec2& phase) {
     TileFold fold;
     if (image.pixels.empty() || grid.period < 1) return fold;
     fold.side = kFoldBinsPerThread * grid.period;
     const size_t bins = size_t(fold.side) * size_t(fold.side);
     std::vector<glm::dvec3> sum(bins, glm::dvec3(0.0));
     std::vector<double> weight(bins, 0.0);
-    const glm::dvec2 phase = foldPhase(image, grid);
     const double phaseU = phase.x, phaseV = phase.y;
 
     const double period = grid.period;
@@ -218,6 +186,60 @@ TileFold foldTile(const Image& image, const ThreadGrid& grid) {
         fold.mean[b] = weight[b] > 0.0 ? glm::vec3(sum[b] / weight[b]) : glm::vec3(0.0f);
     }
     return fold;
+}
+
+}  // namespace
+
+glm::dvec3 foldChannelMeans(const TileFold& photo) {
+    glm::dvec3 sum(0.0);
+    double total = 0.0;
+    for (size_t b = 0; b < photo.mean.size(); ++b) {
+        sum += double(photo.weight[b]) * glm::dvec3(photo.mean[b]);
+        total += photo.weight[b];
+    }
+    return glm::max(sum / std::max(total, 1e-30), glm::dvec3(1e-4));
+}
+
+glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, int height, const glm::dvec2& f) {
+    const double length = glm::length(f);
+    if (!(length > 0.0) || values.size() != size_t(width) * size_t(height)) return f;
+    double scale = 1.0, angle = 0.0;
+    auto frequency = [&](double s, double a) {
+        const double c = std::cos(a), sn = std::sin(a);
+        return s * glm::dvec2(c * f.x - sn * f.y, sn * f.x + c * f.y);
+    };
+    // Length and direction in turn: each barely moves the other's optimum.
+    for (int pass = 0; pass < 2; ++pass) {
+        scale = maximise([&](double s) { return profileVariance(values, width, height, frequency(s, angle)); }, 0.97,
+                         1.03, 30);
+        const double halfAngle = 1.5 * M_PI / 180.0;
+        angle = maximise([&](double a) { return profileVariance(values, width, height, frequency(scale, a)); },
+                         -halfAngle, halfAngle, 15);
+    }
+    return frequency(scale, angle);
+}
+
+TileFold foldTile(const Image& image, const ThreadGrid& grid) {
+    return image.pixels.empty() ? TileFold{} : foldAtPhase(image, grid, foldPhase(image, grid));
+}
+
+std::vector<TileFold> foldsLaidOn(const TileFold& photo, const Image& reference, const std::vector<const Image*>& images,
+                                  const ThreadGrid& grid) {
+    const glm::dvec2 phase = foldPhase(reference, grid);
+    const FoldShift shift = alignFolds(photo, foldAtPhase(reference, grid, phase));
+    std::vector<TileFold> folds;
+    for (const Image* image : images) {
+        const TileFold f = foldAtPhase(*image, grid, phase);
+        TileFold laid = f;
+        for (int v = 0; v < f.side; ++v)
+            for (int u = 0; u < f.side; ++u) {
+                const size_t b = size_t(v) * size_t(f.side) + size_t(u), from = shiftedBin(f, u, v, shift);
+                laid.mean[b] = f.mean[from];
+                laid.weight[b] = f.weight[from];
+            }
+        folds.push_back(std::move(laid));
+    }
+    return folds;
 }
 
 double foldError(const TileFold& photo, const TileFold& render) {

@@ -27,6 +27,16 @@ struct TileFold {
 
 TileFold foldTile(const Image& image, const ThreadGrid& grid);
 
+// The folds of `images` at the phase of `reference`'s fold, each bin moved by the shift that
+// foldError() lays `reference`'s fold on `photo`'s with, so that bin b of each pairs with the
+// photo's bin b. At one phase and shift a fold is linear in the image: for renders that sum to
+// `reference` (a render's parts linear in the yarn colours) the folds sum to its fold.
+std::vector<TileFold> foldsLaidOn(const TileFold& photo, const Image& reference, const std::vector<const Image*>& images,
+                                  const ThreadGrid& grid);
+
+// The mean of each channel over the bins a fold fills: the scale of foldError()'s differences.
+glm::dvec3 foldChannelMeans(const TileFold& photo);
+
 // The frequency near `f` (cycles per pixel, x and y) at which the luminance `values` (width x
 // height) folded on one thread is sharpest: the largest variance of its mean profile across the
 // thread, searched over the frequency's length within 3 % and its direction within 1.5 degrees.

@@ -74,6 +74,20 @@ protected:
         EXPECT_NEAR(r.params.repeat.y / truth.repeat.y, 1.0, 0.03);
     }
 
+    // Each yarn's colour within 5 % per channel, as the fitted colour times the fitted exposure
+    // over the photo's: a free exposure scales the render as the colours do, so a photo shows
+    // only their product.
+    static void expectColours(const FitResult& r, const WovenParams& truth, float exposure) {
+        const glm::vec3 weft = r.params.weft_color * float(r.exposure) / exposure;
+        const glm::vec3 warp = r.params.warp_color * float(r.exposure) / exposure;
+        std::cerr << "fit: weft x exposure (" << weft.r << ", " << weft.g << ", " << weft.b << "), warp x exposure ("
+                  << warp.r << ", " << warp.g << ", " << warp.b << ")\n";
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(weft[c] / truth.weft_color[c], 1.0, 0.05) << "weft channel " << c;
+            EXPECT_NEAR(warp[c] / truth.warp_color[c], 1.0, 0.05) << "warp channel " << c;
+        }
+    }
+
     // The thread counts are the fit's first stage; this budget ends the fit inside the weave
     // search.
     static double seconds() { return 2.0; }
@@ -85,16 +99,17 @@ protected:
     // shortlist of a weave and its complement, each refined over 50 renders (stage 2), and the
     // thread counts' calibration; 8 samples a pixel, as at 2 to 4 the renders' own noise raises
     // their spectrum above the photo's and the truth's loss above a wrong fit's.
-    void expectWeave(glm::ivec3 pattern, float exposure = 0.5f) {
+    FitResult expectWeave(glm::ivec3 pattern, float exposure = 0.5f, int renders = 115) {
         RigPhoto photo;
         photo.truth = cloth(pattern);
         photo.noise = 0.03f;
         photo.vignetteSigmaPx = 150.0f;
         photo.exposure = exposure;
         photo.exposureKnown = false;
-        const FitResult r = fit(photo, 600.0, 115, 8);
+        FitResult r = fit(photo, 600.0, renders, 8);
         EXPECT_EQ(r.params.pattern, pattern) << "fitted " << describeWeave(r.params.pattern);
         expectThreadCounts(r, photo.truth);
+        return r;
     }
 
     // The truth's tile fold against the photo's (tile_fold.h): the photo folded on its measured
@@ -151,7 +166,11 @@ TEST_F(RoundTrip, SatinThreadCountsWithNoiseVignetteAndUnknownExposure) {
     expectThreadCounts(fit(photo, seconds()), photo.truth);
 }
 
-TEST_F(RoundTrip, PlainWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({1, 1, 1}); }
+// The plain weave's colours too, with 250 renders: stage 4 then has some 135 (docs/FIT.md). The
+// twill's and the satin's are not yet within 5 % (docs/FIT.md, "What is left").
+TEST_F(RoundTrip, PlainWeaveClassAndColoursWithNoiseVignetteAndUnknownExposure) {
+    expectColours(expectWeave({1, 1, 1}, 0.5f, 250), cloth({1, 1, 1}), 0.5f);
+}
 TEST_F(RoundTrip, TwillWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({1, 3, 1}); }
 TEST_F(RoundTrip, SatinWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({4, 1, 2}); }
 TEST_F(RoundTrip, SatinWeaveClassFromAPhotoHalfClipped) { expectWeave({4, 1, 2}, 1.6f); }
