@@ -1,6 +1,7 @@
 #pragma once
 // The BSDF at a hit as the integrators use it: any of woven's lobes in its shading frame. A
 // value type (a variant, no allocation per hit), so a path keeps its vertices' BSDFs by value.
+#include <utility>
 #include <variant>
 
 #include "filtered_weave_lobe.h"
@@ -16,6 +17,10 @@ public:
     Bxdf(const GltfBxdf& lobe) : lobe_(lobe) {}
     Bxdf(const FilteredWeaveLobe& lobe) : lobe_(lobe) {}
     Bxdf(const TransmittingYarn& lobe) : lobe_(lobe) {}
+    // A lobe of type L built in place from its constructor's arguments (FramedLobe's in-place
+    // constructor), not copied in.
+    template <class L, class... Args>
+    explicit Bxdf(std::in_place_type_t<L> type, Args&&... args) : lobe_(type, std::forward<Args>(args)...) {}
 
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
         return std::visit([&](const auto& l) { return l.eval(wo, wi); }, lobe_);

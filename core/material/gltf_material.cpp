@@ -136,7 +136,8 @@ std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& w
         if (clearcoatNormalTexture_) coat = keepReflectionAbove(ng, wo, side * normalMapped(clearcoatNormalTexture_, hit));
         in.clearcoatNormal = frame.toLocal(coat);
     }
-    return Bsdf(frame, Bxdf(GltfBxdf(in)));
+    // Built where it is returned: a copy of the BSDF costs about what its lobe's constructor does.
+    return std::optional<Bsdf>(std::in_place, frame, std::in_place, std::in_place_type<GltfBxdf>, in);
 }
 
 bool GltfMaterial::mayPassThrough(const Mesh& mesh) const { return baseColor_.mayPassThrough(mesh); }

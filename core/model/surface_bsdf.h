@@ -4,6 +4,7 @@
 // Ashikhmin-Shirley lobe per yarn point (SurfaceBsdf), and the renderer's Bsdf over every kind
 // of lobe (core/bsdf/bsdf.h).
 #include <optional>
+#include <utility>
 
 #include "ashikhmin_shirley.h"
 #include "frame.h"
@@ -14,6 +15,10 @@ template <class Lobe>
 class FramedLobe {
 public:
     FramedLobe(const Frame& frame, const Lobe& lobe) : frame_(frame), lobe_(lobe) {}
+    // The lobe built in place from its constructor's arguments, not copied in: the renderer
+    // builds a BSDF at every path vertex.
+    template <class... Args>
+    FramedLobe(const Frame& frame, std::in_place_t, Args&&... args) : frame_(frame), lobe_(std::forward<Args>(args)...) {}
 
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const {
         return lobe_.eval(frame_.toLocal(wo), frame_.toLocal(wi));
