@@ -5,6 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace woven {
 
 namespace {
@@ -21,22 +24,34 @@ AdaptiveSampling::AdaptiveSampling(int width, int height, double threshold)
 }
 
 void AdaptiveSampling::addPass(const std::vector<glm::vec3>& values) {
-    for (size_t i = 0; i < active_.size(); ++i) {
-        if (!active_[i]) continue;
-        const glm::vec3 delta = values[i] - mean_[i];
-        mean_[i] += delta / float(++count_[i]);
-        m2_[i] += delta * (values[i] - mean_[i]);
-        variance_[i] = relativeVariance(i);
-    }
+    // Each pixel's figures are its own, and stopping a pixel changes no variance, so the rows may
+    // go in any order on any thread (the calling arena's) and decide the same.
+    const auto eachRow = [&](auto&& f) {
+        tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
+            for (int y = rows.begin(); y != rows.end(); ++y) f(y);
+        });
+    };
+    eachRow([&](int y) {
+        for (size_t i = size_t(y) * width_, end = i + size_t(width_); i < end; ++i) {
+            if (!active_[i]) continue;
+            const glm::vec3 delta = values[i] - mean_[i];
+            mean_[i] += delta / float(++count_[i]);
+            m2_[i] += delta * (values[i] - mean_[i]);
+            variance_[i] = relativeVariance(i);
+        }
+    });
     if (++passes_ < kMinSamples) return;
-    // Stopping a pixel changes no variance, so the order of these decisions does not matter.
-    for (int y = 0; y < height_; ++y)
+    std::vector<uint8_t> stops(active_.size(), 0);
+    eachRow([&](int y) {
         for (int x = 0; x < width_; ++x) {
             const size_t i = size_t(y) * width_ + x;
-            if (active_[i] && relativeError(x, y) < threshold_) {
-                active_[i] = 0;
-                --activeCount_;
-            }
+            stops[i] = active_[i] && relativeError(x, y) < threshold_;
+        }
+    });
+    for (size_t i = 0; i < active_.size(); ++i)
+        if (stops[i]) {
+            active_[i] = 0;
+            --activeCount_;
         }
 }
 

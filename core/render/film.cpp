@@ -1,5 +1,8 @@
 #include "film.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace woven {
@@ -22,19 +25,22 @@ Film::Film(int width, int height)
 
 void Film::addPass(const PassImage& pass) {
     const std::vector<glm::vec3> estimate = pass.combined();
-    for (size_t i = 0; i < count_.size(); ++i) {
-        if (!pass.samples(i)) continue;
-        PassSums& p = passSums_[i];
-        const FirstHit& hit = pass.firstHits[i];
-        for (int c = 0; c < 3; ++c) {
-            sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
-            p.albedo[c].add(hit.albedo[c]);
-            p.normal[c].add(hit.normal[c]);
-            p.square[c].add(estimate[i][c] * estimate[i][c]);
+    // Each pixel's sums are its own: any order, any thread (the calling arena's), the same sums.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count_.size(), 4096), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            if (!pass.samples(i)) continue;
+            PassSums& p = passSums_[i];
+            const FirstHit& hit = pass.firstHits[i];
+            for (int c = 0; c < 3; ++c) {
+                sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
+                p.albedo[c].add(hit.albedo[c]);
+                p.normal[c].add(hit.normal[c]);
+                p.square[c].add(estimate[i][c] * estimate[i][c]);
+            }
+            p.depth.add(hit.depth);
+            count_[i] += 1.0f;
         }
-        p.depth.add(hit.depth);
-        count_[i] += 1.0f;
-    }
+    });
     pass.forEachSplat([&](size_t i, const glm::vec3& L) {
         for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(L[c]);
     });

@@ -231,9 +231,9 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
     RenderProgress progress;
     progress.samplesTotal = im.settings.spp;
     uint64_t samples = 0;
+    PassImage pass;  // one for all passes, so that its buffers are not allocated again each pass
     for (int done = 0; done < im.settings.spp; ++done) {
         const Clock::time_point passStart = Clock::now();
-        PassImage pass;
         const uint64_t sampleIndex = uint64_t(im.settings.firstSample) + uint64_t(im.film.passes());
         const size_t sampled = adaptive ? adaptive->activeCount() : pixels;
         if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.sampler, im.settings.seed, sampleIndex,
@@ -242,9 +242,9 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
             return;  // the unfinished pass is dropped: the film holds whole passes only
         {
             std::lock_guard<std::mutex> lock(im.filmMutex);
-            im.film.addPass(pass);
+            im.arena.execute([&] { im.film.addPass(pass); });  // on the render's threads
         }
-        if (adaptive) adaptive->addPass(pass.combined());
+        if (adaptive) im.arena.execute([&] { adaptive->addPass(pass.combined()); });
         samples += sampled;
         const double renderSeconds = std::max(secondsSince(renderStart), 1e-9);
         progress.samplesDone = done + 1;
