@@ -163,10 +163,10 @@ std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2&
     // The lobes' intervals of uc end at the running sums of their probabilities, which rounding
     // can leave a hair under 1: a uc past the last of them belongs to the last lobe that can be
     // chosen, not to the clearcoat's branch whatever its probability (an inactive coat then
-    // gave directions pdf() does not count).
+    // gave directions pdf() does not count). Only such a uc pays for nextafter()'s call.
     const float toReflectedCosine = c.specular + c.transmission + c.diffuse + c.sheen;
     const float toCosine = toReflectedCosine + c.diffuseTransmission;
-    uc = std::min(uc, std::nextafter(toCosine + c.clearcoat, 0.0f));
+    if (uc >= toCosine + c.clearcoat) uc = std::nextafter(toCosine + c.clearcoat, 0.0f);
     glm::vec3 wi;
     if (uc < c.specular + c.transmission) {
         const glm::vec3 h = ggx_.sampleVisibleNormal(wo, u);
