@@ -81,6 +81,7 @@ struct Axis {
 // Stage 4's parameters: weft and warp colour, rs, ex and ey (the warp's following the weft's:
 // one photo under one light cannot tell them apart), both widths and cy.
 constexpr int kColourAxes = 6;
+constexpr size_t kRsAxis = kColourAxes;  // the shape's axes follow: ex, ey, the widths, cy
 const std::vector<Axis>& fullAxes() {
     static const std::vector<Axis> axes{
         {0.002, 1.0, false}, {0.002, 1.0, false}, {0.002, 1.0, false},  // weft_color
@@ -532,7 +533,7 @@ private:
         const float k = 0.5f / brightest;
         p.weft_color *= k;
         p.warp_color *= k;
-        p.rs = float(fullAxes()[6].value(fullAxes()[6].unit(double(p.rs * k))));
+        p.rs = float(fullAxes()[kRsAxis].value(fullAxes()[kRsAxis].unit(double(p.rs * k))));
         return p;
     }
 
@@ -540,8 +541,9 @@ private:
     // each point. rs too where no exposure is free; a free exposure scales the gloss as it does
     // the colours (a photo shows only exposure x rs), so rs is held there.
     std::vector<size_t> shapeAxes() const {
-        if (anyFree_) return {7, 8, 9, 10, 11};
-        return {6, 7, 8, 9, 10, 11};
+        std::vector<size_t> axes;
+        for (size_t a = anyFree_ ? kRsAxis + 1 : kRsAxis; a < fullAxes().size(); ++a) axes.push_back(a);
+        return axes;
     }
 
     // The loss of p's shape with the colours (and a free exposure) that match the photos' block
