@@ -180,6 +180,12 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
                                         " has no render passes (an older woven wrote it) and " +
                                         (part.passSums.empty() ? inputs.front() : path) +
                                         " has: parts of one frame come from one version");
+        if (parts.empty()) sum.lacksDirectPass = part.lacksDirectPass;
+        else if (!part.passSums.empty() && part.lacksDirectPass != sum.lacksDirectPass)
+            throw std::invalid_argument((part.lacksDirectPass ? path : inputs.front()) +
+                                        " has no direct-light pass (an older woven wrote it) and " +
+                                        (part.lacksDirectPass ? inputs.front() : path) +
+                                        " has: parts of one frame come from one version");
         for (size_t i = 0; i < sum.passSums.size(); ++i) sum.passSums[i] += part.passSums[i];
         parts.push_back({path, *part.samples, part.frame});
     }

@@ -40,7 +40,7 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
     command.add_flag("--denoise,!--no-denoise", o.denoise,
-                     "denoise the final frame, guided by its albedo, normal and depth passes (the EXR keeps the "
+                     "denoise the final frame, guided by its albedo, normal, depth and direct-light passes (the EXR keeps the "
                      "noisy beauty as noisy.R/G/B; default: on; --no-denoise: the beauty as rendered)");
     command.add_flag("--allow-any-path", o.load.anyPath,
                      "let a glTF file's buffers and images come from anywhere, not only from its own folder");

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     pass.radiance = film.radiance.pixels;
     const RenderPasses passes = film.passes();
     for (size_t i = 0; i < pass.radiance.size(); ++i)
-        pass.firstHits.push_back({passes.albedo.pixels[i], passes.normal.pixels[i], passes.depth[i]});
+        pass.firstHits.push_back({passes.albedo.pixels[i], passes.normal.pixels[i], passes.depth[i], passes.direct.pixels[i]});
     pass.tileSplats.assign(1, {});
     Film bench(width, height);
     start = Clock::now();

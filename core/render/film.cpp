@@ -35,6 +35,7 @@ void Film::addPass(const PassImage& pass) {
                 sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
                 p.albedo[c].add(hit.albedo[c]);
                 p.normal[c].add(hit.normal[c]);
+                p.direct[c].add(hit.direct[c]);
                 p.square[c].add(estimate[i][c] * estimate[i][c]);
             }
             p.depth.add(hit.depth);

@@ -35,9 +35,11 @@ struct ExactGroup {
     const char* channels;
 };
 constexpr ExactGroup kExactGroups[] = {
-    {"radiance", "RGB"}, {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"square", "RGB"},
+    {"radiance", "RGB"}, {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"square", "RGB"}, {"direct", "RGB"},
 };
 constexpr int kRadianceGroup = 0;
+// Frames of versions before the direct-light pass lack its group; they are read with it 0.
+constexpr int kDirectGroup = 5;
 
 std::string exactChannelName(const ExactGroup& g, int word, int c) {
     return std::string("exact.") + g.name + std::to_string(word) + "." + g.channels[c];
@@ -51,7 +53,8 @@ auto& exactSum(Frame& exr, int g, size_t i, int c) {
         case 1: return exr.passSums[i].albedo[c];
         case 2: return exr.passSums[i].normal[c];
         case 3: return exr.passSums[i].depth;
-        default: return exr.passSums[i].square[c];
+        case 4: return exr.passSums[i].square[c];
+        default: return exr.passSums[i].direct[c];
     }
 }
 
@@ -60,14 +63,16 @@ struct PassLayer {
     const char* name;
     const char* channels;
 };
-constexpr PassLayer kPassLayers[] = {{"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"variance", "RGB"}};
+constexpr PassLayer kPassLayers[] = {
+    {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"variance", "RGB"}, {"direct", "RGB"}};
 
 float passValue(const RenderPasses& p, int layer, size_t i, int c) {
     switch (layer) {
         case 0: return p.albedo.pixels[i][c];
         case 1: return p.normal.pixels[i][c];
         case 2: return p.depth[i];
-        default: return p.variance.pixels[i][c];
+        case 3: return p.variance.pixels[i][c];
+        default: return p.direct.pixels[i][c];
     }
 }
 
@@ -229,6 +234,7 @@ ExrImage readExr(const std::string& path) {
 
     // The exact sums: each group all there or not at all; the passes' only with the radiance's.
     std::vector<int> words[std::size(kExactGroups)];
+    bool groupFound[std::size(kExactGroups)] = {};
     int groupsFound = 0;
     for (size_t g = 0; g < std::size(kExactGroups); ++g) {
         const ExactGroup& group = kExactGroups[g];
@@ -240,18 +246,25 @@ ExrImage readExr(const std::string& path) {
             fail(path, std::string("some of the exact-sum channels exact.") + group.name + "0." + group.channels[0] + "-exact." +
                            group.name + std::to_string(ExactSum::kFloatWords - 1) + "." + group.channels[channels - 1] +
                            " are missing");
+        groupFound[g] = found != 0;
         if (found != 0) ++groupsFound;
     }
     const bool exactRadiance = !words[kRadianceGroup].empty() && words[kRadianceGroup].front() >= 0;
     if (exactRadiance && oldFound != 0) fail(path, "has both the exact sums exact.radiance* and the older sum.R0-sum.B3");
-    if (groupsFound != 0 && groupsFound != 1 && groupsFound != int(std::size(kExactGroups)))
+    const int passGroupsFound = groupsFound - int(groupFound[kRadianceGroup]);
+    const int passGroupsNeeded = int(std::size(kExactGroups)) - 1 - int(!groupFound[kDirectGroup]);
+    if (passGroupsFound != 0 && passGroupsFound != passGroupsNeeded)
         fail(path, "has the exact sums of some render passes but not of all (exact.albedo*, exact.normal*, exact.depth*, "
                    "exact.square*)");
     if (groupsFound != 0 && !exactRadiance) fail(path, "has the render passes' exact sums without the radiance's (exact.radiance*)");
     if (groupsFound != 0) {
         result.sampleSums.resize(3 * count);
-        if (groupsFound > 1) result.passSums.resize(count);
-        for (int g = 0; g < groupsFound; ++g) {
+        if (groupsFound > 1) {
+            result.passSums.resize(count);
+            result.lacksDirectPass = !groupFound[kDirectGroup];
+        }
+        for (int g = 0; g < int(std::size(kExactGroups)); ++g) {
+            if (!groupFound[g]) continue;
             const ExactGroup& group = kExactGroups[g];
             const int channels = int(std::strlen(group.channels));
             for (size_t i = 0; i < count; ++i)
@@ -303,11 +316,14 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     for (const char* c : {"R", "G", "B"}) channel(c, colour);
     if (exr.noisy)
         for (const char* c : {"R", "G", "B"}) channel(std::string("noisy.") + c, colour);
+    // The direct-light pass is last among the layers and the exact groups: a file of an older
+    // woven, read and written again, goes without it.
+    const int passLayers = int(std::size(kPassLayers)) - int(exr.lacksDirectPass);
     if (passes)
-        for (const PassLayer& layer : kPassLayers)
-            for (const char* c = layer.channels; *c; ++c) channel(std::string(layer.name) + "." + *c, colour);
+        for (int l = 0; l < passLayers; ++l)
+            for (const char* c = kPassLayers[l].channels; *c; ++c) channel(std::string(kPassLayers[l].name) + "." + *c, colour);
     if (!exr.sampleCount.empty()) channel(kCountChannel, OIIO::TypeDesc::FLOAT);
-    const int exactGroups = passes ? int(std::size(kExactGroups)) : exr.sampleSums.empty() ? 0 : 1;
+    const int exactGroups = passes ? int(std::size(kExactGroups)) - int(exr.lacksDirectPass) : exr.sampleSums.empty() ? 0 : 1;
     for (int g = 0; g < exactGroups; ++g)
         for (int w = 0; w < ExactSum::kFloatWords; ++w)
             for (int c = 0; c < int(std::strlen(kExactGroups[g].channels)); ++c)
@@ -346,7 +362,7 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         if (exr.noisy)
             for (int c = 0; c < 3; ++c) put(exr.noisy->pixels[i][c], colour);
         if (passes)
-            for (int l = 0; l < int(std::size(kPassLayers)); ++l)
+            for (int l = 0; l < passLayers; ++l)
                 for (int c = 0; c < int(std::strlen(kPassLayers[l].channels)); ++c) put(passValue(*passes, l, i, c), colour);
         if (!exr.sampleCount.empty()) put(exr.sampleCount[i], OIIO::TypeDesc::FLOAT);
         for (int g = 0; g < exactGroups; ++g) {

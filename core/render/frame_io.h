@@ -27,6 +27,8 @@ struct ExrImage {
     std::optional<FrameIdentity> frame{};  // none in files of other tools and of woven before it
     std::vector<PassSums> passSums{};      // empty, or one per pixel: the render passes' exact sums
     std::optional<Image> noisy{};          // where `image` is denoised, the noisy beauty it was made from
+    // passSums' direct-light sums are 0: the file is of a woven before that pass (2026-12-04).
+    bool lacksDirectPass = false;
 
     RenderPasses passes() const { return meanPasses(image.width, image.height, sampleCount, sampleSums, passSums); }
 };
@@ -37,11 +39,12 @@ enum class ExrPrecision { Half, Float };
 // names: tests/app/exr_readers_test.cpp):
 //   R, G, B            the beauty (`image`, in `precision`), denoised where `noisy` is set;
 //   noisy.R/G/B        the noisy beauty, when set (`precision`);
-//   albedo.R/G/B, normal.X/Y/Z, depth.Z, variance.R/G/B
+//   albedo.R/G/B, normal.X/Y/Z, depth.Z, variance.R/G/B, direct.R/G/B
 //                      the render passes (RenderPasses, `precision`), when passSums is not empty;
 //   samples.N          the sample counts, when not empty (float, exact for counts below 2^24);
 //   exact.radianceK.R/G/B, exact.albedoK.R/G/B, exact.normalK.X/Y/Z, exact.depthK.Z,
-//   exact.squareK.R/G/B (K = 0..5)
+//   exact.squareK.R/G/B, exact.directK.R/G/B (K = 0..5; files of versions before the direct
+//   pass lack exact.direct* and are read with it 0)
 //                      the exact sums, each as ExactSum::floatWords() (whole numbers below 2^24,
 //                      float), K = 0 the least significant: the radiance's with sampleSums,
 //                      the passes' with passSums. Blender shows them as a second layer, "exact".

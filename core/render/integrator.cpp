@@ -10,11 +10,19 @@ void addFootprint(SurfaceHit& hit, const RenderScene& scene, const CameraModel& 
     setUvFootprint(hit, f.dpdx, f.dpdy);
 }
 
-FirstHit firstHitOf(const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye) {
+FirstHit firstHitOf(const RenderScene& scene, const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye) {
     FirstHit f;
     f.depth = glm::length(hit.p - eye);
     f.normal = bsdf ? bsdf->shadingNormal() : hit.ns;
-    if (bsdf) f.albedo = bsdf->albedo();
+    if (!bsdf) return f;
+    f.albedo = bsdf->albedo();
+    const glm::vec3 wo = (eye - hit.p) / f.depth;
+    for (const int index : scene.directPassLights()) {
+        // The same point of the light for every sample: a guide free of the lights' sampling noise.
+        const auto ls = scene.lights()[size_t(index)].sampleLi(hit.p, glm::vec2(0.5f));
+        if (!ls || !(ls->pdf > 0.0f) || !connects(hit, *bsdf, wo, ls->wi)) continue;
+        f.direct += bsdf->eval(wo, ls->wi) * ls->L * (std::abs(glm::dot(ls->wi, cosineNormal(*bsdf, wo, ls->wi))) / ls->pdf);
+    }
     return f;
 }
 

@@ -21,9 +21,14 @@ struct Splat {
 // a denoiser: the BSDF's albedo() (the weave's thread colours included), its shading normal (the
 // yarn bump included) and the distance from the camera. Woven's lobes have no delta (specular)
 // lobes, so the first hit is the first non-specular one. All zero where the ray hits nothing.
+// `direct` is the light that the scene's lights (RenderScene::directPassLights()) send the eye by
+// way of the hit, each taken from one fixed point of it and unshadowed: where threads are finer
+// than a pixel it follows which yarns a pixel's samples hit as the radiance does, without the
+// noise of sampling the lights, and the denoiser's regression fits to it (feature_regression.h).
 struct FirstHit {
     glm::vec3 albedo{0.0f}, normal{0.0f};
     float depth = 0.0f;
+    glm::vec3 direct{0.0f};
 };
 
 // Per-sample output besides the returned radiance. Owned by one tile, so no locking.
@@ -47,7 +52,7 @@ void addFootprint(SurfaceHit& hit, const RenderScene& scene, const CameraModel& 
 
 // The render passes' record of a camera ray from `eye` that first hit `hit`, with its BSDF there
 // (none: an emitter alone, albedo zero).
-FirstHit firstHitOf(const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye);
+FirstHit firstHitOf(const RenderScene& scene, const SurfaceHit& hit, const std::optional<Bsdf>& bsdf, const glm::vec3& eye);
 
 // Whether the BSDF at a hit may connect wo and wi. A reflecting BSDF only connects directions on
 // the same side of the geometric surface, which keeps shading normals from leaking light (Veach

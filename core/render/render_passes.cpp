@@ -10,6 +10,7 @@ PassSums& PassSums::operator+=(const PassSums& other) {
     for (int c = 0; c < 3; ++c) {
         albedo[c] += other.albedo[c];
         normal[c] += other.normal[c];
+        direct[c] += other.direct[c];
         square[c] += other.square[c];
     }
     depth += other.depth;
@@ -18,7 +19,9 @@ PassSums& PassSums::operator+=(const PassSums& other) {
 
 bool PassSums::operator==(const PassSums& other) const {
     for (int c = 0; c < 3; ++c)
-        if (albedo[c] != other.albedo[c] || normal[c] != other.normal[c] || square[c] != other.square[c]) return false;
+        if (albedo[c] != other.albedo[c] || normal[c] != other.normal[c] || direct[c] != other.direct[c] ||
+            square[c] != other.square[c])
+            return false;
     return depth == other.depth;
 }
 
@@ -28,7 +31,7 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
     if (count.size() != pixels || radianceSums.size() != 3 * pixels || sums.size() != pixels)
         throw std::invalid_argument("render passes: the sample counts, radiance sums and pass sums do not match the frame");
     RenderPasses p;
-    for (Image* image : {&p.albedo, &p.normal, &p.variance}) {
+    for (Image* image : {&p.albedo, &p.normal, &p.direct, &p.variance}) {
         image->width = width;
         image->height = height;
         image->pixels.resize(pixels);
@@ -40,6 +43,7 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
         glm::vec3 normal(0.0f);
         for (int c = 0; c < 3; ++c) {
             p.albedo.pixels[i][c] = s.albedo[c].mean(n);
+            p.direct.pixels[i][c] = s.direct[c].mean(n);
             normal[c] = s.normal[c].mean(n);
             if (n >= 2.0f) {
                 // (sum x^2 - (sum x)^2 / n) / (n - 1) is one sample's variance; the mean's is 1/n of it.

@@ -1,7 +1,7 @@
 #pragma once
 // The render passes (AOVs) of a final frame beside its radiance, what a denoiser is guided by and
 // compositors read: per pixel the mean over its camera samples of what their rays first hit
-// (integrator.h's FirstHit: albedo, shading normal, depth), and the variance of its mean
+// (integrator.h's FirstHit: albedo, shading normal, depth, direct light), and the variance of its mean
 // radiance. A film and a frame file keep them as exact sums (PassSums), as they keep the
 // radiance, so renders of disjoint sample ranges merge into the same passes bit for bit; the
 // passes are computed from those sums (meanPasses()).
@@ -13,7 +13,7 @@
 namespace woven {
 
 struct PassSums {
-    ExactSum albedo[3], normal[3], depth;
+    ExactSum albedo[3], normal[3], direct[3], depth;
     // Per channel, each pass's estimate of the pixel squared (its camera sample with the splats
     // that landed on it, PassImage::combined()): with the radiance sums, the sample variance.
     ExactSum square[3];
@@ -27,6 +27,7 @@ struct RenderPasses {
     Image albedo;               // the first hit's BSDF albedo; 0 where rays hit nothing
     Image normal;               // the mean shading normal, made unit length (0 where nothing was hit)
     std::vector<float> depth;   // the mean distance from the camera, misses counting 0
+    Image direct;               // the mean light from the lights straight by way of the first hit
     Image variance;             // per channel, the variance of the pixel's mean radiance (0 below 2 samples)
 };
 

@@ -137,6 +137,7 @@ struct RenderScene::Impl {
     RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;
 
     std::vector<Light> lights;
+    std::vector<int> directPassLights;
     std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
     int environment = -1;
     std::optional<PowerLightSampler> lightSampler;
@@ -327,6 +328,12 @@ void RenderScene::Impl::buildLights() {
         lights.push_back(Light::environment(env));
     }
     for (Light& light : lights) light.setSceneBounds(bounds);
+    // The direct-light pass's lights: the most powerful, each a BSDF evaluation per camera sample.
+    for (size_t i = 0; i < lights.size(); ++i)
+        if (int(i) != environment) directPassLights.push_back(int(i));
+    const auto brightness = [&](int i) { return luminance(lights[size_t(i)].power()); };
+    std::stable_sort(directPassLights.begin(), directPassLights.end(), [&](int a, int b) { return brightness(a) > brightness(b); });
+    if (directPassLights.size() > size_t(kDirectPassLights)) directPassLights.resize(size_t(kDirectPassLights));
     lightSampler.emplace(lights);
     lightTree.emplace(lights);
 }
@@ -520,6 +527,7 @@ glm::vec3 RenderScene::emitted(const SurfaceHit& hit, const glm::vec3& w) const 
 }
 
 const std::vector<Light>& RenderScene::lights() const { return impl_->lights; }
+const std::vector<int>& RenderScene::directPassLights() const { return impl_->directPassLights; }
 int RenderScene::environmentLight() const { return impl_->environment; }
 
 int RenderScene::sampleLight(float u, float* pmf) const {

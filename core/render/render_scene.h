@@ -45,6 +45,11 @@ public:
     glm::vec3 emitted(const SurfaceHit& hit, const glm::vec3& w) const;
 
     const std::vector<Light>& lights() const;
+    // The lights whose light the direct-light pass shows (integrator.h's FirstHit): those but the
+    // environment (whose light only noisy sampling finds), at most kDirectPassLights of them,
+    // the most powerful first.
+    static constexpr int kDirectPassLights = 4;
+    const std::vector<int>& directPassLights() const;
     int lightIndex(const SurfaceHit& hit) const;  // the area light of the hit triangle, or -1
     int environmentLight() const;                 // index of the environment light, or -1
     // Lights chosen by power alone (light_sampler.h), for samples taken from no point: BDPT's

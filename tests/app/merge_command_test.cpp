@@ -124,6 +124,41 @@ TEST_F(MergeCommand, PartsOfTheOlderLayoutMergeWithoutPasses) {
     EXPECT_FALSE(fs::exists(file("mixed.exr")));
 }
 
+// Parts of a woven before the direct-light pass (render passes without exact.direct*) merge with
+// each other into a frame without it; with parts that have it they are refused by name.
+TEST_F(MergeCommand, PartsWithoutTheDirectLightPassMergeWithEachOther) {
+    const std::string a = render("a.exr", 0, 2), b = render("b.exr", 2, 1);
+    ASSERT_FALSE(woven::readExr(a).lacksDirectPass);
+    for (const std::string& path : {a, b}) {
+        woven::ExrImage part = woven::readExr(path);
+        for (woven::PassSums& p : part.passSums)
+            for (woven::ExactSum& d : p.direct) d = woven::ExactSum();
+        part.lacksDirectPass = true;
+        woven::writeExr(file("old_" + fs::path(path).filename().string()), part, woven::ExrPrecision::Float);
+    }
+    const std::string oldA = file("old_a.exr"), oldB = file("old_b.exr");
+    {
+        const auto written = OIIO::ImageInput::open(oldA);
+        ASSERT_TRUE(written);
+        for (const std::string& name : written->spec().channelnames) EXPECT_EQ(name.find("direct"), std::string::npos) << name;
+    }
+    Result r = run("merge " + oldA + " " + oldB + " -o " + file("old.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const woven::ExrImage merged = woven::readExr(file("old.exr")), all = woven::readExr(render("all.exr", 0, 3));
+    EXPECT_TRUE(merged.lacksDirectPass);
+    EXPECT_EQ(merged.sampleSums, all.sampleSums);
+    ASSERT_EQ(merged.passSums.size(), all.passSums.size());
+    for (size_t i = 0; i < all.passSums.size(); ++i) {
+        ASSERT_EQ(merged.passSums[i].albedo[0], all.passSums[i].albedo[0]) << "pixel " << i;
+        ASSERT_EQ(merged.passSums[i].square[2], all.passSums[i].square[2]) << "pixel " << i;
+    }
+
+    r = run("merge " + a + " " + oldB + " -o " + file("mixed.exr"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.out, testing::HasSubstr(oldB + " has no direct-light pass (an older woven wrote it) and " + a + " has"));
+    EXPECT_FALSE(fs::exists(file("mixed.exr")));
+}
+
 TEST_F(MergeCommand, MissingSamplesAreNamedAndGoToThePartialFrame) {
     const std::string a = render("a.exr", 0, 2), c = render("c.exr", 5, 1);
     const Result r = run("merge " + a + " " + c + " --expect-samples 8 -o " + file("frame.exr"));

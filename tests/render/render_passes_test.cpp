@@ -2,7 +2,8 @@
 // at a known height under a grey sky. Depth is the distance along each pixel's ray to the plane,
 // the albedo shows the warp's and the weft's colours where each is on top, the normal leans with
 // the yarn bump, and the variance is the sample variance of the pixel's samples over their count,
-// each sample rendered on its own (a frame is a pure function of its sample range).
+// each sample rendered on its own (a frame is a pure function of its sample range); the direct
+// light is what a one-bounce render of the same samples finds where nothing casts a shadow.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -100,6 +101,38 @@ TEST(RenderPasses, VarianceIsTheSampleVarianceOfTheMean) {
             noisy += expected > 0.0;
         }
     EXPECT_GT(noisy, int(film.radiance.pixels.size()));  // most pixels' channels see noise
+}
+
+TEST(RenderPasses, DirectLightIsZeroWithTheEnvironmentAlone) {
+    // The environment's light is left out of the pass: only sampling finds it, with noise.
+    const RenderPasses passes = test::render(wovenPlane(), settings(0, 4)).passes();
+    for (const glm::vec3& d : passes.direct.pixels) EXPECT_EQ(d, glm::vec3(0.0f));
+}
+
+TEST(RenderPasses, DirectLightIsTheOneBounceLightOfAnUnshadowedPointLight) {
+    // Under one point light, the plane alone and the sky black, a one-bounce path tracer's sample
+    // is its next-event estimate at the first hit: the light's intensity over the squared distance
+    // times the BSDF and cosine there, what the pass sums. A pass that took another point of the
+    // pixel, missed the cosine or the distance, or added the environment would differ by far more
+    // than rounding (1e-4).
+    auto scene = wovenPlane();
+    scene->environment.color = glm::vec3(0.0f);
+    PunctualLight light;
+    light.position = glm::vec3(0.4f, -0.3f, 1.5f);
+    light.intensity = glm::vec3(3.0f, 2.0f, 1.0f);
+    scene->lights.push_back(light);
+    RenderSettings s = settings(0, 6);
+    s.maxDepth = 1;
+    const FilmImage film = test::render(scene, s);
+    const RenderPasses passes = film.passes();
+    int lit = 0;
+    for (size_t i = 0; i < film.radiance.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float beauty = film.radiance.pixels[i][c];
+            EXPECT_NEAR(passes.direct.pixels[i][c], beauty, 1e-4f * beauty + 1e-7f) << "pixel " << i << " channel " << c;
+            lit += beauty > 0.0f;
+        }
+    EXPECT_GT(lit, int(film.radiance.pixels.size()));
 }
 
 }  // namespace
