@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "frame_denoise.h"
 #include "render_job.h"
@@ -59,15 +60,23 @@ int main(int argc, char** argv) {
     job.run(cancel);
     const double render = secondsSince(renderStart);
     FilmImage film = job.snapshot();
-    double best = 1e30;
-    for (int r = 0; r < repeats; ++r) {
-        const auto start = std::chrono::steady_clock::now();
-        denoiseFilm(film);  // the passes' means included: what a render pays
-        best = std::min(best, secondsSince(start));
-    }
-    std::printf("| frame | spp | integrator | render (s) | denoise (s, best of %d) | denoise / render |\n|---|---:|---|---:|---:|---:|\n",
+    std::printf("| frame | spp | integrator | denoiser | render (s) | denoise (s, best of %d) | denoise / render |\n"
+                "|---|---:|---|---|---:|---:|---:|\n",
                 repeats);
-    std::printf("| %s %dx%d | %d | %s | %.2f | %.3f | %.1f %% |\n", scenePath.substr(scenePath.find_last_of('/') + 1).c_str(),
-                width, height, s.spp, job.integratorName().c_str(), render, best, 100.0 * best / render);
+    // The default, and the filters alone: what the regression on the direct light adds (a scene
+    // without the pass pays only the second).
+    DenoiseSettings filtersOnly;
+    filtersOnly.regression = false;
+    for (const auto& [name, settings] : {std::pair{"default", DenoiseSettings{}}, std::pair{"filters alone", filtersOnly}}) {
+        double best = 1e30;
+        for (int r = 0; r < repeats; ++r) {
+            const auto start = std::chrono::steady_clock::now();
+            denoiseFilm(film, settings);  // the passes' means included: what a render pays
+            best = std::min(best, secondsSince(start));
+        }
+        std::printf("| %s %dx%d | %d | %s | %s | %.2f | %.3f | %.1f %% |\n",
+                    scenePath.substr(scenePath.find_last_of('/') + 1).c_str(), width, height, s.spp,
+                    job.integratorName().c_str(), name, render, best, 100.0 * best / render);
+    }
     return 0;
 }

@@ -14,6 +14,7 @@ bool DenoiseBuffers::usable(size_t pixel) const {
     const glm::vec3& v = variance[pixel];
     return finite(color[pixel]) && finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f &&
            (albedo.empty() || finite(albedo[pixel])) && (normal.empty() || finite(normal[pixel])) &&
+           (direct.empty() || finite(direct[pixel])) &&
            (depth.empty() || !std::isnan(depth[pixel]));
 }
 
@@ -30,6 +31,7 @@ void checkDenoiseBuffers(const DenoiseBuffers& b) {
     check(b.albedo.size(), "albedo", true);
     check(b.normal.size(), "normal", true);
     check(b.depth.size(), "depth", true);
+    check(b.direct.size(), "direct-light", true);
 }
 
 }  // namespace woven

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -10,6 +11,7 @@
 
 #include "albedo_demodulation.h"
 #include "fast_math.h"
+#include "feature_regression.h"
 #include "padded_planes.h"
 #include "sure_selection.h"
 #include "vector_clones.h"
@@ -83,6 +85,12 @@ inline __attribute__((always_inline)) void accumulate(int count, const float* __
                    &sums.slope[size_t(c)][a]);
 }
 
+// w[i] = exp(-dist[i]), 0 for unusable neighbours: the regression's weights.
+inline __attribute__((always_inline)) void weights(int count, const float* __restrict dist, const float* __restrict usable,
+                                                   float* __restrict w) {
+    for (int i = 0; i < count; ++i) w[i] = usable[i] * fastExpInRange(-dist[i]);
+}
+
 // Each candidate filter's denoised frame and its per-pixel SURE, what sure_selection.h picks from.
 struct Candidates {
     std::vector<std::vector<glm::vec3>> color;
@@ -105,7 +113,11 @@ public:
         planes_.variance = planes(d.variance);
         planes_.divisor = planes(d.divisor);
         planes_.usable = PaddedPlanes(b.width, b.height, 1, pad_, [&](size_t i, int) { return b.usable(i) ? 1.0f : 0.0f; });
+        if (s.regression && FeatureRegression::applies(b)) regression_.emplace(b, d, pad_);
     }
+
+    // The candidates' count: the filters', and the regression's where the frame has its pass.
+    size_t candidates() const { return s_.candidateK.size() + (regression_ ? 1 : 0); }
 
     // Filters the pixels xa <= x < xb of rows y0 <= y < y1 with every candidate.
     void tile(int xa, int y0, int xb, int y1, Candidates& out) const;
@@ -116,6 +128,7 @@ private:
     int pad_;
     FeatureGuide guide_;
     Planes planes_;
+    std::optional<FeatureRegression> regression_;
 };
 
 WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates& out) const {
@@ -129,6 +142,9 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
     std::vector<float> distance(size_t(patchRows) * patchCols), horizontal(size_t(patchRows) * tw), patch(tw), features(tw),
         candidateDistance(tw);
     std::vector<CandidateSums> sums(candidates, CandidateSums(size_t(th) * tw));
+    std::optional<FeatureRegression::Sums> fitSums;
+    if (regression_) fitSums.emplace(size_t(th) * tw);
+    const float fitInverseK2 = 1.0f / (s_.regressionK * s_.regressionK);
     // Per channel over the patches' pixels, (u_p - u_q) / (eps + Var_p + Var_q): half the slope of
     // each pixel's term of D_c in u_p.
     std::array<std::vector<float>, 3> halfSlope;
@@ -162,12 +178,12 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
                         hs[i] = diff * inverse;
                     }
                 }
+                // Column by column of the patch, each a loop over the row that vectorises (the
+                // same additions in the same order as a sum per pixel).
                 float* hz = &horizontal[size_t(j) * tw];
-                for (int x = 0; x < tw; ++x) {
-                    float sum = 0.0f;
-                    for (int t = 0; t <= 2 * f; ++t) sum += d[x + t];
-                    hz[x] = sum;
-                }
+                std::fill(hz, hz + tw, 0.0f);
+                for (int t = 0; t <= 2 * f; ++t)
+                    for (int x = 0; x < tw; ++x) hz[x] += d[x + t];
             }
             // Only neighbours inside the frame are averaged in.
             const int x0 = std::max(xa, -dx), x1 = std::min(xb, w - dx);
@@ -218,6 +234,13 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
                     accumulate(count, weightDistance, gain.data(), usable + p + offset, uRow, offset, row, sums[k], a,
                                weightScratch.data(), weightedGain.data());
                 }
+                if (regression_) {
+                    float* const weightDistance = candidateDistance.data();
+                    for (int i = 0; i < count; ++i)
+                        weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, dist[i] * fitInverseK2), features[size_t(i)]));
+                    weights(count, weightDistance, usable + p + offset, weightScratch.data());
+                    regression_->accumulate(p, offset, count, weightScratch.data(), uRow, *fitSums, a);
+                }
             }
         }
     // Each candidate: the colour plus the weighted mean of the neighbours' differences,
@@ -246,6 +269,25 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
                 out.color[k][i] = c;
                 out.risk[k][i] = risk;
             }
+    // The regression's: its fit at the pixel, and SURE with the weights held fixed (the fit is
+    // linear in the irradiance, so its derivative is the centre's leverage).
+    if (regression_)
+        for (int t = 0; t < th; ++t)
+            for (int x = xa; x < xb; ++x) {
+                const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * tw + (x - xa);
+                glm::vec3 c = b_.color[i];
+                float risk = 0.0f;
+                if (usable[p] != 0.0f) {
+                    const FeatureRegression::Fit fit = FeatureRegression::solve(*fitSums, a, s_.regressionRidge);
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const float change = divisor[ch][p] * fit.change[ch];
+                        c[ch] += change;
+                        risk += steinUnbiasedRisk(change, divisor[ch][p] * divisor[ch][p] * v[ch][p], fit.leverage);
+                    }
+                }
+                out.color[candidates][i] = c;
+                out.risk[candidates][i] = risk;
+            }
 }
 
 }  // namespace
@@ -254,12 +296,13 @@ DenoiseResult denoise(const DenoiseBuffers& buffers, const DenoiseSettings& sett
     checkDenoiseBuffers(buffers);
     const bool everyKPositive = std::all_of(settings.candidateK.begin(), settings.candidateK.end(), [](float k) { return k > 0.0f; });
     if (settings.radius < 1 || settings.patchRadius < 0 || settings.candidateK.empty() || !everyKPositive ||
-        !(settings.alpha >= 0.0f) || settings.selectionRadius < 0)
+        !(settings.alpha >= 0.0f) || settings.selectionRadius < 0 || !(settings.regressionK > 0.0f) ||
+        !(settings.regressionRidge > 0.0f))
         throw std::invalid_argument(
             "denoise: radius must be at least 1, patch radius at least 0, at least one candidate k, each above 0, alpha and "
-            "the selection radius at least 0");
+            "the selection radius at least 0, the regression's k and ridge above 0");
     const Filter filter(buffers, settings);
-    const size_t n = buffers.pixels(), candidates = settings.candidateK.size();
+    const size_t n = buffers.pixels(), candidates = filter.candidates();
     Candidates out{std::vector<std::vector<glm::vec3>>(candidates, std::vector<glm::vec3>(n)),
                    std::vector<std::vector<float>>(candidates, std::vector<float>(n))};
     const int rows = (buffers.height + kTileRows - 1) / kTileRows, columns = (buffers.width + kTileColumns - 1) / kTileColumns;

@@ -10,8 +10,9 @@
 // the squared difference less what the pixels' noise explains, in units of that noise; D_f is
 // FeatureGuide's. What is filtered is the colour with the albedo divided out
 // (albedo_demodulation.h), multiplied back after: the threads stay as sharp as the albedo pass.
-// The filter is run with several k_c at once (they share the patch distances) and each pixel
-// takes the one of least estimated error (sure_selection.h).
+// The filter is run with several k_c at once (they share the patch distances), beside them, where
+// the frame has a direct-light pass, a first-order regression on it (feature_regression.h), and
+// each pixel takes the one of least estimated error (sure_selection.h).
 #include <cstddef>
 #include <vector>
 
@@ -31,6 +32,15 @@ struct DenoiseSettings {
     // (sure_selection.h): the papers' 0.45, and a stricter one that keeps shading no pass shows
     // (the satin's float highlights) where the papers' blurs it (docs/RESULTS.md).
     std::vector<float> candidateK = {0.45f, 0.1f};
+    // The regression candidate's weights: non-local means at this k_c, looser than the filters',
+    // as the fit, not the weights, keeps what the direct light tells apart. 1, 1.5, 2 and 2.5 took
+    // the satin to 5.2, 4.6, 4.6 and 4.8e-4 at 10 s (docs/RESULTS.md, run 5).
+    float regressionK = 1.5f;
+    // Each regressor's weighted square is raised by this fraction of itself (ridge regression):
+    // 1e-1 took the denim's error 5 % under 1e-2 and 1e-3, the satin's the same; 3e-1 blurred the
+    // satin's floats (fine detail 94 %).
+    float regressionRidge = 1e-1f;
+    bool regression = true;  // off: the filters alone, even with a direct-light pass
     float alpha = 1.0f;     // variance cancellation, the 2012 paper's
     int selectionRadius = 2;  // SURE and the choice are averaged over 5 x 5 pixels
     FeatureSettings features{};

@@ -2,11 +2,9 @@
 
 #include <iostream>
 
-#include "denoiser.h"
-
 namespace woven {
 
-Image denoiseBeauty(const Image& radiance, const RenderPasses& passes) {
+Image denoiseBeauty(const Image& radiance, const RenderPasses& passes, const DenoiseSettings& settings) {
     DenoiseBuffers b;
     b.width = radiance.width;
     b.height = radiance.height;
@@ -15,7 +13,8 @@ Image denoiseBeauty(const Image& radiance, const RenderPasses& passes) {
     b.albedo = passes.albedo.pixels;
     b.normal = passes.normal.pixels;
     b.depth = passes.depth;
-    DenoiseResult result = denoise(b);
+    b.direct = passes.direct.pixels;
+    DenoiseResult result = denoise(b, settings);
     if (result.unusablePixels > 0)
         std::cerr << "warning: denoise: " << result.unusablePixels
                   << " pixels have a radiance or pass that is not finite; they are left as rendered\n";
@@ -24,6 +23,8 @@ Image denoiseBeauty(const Image& radiance, const RenderPasses& passes) {
     return out;
 }
 
-void denoiseFilm(FilmImage& film) { film.denoised = denoiseBeauty(film.radiance, film.passes()); }
+void denoiseFilm(FilmImage& film, const DenoiseSettings& settings) {
+    film.denoised = denoiseBeauty(film.radiance, film.passes(), settings);
+}
 
 }  // namespace woven
