@@ -19,7 +19,7 @@ FirstHit firstHitOf(const RenderScene& scene, const SurfaceHit& hit, const std::
     const glm::vec3 wo = (eye - hit.p) / f.depth;
     for (const int index : scene.directPassLights()) {
         // The same point of the light for every sample: a guide free of the lights' sampling noise.
-        const auto ls = scene.lights()[size_t(index)].sampleLi(hit.p, glm::vec2(0.5f));
+        const auto ls = scene.lights()[size_t(index)].fixedPointLi(hit.p);
         if (!ls || !(ls->pdf > 0.0f) || !connects(hit, *bsdf, wo, ls->wi)) continue;
         f.direct += bsdf->eval(wo, ls->wi) * ls->L * (std::abs(glm::dot(ls->wi, cosineNormal(*bsdf, wo, ls->wi))) / ls->pdf);
     }

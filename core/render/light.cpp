@@ -129,6 +129,27 @@ std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const
     return s;
 }
 
+std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    LightLiSample s;
+    s.pLight = (a + b + c) / 3.0f;
+    s.nLight = n;
+    const glm::vec3 toLight = s.pLight - ref;
+    const float dist2 = glm::dot(toLight, toLight);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    s.wi = toLight / std::sqrt(dist2);
+    const float cosLight = std::abs(glm::dot(n, s.wi));
+    if (!(cosLight > 0.0f)) return std::nullopt;
+    s.pdf = dist2 / (cosLight * area);
+    s.L = twoSided || glm::dot(n, -s.wi) > 0.0f ? L : glm::vec3(0.0f);
+    return s;
+}
+
+std::optional<LightLiSample> Light::fixedPointLi(const glm::vec3& ref) const {
+    if (const TriangleLight* t = get<TriangleLight>()) return t->centroidLi(ref);
+    return sampleLi(ref, glm::vec2(0.5f));
+}
+
 float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
     if (!(area > 0.0f)) return 0.0f;
     const float solidAngle = solidAngleSampled(ref);

@@ -69,6 +69,8 @@ struct TriangleLight {
     glm::vec3 radiance(const glm::vec2& barycentrics) const;  // from the front
     glm::vec3 power() const;
     std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    // As sampleLi() at the centroid, by area, with the mean radiance L: no spherical triangle.
+    std::optional<LightLiSample> centroidLi(const glm::vec3& ref) const;
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
     std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
     void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
@@ -171,6 +173,9 @@ public:
     std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
         return std::visit([&](const auto& k) { return k.sampleLi(ref, u); }, kind_);
     }
+    // The light from one fixed point of it, no random numbers: a triangle's centroid, a delta
+    // light's one point or direction (the direct-light pass's, integrator.h's FirstHit).
+    std::optional<LightLiSample> fixedPointLi(const glm::vec3& ref) const;
     // For a direction wi from ref that reaches this light (at pLight with normal nLight for
     // triangles; ignored for the environment). Zero for delta lights.
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
