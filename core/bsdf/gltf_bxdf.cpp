@@ -144,6 +144,8 @@ GltfBxdf::LobeChoice GltfBxdf::choose(const glm::vec3& wo) const {
 
 float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
     if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
+    // The cosine lobe alone, as below with its choice of 1 (the same number to the bit).
+    if (lambertian_) return wi.z > 0.0f ? wi.z * kInvPi : 0.0f;
     const LobeChoice c = choose(wo);
     if (wi.z < 0.0f) {
         if (!transmits()) return 0.0f;
@@ -159,6 +161,17 @@ float GltfBxdf::pdf(const glm::vec3& wo, const glm::vec3& wi) const {
 
 std::optional<BsdfSample> GltfBxdf::sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
     if (wo.z <= 0.0f) return std::nullopt;
+    if (lambertian_) {
+        // The one lobe: choose(), pdf() and eval() would only confirm it, at a third of a
+        // bounce's BSDF cost; the same sample to the bit.
+        BsdfSample s;
+        s.wi = sampleCosineHemisphere(u);
+        s.pdf = s.wi.z * kInvPi;
+        if (!(s.pdf > 0.0f)) return std::nullopt;
+        s.f = baseColor_ * kInvPi;
+        s.weight = s.f * (s.wi.z / s.pdf);
+        return s;
+    }
     const LobeChoice c = choose(wo);
     // The lobes' intervals of uc end at the running sums of their probabilities, which rounding
     // can leave a hair under 1: a uc past the last of them belongs to the last lobe that can be
