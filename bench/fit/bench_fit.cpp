@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <unistd.h>
 
 #include "capture_rig.h"
@@ -36,7 +37,13 @@ int main(int argc, char** argv) {
     options.seconds = seconds;
     const std::atomic<bool> cancel{false};
     const auto start = std::chrono::steady_clock::now();
-    const FitResult r = fitFabric(shots, options, cancel);
+    // Where the time goes: one line each time the stage changes.
+    std::string stage;
+    const FitResult r = fitFabric(shots, options, cancel, [&](const FitProgress& p) {
+        if (p.stage == stage) return;
+        stage = p.stage;
+        std::fprintf(stderr, "%7.1f s  %4d renders  %s\n", p.elapsed, p.evaluations, stage.c_str());
+    });
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("| pixels | shots | budget s | took s | renders | s a render (both shots) | stages done | ends error | picks error | weave |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
