@@ -14,7 +14,7 @@ bool DenoiseBuffers::usable(size_t pixel) const {
     const glm::vec3& v = variance[pixel];
     return finite(color[pixel]) && finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f &&
            (albedo.empty() || finite(albedo[pixel])) && (normal.empty() || finite(normal[pixel])) &&
-           (direct.empty() || finite(direct[pixel])) &&
+           (direct.empty() || finite(direct[pixel])) && (directVariance.empty() || std::isfinite(directVariance[pixel])) &&
            (depth.empty() || !std::isnan(depth[pixel]));
 }
 
@@ -32,6 +32,7 @@ void checkDenoiseBuffers(const DenoiseBuffers& b) {
     check(b.normal.size(), "normal", true);
     check(b.depth.size(), "depth", true);
     check(b.direct.size(), "direct-light", true);
+    check(b.directVariance.size(), "direct-light variance", true);
 }
 
 }  // namespace woven

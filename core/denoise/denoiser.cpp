@@ -278,7 +278,7 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
                 glm::vec3 c = b_.color[i];
                 float risk = 0.0f;
                 if (usable[p] != 0.0f) {
-                    const FeatureRegression::Fit fit = FeatureRegression::solve(*fitSums, a, s_.regressionRidge);
+                    const FeatureRegression::Fit fit = regression_->solve(*fitSums, a, i, s_.regressionRidge);
                     for (int ch = 0; ch < 3; ++ch) {
                         const float change = divisor[ch][p] * fit.change[ch];
                         c[ch] += change;

@@ -1,5 +1,6 @@
 #include "feature_regression.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vector_clones.h"
@@ -31,7 +32,22 @@ bool FeatureRegression::applies(const DenoiseBuffers& b) {
 FeatureRegression::FeatureRegression(const DenoiseBuffers& b, const Demodulated& d, int pad)
     : regressors_(b.width, b.height, kR, pad, [&](size_t i, int c) {
           return b.usable(i) ? b.direct[i][c] / d.divisor.c[size_t(c)][i] : 0.0f;
-      }) {}
+      }),
+      variance_(b.pixels(), glm::vec3(0.0f)) {
+    if (b.directVariance.empty()) return;
+    // The pass keeps its luminance's variance alone: each channel's is taken as the luminance's in
+    // proportion, as where the samples fell in the pixel changes the light's brightness more than
+    // its colour.
+    for (size_t i = 0; i < b.pixels(); ++i) {
+        const glm::vec3 direct = b.direct[i];
+        const float y = 0.2126f * direct.x + 0.7152f * direct.y + 0.0722f * direct.z;
+        if (!b.usable(i) || !(y > 0.0f)) continue;
+        for (int c = 0; c < 3; ++c) {
+            const float relative = direct[c] / (y * d.divisor.c[size_t(c)][i]);
+            variance_[i][c] = b.directVariance[i] * relative * relative;
+        }
+    }
+}
 
 WOVEN_VECTOR_CLONES void FeatureRegression::accumulate(size_t p, ptrdiff_t offset, int count, const float* weight,
                                                        const float* const* u, Sums& sums, size_t a) const {
@@ -76,7 +92,7 @@ WOVEN_VECTOR_CLONES void FeatureRegression::accumulate(size_t p, ptrdiff_t offse
     }
 }
 
-FeatureRegression::Fit FeatureRegression::solve(const Sums& sums, size_t a, float ridge) {
+FeatureRegression::Fit FeatureRegression::solve(const Sums& sums, size_t a, size_t pixel, float ridge) const {
     const auto m = [&](int index) { return double(sums.moment[size_t(index)][a]); };
     double A[kSize][kSize], B[kSize][4];  // B's last column: e_0, for [A^-1]_00
     A[0][0] = m(kWeight);
@@ -119,9 +135,20 @@ FeatureRegression::Fit FeatureRegression::solve(const Sums& sums, size_t a, floa
             B[i][c] /= A[i][i];
         }
     }
+    // The point the fit is evaluated at, relative to the pixel's own regressors: towards the
+    // window's weighted mean by the share of the pixel's that is noise.
+    double at[kSize] = {1.0};
+    for (int j = 0; j < kR; ++j) {
+        const double w = m(kWeight), mean = m(kFirst + j) / w, spread = m(secondMoment(j, j)) / w - mean * mean;
+        const double noise = double(variance_[pixel][j]);
+        at[j + 1] = spread > 0.0 ? std::min(1.0, noise / spread) * mean : 0.0;
+    }
     Fit fit;
-    for (int c = 0; c < 3; ++c) fit.change[c] = float(B[0][c]);
-    fit.leverage = float(B[0][3]);
+    fit.leverage = 0.0f;
+    for (int j = 0; j < kSize; ++j) {
+        for (int c = 0; c < 3; ++c) fit.change[c] += float(at[j] * B[j][c]);
+        fit.leverage += float(at[j] * B[j][3]);
+    }
     return fit;
 }
 

@@ -9,7 +9,12 @@
 // of the same samples follows that where the albedo, normal and depth averages hardly do; a
 // filter that averages neighbours cannot keep it, a fit to the direct light can. A ridge term
 // (a fraction of each regressor's own weighted square) keeps the fit stable where the direct
-// light's channels move together or not at all. The depth as a fourth regressor (NFOR's) made
+// light's channels move together or not at all. The pass is a mean of the pixel's own samples, so
+// it carries their noise of where in the pixel they fell, which the colour shares and which a fit
+// evaluated at the pixel's own pass would keep (SURE cannot see it: it is in a regressor). So the
+// fit is evaluated at the pass shrunk towards the window's weighted mean by its reliability,
+// signal / (signal + noise) from the window's spread and the pass's own variance (a Wiener
+// estimate of the pass, as NFOR prefilters its features by their variance). The depth as a fourth regressor (NFOR's) made
 // the satin's error 1 % lower and the denim's 4 % higher at a third more of the fit's cost
 // (docs/RESULTS.md, run 5).
 #include <array>
@@ -47,7 +52,8 @@ public:
     // Whether a frame has what the regression needs: a direct-light pass, not 0 everywhere.
     static bool applies(const DenoiseBuffers& buffers);
 
-    // The regressors of every pixel, padded as the irradiance is (PaddedPlanes).
+    // The regressors of every pixel, padded as the irradiance is (PaddedPlanes), and the
+    // variance of each pixel's.
     FeatureRegression(const DenoiseBuffers& buffers, const Demodulated& demodulated, int pad);
 
     // Adds the count neighbours q = p + offset of the padded pixels p + i, with weights
@@ -56,11 +62,12 @@ public:
                     size_t a) const;
 
     // The weighted least-squares fit of the sums at index a, each regressor's square raised by
-    // `ridge` times itself.
-    static Fit solve(const Sums& sums, size_t a, float ridge);
+    // `ridge` times itself, at frame pixel `pixel` (its regressors' variance).
+    Fit solve(const Sums& sums, size_t a, size_t pixel, float ridge) const;
 
 private:
     PaddedPlanes regressors_;
+    std::vector<glm::vec3> variance_;  // of each pixel's regressors
 };
 
 }  // namespace woven

@@ -39,6 +39,8 @@ void Film::addPass(const PassImage& pass) {
                 p.square[c].add(estimate[i][c] * estimate[i][c]);
             }
             p.depth.add(hit.depth);
+            const float directLuminance = luminance(hit.direct);
+            p.directSquare.add(directLuminance * directLuminance);
             count_[i] += 1.0f;
         }
     });

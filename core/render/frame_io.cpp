@@ -35,11 +35,13 @@ struct ExactGroup {
     const char* channels;
 };
 constexpr ExactGroup kExactGroups[] = {
-    {"radiance", "RGB"}, {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"square", "RGB"}, {"direct", "RGB"},
+    {"radiance", "RGB"}, {"albedo", "RGB"}, {"normal", "XYZ"}, {"depth", "Z"}, {"square", "RGB"},
+    {"direct", "RGB"}, {"directSquare", "Y"},
 };
 constexpr int kRadianceGroup = 0;
-// Frames of versions before the direct-light pass lack its group; they are read with it 0.
-constexpr int kDirectGroup = 5;
+// Frames of versions before the direct-light pass lack its two groups, the last; they are read
+// with it 0.
+constexpr int kDirectGroup = 5, kDirectGroups = 2;
 
 std::string exactChannelName(const ExactGroup& g, int word, int c) {
     return std::string("exact.") + g.name + std::to_string(word) + "." + g.channels[c];
@@ -54,7 +56,8 @@ auto& exactSum(Frame& exr, int g, size_t i, int c) {
         case 2: return exr.passSums[i].normal[c];
         case 3: return exr.passSums[i].depth;
         case 4: return exr.passSums[i].square[c];
-        default: return exr.passSums[i].direct[c];
+        case 5: return exr.passSums[i].direct[c];
+        default: return exr.passSums[i].directSquare;
     }
 }
 
@@ -252,7 +255,7 @@ ExrImage readExr(const std::string& path) {
     const bool exactRadiance = !words[kRadianceGroup].empty() && words[kRadianceGroup].front() >= 0;
     if (exactRadiance && oldFound != 0) fail(path, "has both the exact sums exact.radiance* and the older sum.R0-sum.B3");
     const int passGroupsFound = groupsFound - int(groupFound[kRadianceGroup]);
-    const int passGroupsNeeded = int(std::size(kExactGroups)) - 1 - int(!groupFound[kDirectGroup]);
+    const int passGroupsNeeded = int(std::size(kExactGroups)) - 1 - (groupFound[kDirectGroup] ? 0 : kDirectGroups);
     if (passGroupsFound != 0 && passGroupsFound != passGroupsNeeded)
         fail(path, "has the exact sums of some render passes but not of all (exact.albedo*, exact.normal*, exact.depth*, "
                    "exact.square*)");
@@ -323,7 +326,8 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         for (int l = 0; l < passLayers; ++l)
             for (const char* c = kPassLayers[l].channels; *c; ++c) channel(std::string(kPassLayers[l].name) + "." + *c, colour);
     if (!exr.sampleCount.empty()) channel(kCountChannel, OIIO::TypeDesc::FLOAT);
-    const int exactGroups = passes ? int(std::size(kExactGroups)) - int(exr.lacksDirectPass) : exr.sampleSums.empty() ? 0 : 1;
+    const int exactGroups =
+        passes ? int(std::size(kExactGroups)) - (exr.lacksDirectPass ? kDirectGroups : 0) : exr.sampleSums.empty() ? 0 : 1;
     for (int g = 0; g < exactGroups; ++g)
         for (int w = 0; w < ExactSum::kFloatWords; ++w)
             for (int c = 0; c < int(std::strlen(kExactGroups[g].channels)); ++c)

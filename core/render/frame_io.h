@@ -43,8 +43,8 @@ enum class ExrPrecision { Half, Float };
 //                      the render passes (RenderPasses, `precision`), when passSums is not empty;
 //   samples.N          the sample counts, when not empty (float, exact for counts below 2^24);
 //   exact.radianceK.R/G/B, exact.albedoK.R/G/B, exact.normalK.X/Y/Z, exact.depthK.Z,
-//   exact.squareK.R/G/B, exact.directK.R/G/B (K = 0..5; files of versions before the direct
-//   pass lack exact.direct* and are read with it 0)
+//   exact.squareK.R/G/B, exact.directK.R/G/B, exact.directSquareK.Y (K = 0..5; files of
+//   versions before the direct pass lack exact.direct* and are read with it 0)
 //                      the exact sums, each as ExactSum::floatWords() (whole numbers below 2^24,
 //                      float), K = 0 the least significant: the radiance's with sampleSums,
 //                      the passes' with passSums. Blender shows them as a second layer, "exact".

@@ -14,6 +14,7 @@ PassSums& PassSums::operator+=(const PassSums& other) {
         square[c] += other.square[c];
     }
     depth += other.depth;
+    directSquare += other.directSquare;
     return *this;
 }
 
@@ -22,8 +23,19 @@ bool PassSums::operator==(const PassSums& other) const {
         if (albedo[c] != other.albedo[c] || normal[c] != other.normal[c] || direct[c] != other.direct[c] ||
             square[c] != other.square[c])
             return false;
-    return depth == other.depth;
+    return depth == other.depth && directSquare == other.directSquare;
 }
+
+namespace {
+
+// From n >= 2 samples' sum and sum of squares: (sum x^2 - (sum x)^2 / n) / (n - 1) is one
+// sample's variance; the mean's is 1/n of it.
+float varianceOfMean(double sum, double squares, float n) {
+    const double spread = std::max(0.0, squares - sum * sum / double(n));
+    return float(spread / (double(n) - 1.0) / double(n));
+}
+
+}  // namespace
 
 RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
                         const std::vector<ExactSum>& radianceSums, const std::vector<PassSums>& sums) {
@@ -37,6 +49,7 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
         image->pixels.resize(pixels);
     }
     p.depth.resize(pixels);
+    p.directVariance.resize(pixels);
     for (size_t i = 0; i < pixels; ++i) {
         const PassSums& s = sums[i];
         const float n = count[i];
@@ -46,15 +59,17 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
             p.direct.pixels[i][c] = s.direct[c].mean(n);
             normal[c] = s.normal[c].mean(n);
             if (n >= 2.0f) {
-                // (sum x^2 - (sum x)^2 / n) / (n - 1) is one sample's variance; the mean's is 1/n of it.
-                const double sum = radianceSums[3 * i + size_t(c)].value();
-                const double spread = std::max(0.0, s.square[c].value() - sum * sum / double(n));
-                p.variance.pixels[i][c] = float(spread / (double(n) - 1.0) / double(n));
+                p.variance.pixels[i][c] = varianceOfMean(radianceSums[3 * i + size_t(c)].value(), s.square[c].value(), n);
             }
         }
         const float length = glm::length(normal);
         p.normal.pixels[i] = length > 0.0f ? normal / length : normal;
         p.depth[i] = s.depth.mean(n);
+        if (n >= 2.0f) {
+            // The luminance's sum from the channels' sums, as each sample's is from its own.
+            const double luminance = 0.2126 * s.direct[0].value() + 0.7152 * s.direct[1].value() + 0.0722 * s.direct[2].value();
+            p.directVariance[i] = varianceOfMean(luminance, s.directSquare.value(), n);
+        }
     }
     return p;
 }

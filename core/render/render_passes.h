@@ -17,6 +17,8 @@ struct PassSums {
     // Per channel, each pass's estimate of the pixel squared (its camera sample with the splats
     // that landed on it, PassImage::combined()): with the radiance sums, the sample variance.
     ExactSum square[3];
+    ExactSum directSquare;  // of the direct light's luminance, for the variance of its mean
+
 
     PassSums& operator+=(const PassSums& other);
     bool operator==(const PassSums& other) const;
@@ -28,6 +30,7 @@ struct RenderPasses {
     Image normal;               // the mean shading normal, made unit length (0 where nothing was hit)
     std::vector<float> depth;   // the mean distance from the camera, misses counting 0
     Image direct;               // the mean light from the lights straight by way of the first hit
+    std::vector<float> directVariance;  // the variance of its luminance's mean (0 below 2 samples)
     Image variance;             // per channel, the variance of the pixel's mean radiance (0 below 2 samples)
 };
 

@@ -24,11 +24,11 @@ struct ImageError : std::runtime_error {
 // frame file of woven's (about 1.4 GB with its passes and exact sums).
 constexpr int kMaxImageSide = 32768;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 27;
-// A frame file of woven's has 95 channels (frame_io.h): beauty, noisy beauty, passes, count and
+// A frame file of woven's has 122 channels (frame_io.h): beauty, noisy beauty, passes, count and
 // the exact sums' words.
 constexpr int kMaxImageChannels = 128;
 // All channels decoded as 32-bit values: a 128 Mpixel RGBA texture (2 GiB), or a 3840 x 2160
-// frame file with its 95 channels (3 GiB). The fuzz build sets a lower one (CMakeLists.txt).
+// frame file with its 122 channels (3.8 GiB). The fuzz build sets a lower one (CMakeLists.txt).
 #ifndef WOVEN_MAX_IMAGE_DECODED_MIB
 #define WOVEN_MAX_IMAGE_DECODED_MIB 4096
 #endif

@@ -39,7 +39,7 @@ FeatureRegression::Fit fitAtCentre(const DenoiseBuffers& b, float ridge) {
     const float one = 1.0f;
     for (int dx = -centre; dx <= centre; ++dx)
         if (dx != 0) regression.accumulate(p, dx, 1, &one, planes, sums, 0);
-    return FeatureRegression::solve(sums, 0, ridge);
+    return regression.solve(sums, 0, size_t(centre), ridge);
 }
 
 TEST(FeatureRegression, ALinearSignalIsFittedExactly) {
@@ -79,6 +79,25 @@ TEST(FeatureRegression, LeverageIsTheStraightLineFitsAndTheRidgeShrinksTheSlope)
     const FeatureRegression::Fit ridged = fitAtCentre(row(x, u), 1e4f);
     EXPECT_NEAR(ridged.change[0], mu - u[size_t(c)], 1e-3);
     EXPECT_NEAR(ridged.leverage, 1.0 / kWidth, 1e-3);
+}
+
+TEST(FeatureRegression, ANoisyPassIsTakenAtTheWindowsMean) {
+    // Where the pixel's pass is all noise (its variance above the window's spread), the fit is
+    // evaluated at the window's mean pass, where a straight-line fit is the window's mean colour:
+    // the pixel's own pass, and its noise, no longer move the estimate.
+    const std::vector<float> x = {0.0f, 0.5f, 0.2f, 0.9f, 0.4f, 0.7f, 0.1f, 0.8f, 0.3f};
+    const std::vector<float> u = {1.0f, 1.6f, 1.1f, 2.1f, 1.3f, 1.8f, 1.3f, 1.9f, 1.2f};
+    double mu = 0.0;
+    for (float v : u) mu += v / kWidth;
+    DenoiseBuffers b = row(x, u);
+    b.directVariance.assign(kWidth, 1e6f);
+    const FeatureRegression::Fit fit = fitAtCentre(b, 1e-7f);
+    EXPECT_NEAR(fit.change[0], mu - u[kWidth / 2], 1e-5);
+    EXPECT_NEAR(fit.leverage, 1.0 / kWidth, 1e-5);
+    // A pass without noise is taken as it is (the test above).
+    b.directVariance.assign(kWidth, 0.0f);
+    const FeatureRegression::Fit exact = fitAtCentre(b, 1e-7f);
+    EXPECT_GT(std::fabs(exact.change[0] - fit.change[0]), 1e-3f);
 }
 
 }  // namespace
