@@ -106,7 +106,6 @@ float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
 
 std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
     if (!(area > 0.0f)) return std::nullopt;
-    LightLiSample s;
     const float solidAngle = solidAngleSampled(ref);
     glm::vec2 bary;
     if (solidAngle > 0.0f) {
@@ -116,8 +115,23 @@ std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const
     } else {
         bary = sampleTriangleBarycentrics(u);
     }
-    s.pLight = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
+    auto s = towards(ref, (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c, solidAngle);
+    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = radiance(bary);
+    return s;
+}
+
+std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    auto s = towards(ref, (a + b + c) / 3.0f, 0.0f);
+    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = L;
+    return s;
+}
+
+std::optional<LightLiSample> TriangleLight::towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle) const {
+    LightLiSample s;
+    s.pLight = pLight;
     s.nLight = n;
+    s.L = glm::vec3(0.0f);
     const glm::vec3 toLight = s.pLight - ref;
     const float dist2 = glm::dot(toLight, toLight);
     if (!(dist2 > 0.0f)) return std::nullopt;
@@ -125,23 +139,6 @@ std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const
     const float cosLight = std::abs(glm::dot(n, s.wi));
     if (!(cosLight > 0.0f)) return std::nullopt;
     s.pdf = solidAngle > 0.0f ? 1.0f / solidAngle : dist2 / (cosLight * area);
-    s.L = twoSided || glm::dot(n, -s.wi) > 0.0f ? radiance(bary) : glm::vec3(0.0f);
-    return s;
-}
-
-std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
-    if (!(area > 0.0f)) return std::nullopt;
-    LightLiSample s;
-    s.pLight = (a + b + c) / 3.0f;
-    s.nLight = n;
-    const glm::vec3 toLight = s.pLight - ref;
-    const float dist2 = glm::dot(toLight, toLight);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    s.wi = toLight / std::sqrt(dist2);
-    const float cosLight = std::abs(glm::dot(n, s.wi));
-    if (!(cosLight > 0.0f)) return std::nullopt;
-    s.pdf = dist2 / (cosLight * area);
-    s.L = twoSided || glm::dot(n, -s.wi) > 0.0f ? L : glm::vec3(0.0f);
     return s;
 }
 

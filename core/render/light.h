@@ -76,6 +76,11 @@ struct TriangleLight {
     void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
     // The solid angle sampleLi() samples uniformly from ref, 0 where it samples by area.
     float solidAngleSampled(const glm::vec3& ref) const;
+
+private:
+    // The sample of pLight from ref, its density by solidAngle (0: by area), L left 0 for the
+    // caller to set where the face towards ref emits.
+    std::optional<LightLiSample> towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle) const;
 };
 
 // Intensity I (W/sr) from a point, the same every way.
