@@ -328,12 +328,14 @@ void RenderScene::Impl::buildLights() {
         lights.push_back(Light::environment(env));
     }
     for (Light& light : lights) light.setSceneBounds(bounds);
-    // The direct-light pass's lights: the most powerful, each a BSDF evaluation per camera sample.
+    // The direct-light pass's lights: the most powerful, each a BSDF evaluation per camera sample;
+    // ties go to the lower index, so the choice is the same on every machine.
+    std::vector<std::pair<float, int>> byPower;
     for (size_t i = 0; i < lights.size(); ++i)
-        if (int(i) != environment) directPassLights.push_back(int(i));
-    const auto brightness = [&](int i) { return luminance(lights[size_t(i)].power()); };
-    std::stable_sort(directPassLights.begin(), directPassLights.end(), [&](int a, int b) { return brightness(a) > brightness(b); });
-    if (directPassLights.size() > size_t(kDirectPassLights)) directPassLights.resize(size_t(kDirectPassLights));
+        if (int(i) != environment) byPower.push_back({-luminance(lights[i].power()), int(i)});
+    const size_t kept = std::min(byPower.size(), size_t(kDirectPassLights));
+    std::partial_sort(byPower.begin(), byPower.begin() + ptrdiff_t(kept), byPower.end());
+    for (size_t i = 0; i < kept; ++i) directPassLights.push_back(byPower[i].second);
     lightSampler.emplace(lights);
     lightTree.emplace(lights);
 }
