@@ -14,7 +14,7 @@ bool DenoiseBuffers::usable(size_t pixel) const {
     const glm::vec3& v = variance[pixel];
     return finite(color[pixel]) && finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f &&
            (albedo.empty() || finite(albedo[pixel])) && (normal.empty() || finite(normal[pixel])) &&
-           (direct.empty() || finite(direct[pixel])) && (directVariance.empty() || std::isfinite(directVariance[pixel])) &&
+           (direct.empty() || finite(direct[pixel])) && (directVariance.empty() || finite(directVariance[pixel])) &&
            (depth.empty() || !std::isnan(depth[pixel]));
 }
 

@@ -17,7 +17,7 @@ struct DenoiseBuffers {
     std::vector<glm::vec3> normal;    // unit shading normal
     std::vector<float> depth;         // distance to the first hit; 0 or inf where the ray missed
     std::vector<glm::vec3> direct;    // the light from the lights by way of the first hit (FirstHit::direct)
-    std::vector<float> directVariance;  // the variance of that mean's luminance (empty: taken as 0)
+    std::vector<glm::vec3> directVariance;  // per channel, the variance of that mean (empty: taken as 0)
 
     size_t pixels() const { return size_t(width) * size_t(height); }
     // A pixel whose colour, variance, albedo, normal or direct light is not finite, whose variance is negative

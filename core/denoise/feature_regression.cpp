@@ -35,18 +35,11 @@ FeatureRegression::FeatureRegression(const DenoiseBuffers& b, const Demodulated&
       }),
       variance_(b.pixels(), glm::vec3(0.0f)) {
     if (b.directVariance.empty()) return;
-    // The pass keeps its luminance's variance alone: each channel's is taken as the luminance's in
-    // proportion, as where the samples fell in the pixel changes the light's brightness more than
-    // its colour.
-    for (size_t i = 0; i < b.pixels(); ++i) {
-        const glm::vec3 direct = b.direct[i];
-        const float y = 0.2126f * direct.x + 0.7152f * direct.y + 0.0722f * direct.z;
-        if (!b.usable(i) || !(y > 0.0f)) continue;
+    for (size_t i = 0; i < b.pixels(); ++i)
         for (int c = 0; c < 3; ++c) {
-            const float relative = direct[c] / (y * d.divisor.c[size_t(c)][i]);
-            variance_[i][c] = b.directVariance[i] * relative * relative;
+            const float divisor = d.divisor.c[size_t(c)][i];
+            variance_[i][c] = b.usable(i) ? b.directVariance[i][c] / (divisor * divisor) : 0.0f;
         }
-    }
 }
 
 WOVEN_VECTOR_CLONES void FeatureRegression::accumulate(size_t p, ptrdiff_t offset, int count, const float* weight,
@@ -58,9 +51,10 @@ WOVEN_VECTOR_CLONES void FeatureRegression::accumulate(size_t p, ptrdiff_t offse
     const float *u0 = u[0], *u1 = u[1], *u2 = u[2];
     float* m[kMoments];
     for (int k = 0; k < kMoments; ++k) m[k] = &sums.moment[size_t(k)][a];
-    // One pass over the row, every moment at once: the differences stay in registers, and each
-    // moment is loaded and stored once (separate loops per moment took twice the time). The
-    // moments' planes, the inputs and the weights are distinct arrays.
+    // One pass over the row, every moment at once and written out: the differences stay in
+    // registers, and each moment is loaded and stored once. Separate loops per moment took twice
+    // the time, and the same sums as loops over j and k inside this one 1.4x (bench_denoise).
+    // The moments' planes, the inputs and the weights are distinct arrays.
 #pragma GCC ivdep
     for (int i = 0; i < count; ++i) {
         const float w = weight[i];

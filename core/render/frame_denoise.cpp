@@ -14,7 +14,7 @@ Image denoiseBeauty(const Image& radiance, const RenderPasses& passes, const Den
     b.normal = passes.normal.pixels;
     b.depth = passes.depth;
     b.direct = passes.direct.pixels;
-    b.directVariance = passes.directVariance;
+    b.directVariance = passes.directVariance.pixels;
     DenoiseResult result = denoise(b, settings);
     if (result.unusablePixels > 0)
         std::cerr << "warning: denoise: " << result.unusablePixels

@@ -43,13 +43,12 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
     if (count.size() != pixels || radianceSums.size() != 3 * pixels || sums.size() != pixels)
         throw std::invalid_argument("render passes: the sample counts, radiance sums and pass sums do not match the frame");
     RenderPasses p;
-    for (Image* image : {&p.albedo, &p.normal, &p.direct, &p.variance}) {
+    for (Image* image : {&p.albedo, &p.normal, &p.direct, &p.directVariance, &p.variance}) {
         image->width = width;
         image->height = height;
         image->pixels.resize(pixels);
     }
     p.depth.resize(pixels);
-    p.directVariance.resize(pixels);
     for (size_t i = 0; i < pixels; ++i) {
         const PassSums& s = sums[i];
         const float n = count[i];
@@ -65,10 +64,15 @@ RenderPasses meanPasses(int width, int height, const std::vector<float>& count,
         const float length = glm::length(normal);
         p.normal.pixels[i] = length > 0.0f ? normal / length : normal;
         p.depth[i] = s.depth.mean(n);
-        if (n >= 2.0f) {
+        const float y = luminance(p.direct.pixels[i]);
+        if (n >= 2.0f && y > 0.0f) {
             // The luminance's sum from the channels' sums, as each sample's is from its own.
-            const double luminance = 0.2126 * s.direct[0].value() + 0.7152 * s.direct[1].value() + 0.0722 * s.direct[2].value();
-            p.directVariance[i] = varianceOfMean(luminance, s.directSquare.value(), n);
+            const glm::dvec3 sums(s.direct[0].value(), s.direct[1].value(), s.direct[2].value());
+            const float variance = varianceOfMean(luminance(sums), s.directSquare.value(), n);
+            for (int c = 0; c < 3; ++c) {
+                const float share = p.direct.pixels[i][c] / y;
+                p.directVariance.pixels[i][c] = variance * share * share;
+            }
         }
     }
     return p;

@@ -30,7 +30,11 @@ struct RenderPasses {
     Image normal;               // the mean shading normal, made unit length (0 where nothing was hit)
     std::vector<float> depth;   // the mean distance from the camera, misses counting 0
     Image direct;               // the mean light from the lights straight by way of the first hit
-    std::vector<float> directVariance;  // the variance of its luminance's mean (0 below 2 samples)
+    // Per channel, the variance of that mean: its luminance's, shared out in proportion to each
+    // channel's share of the luminance (0 below 2 samples). Where in the pixel the samples fell
+    // changes the light's brightness more than its colour, and the film keeps the squares of the
+    // luminance alone.
+    Image directVariance;
     Image variance;             // per channel, the variance of the pixel's mean radiance (0 below 2 samples)
 };
 

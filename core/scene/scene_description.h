@@ -13,8 +13,11 @@
 
 namespace woven {
 
-// Luminance of linear Rec. 709 RGB.
-inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+// Luminance of linear Rec. 709 RGB, in float or double.
+template <typename T, glm::qualifier Q>
+T luminance(const glm::vec<3, T, Q>& c) {
+    return T(0.2126) * c.r + T(0.7152) * c.g + T(0.0722) * c.b;
+}
 
 // Linear RGB float image, row 0 at the top (frames and environment maps).
 struct Image {

@@ -90,12 +90,12 @@ TEST(FeatureRegression, ANoisyPassIsTakenAtTheWindowsMean) {
     double mu = 0.0;
     for (float v : u) mu += v / kWidth;
     DenoiseBuffers b = row(x, u);
-    b.directVariance.assign(kWidth, 1e6f);
+    b.directVariance.assign(kWidth, glm::vec3(1e6f));
     const FeatureRegression::Fit fit = fitAtCentre(b, 1e-7f);
     EXPECT_NEAR(fit.change[0], mu - u[kWidth / 2], 1e-5);
     EXPECT_NEAR(fit.leverage, 1.0 / kWidth, 1e-5);
     // A pass without noise is taken as it is (the test above).
-    b.directVariance.assign(kWidth, 0.0f);
+    b.directVariance.assign(kWidth, glm::vec3(0.0f));
     const FeatureRegression::Fit exact = fitAtCentre(b, 1e-7f);
     EXPECT_GT(std::fabs(exact.change[0] - fit.change[0]), 1e-3f);
 }
