@@ -302,8 +302,10 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         fail(path, "the render passes' sums do not match the image size, or come without sample counts and sums");
     if (exr.noisy && (exr.noisy->width != image.width || exr.noisy->height != image.height || exr.noisy->pixels.size() != count))
         fail(path, "the noisy beauty does not match the image size");
-    const std::optional<RenderPasses> passes =
-        exr.passSums.empty() ? std::nullopt : std::optional<RenderPasses>(exr.passes());
+    // A plain value and a flag, not an optional: GCC 12 warns of the optional's vectors as maybe
+    // uninitialised where the layers are read.
+    const bool hasPasses = !exr.passSums.empty();
+    const RenderPasses passes = hasPasses ? exr.passes() : RenderPasses{};
 
     // Every channel half or float with a name of layer.pass.channel form (or R, G, B), so that
     // compositors (Blender, Nuke) read the file as a multi-layer image: the beauty and the passes
@@ -322,12 +324,12 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
     // The direct-light pass is last among the layers and the exact groups: a file of an older
     // woven, read and written again, goes without it.
     const int passLayers = int(std::size(kPassLayers)) - int(exr.lacksDirectPass);
-    if (passes)
+    if (hasPasses)
         for (int l = 0; l < passLayers; ++l)
             for (const char* c = kPassLayers[l].channels; *c; ++c) channel(std::string(kPassLayers[l].name) + "." + *c, colour);
     if (!exr.sampleCount.empty()) channel(kCountChannel, OIIO::TypeDesc::FLOAT);
     const int exactGroups =
-        passes ? int(std::size(kExactGroups)) - (exr.lacksDirectPass ? kDirectGroups : 0) : exr.sampleSums.empty() ? 0 : 1;
+        hasPasses ? int(std::size(kExactGroups)) - (exr.lacksDirectPass ? kDirectGroups : 0) : exr.sampleSums.empty() ? 0 : 1;
     for (int g = 0; g < exactGroups; ++g)
         for (int w = 0; w < ExactSum::kFloatWords; ++w)
             for (int c = 0; c < int(std::strlen(kExactGroups[g].channels)); ++c)
@@ -365,9 +367,9 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         for (int c = 0; c < 3; ++c) put(image.pixels[i][c], colour);
         if (exr.noisy)
             for (int c = 0; c < 3; ++c) put(exr.noisy->pixels[i][c], colour);
-        if (passes)
+        if (hasPasses)
             for (int l = 0; l < passLayers; ++l)
-                for (int c = 0; c < int(std::strlen(kPassLayers[l].channels)); ++c) put(passValue(*passes, l, i, c), colour);
+                for (int c = 0; c < int(std::strlen(kPassLayers[l].channels)); ++c) put(passValue(passes, l, i, c), colour);
         if (!exr.sampleCount.empty()) put(exr.sampleCount[i], OIIO::TypeDesc::FLOAT);
         for (int g = 0; g < exactGroups; ++g) {
             const int channels = int(std::strlen(kExactGroups[g].channels));
