@@ -12,6 +12,7 @@
 #include "linear_colours.h"
 #include "photo_model.h"
 #include "power_spectrum.h"
+#include "thread_frequencies.h"
 #include "tile_fold.h"
 #include "weave_candidates.h"
 #include "weave_lattice.h"
@@ -44,22 +45,6 @@ constexpr double kRestartGain = 1e-3;
 // Closed-form colour solves at each point of stage 4: the fold's phase and shift come from the
 // colours before the solve, so a second solve from the first's colours lays the folds right.
 constexpr int kColourSolves = 2;
-
-struct ThreadPeaks {
-    std::optional<SpectralPeak> ends, picks;  // across u (warp ends) and across v (weft picks)
-};
-
-ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel) {
-    std::vector<float> lum(image.pixels.size());
-    for (size_t i = 0; i < lum.size(); ++i) lum[i] = luminance(image.pixels[i]);
-    const PowerSpectrum s = powerSpectrum(lum, image.width, image.height);
-    const double fMin = 3.0 / std::min(image.width, image.height);
-    const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
-    ThreadPeaks peaks{fundamentalPeak(s, gradU, kPeakHalfAngle, fMin, 0.5), fundamentalPeak(s, gradV, kPeakHalfAngle, fMin, 0.5)};
-    for (std::optional<SpectralPeak>* peak : {&peaks.ends, &peaks.picks})
-        if (*peak) (*peak)->frequency = refineThreadFrequency(lum, image.width, image.height, (*peak)->frequency);
-    return peaks;
-}
 
 double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
     // Peaks are defined up to sign (the spectrum of a real image is symmetric).
@@ -314,7 +299,7 @@ private:
         bool ends = false, picks = false;
         for (size_t i = 0; i < shots_.size(); ++i) {
             const Shot& s = shots_[i];
-            const ThreadPeaks peaks = threadPeaks(s.image, s.uvPerPixel);
+            const ThreadPeaks peaks = threadPeaks(s.image, s.uvPerPixel, kPeakHalfAngle);
             const glm::dvec2 gradU(s.uvPerPixel[0][0], s.uvPerPixel[1][0]), gradV(s.uvPerPixel[0][1], s.uvPerPixel[1][1]);
             if (peaks.ends) result_.shots[i].photoFrequency.x = glm::length(peaks.ends->frequency);
             if (peaks.picks) result_.shots[i].photoFrequency.y = glm::length(peaks.picks->frequency);
@@ -507,7 +492,7 @@ private:
         for (int iteration = 0; iteration < 2; ++iteration) {
             if (stop()) return false;
             const std::vector<Image> images = render(p);
-            const ThreadPeaks r = threadPeaks(images[0], shots_[0].uvPerPixel);
+            const ThreadPeaks r = threadPeaks(images[0], shots_[0].uvPerPixel, kPeakHalfAngle);
             const ThreadPeaks& photo = photoPeaks_[0];
             if (photo.ends && r.ends) p.repeat.x *= float(glm::length(photo.ends->frequency) / glm::length(r.ends->frequency));
             if (photo.picks && r.picks)
@@ -612,7 +597,7 @@ private:
         for (size_t i = 0; i < shots_.size() && i < photoPeaks_.size(); ++i) {
             ShotFit& f = result_.shots[i];
             if (f.render.pixels.empty()) continue;
-            const ThreadPeaks r = threadPeaks(f.render, shots_[i].uvPerPixel);
+            const ThreadPeaks r = threadPeaks(f.render, shots_[i].uvPerPixel, kPeakHalfAngle);
             const ThreadPeaks& p = photoPeaks_[i];
             if (r.ends) f.renderFrequency.x = glm::length(r.ends->frequency);
             if (r.picks) f.renderFrequency.y = glm::length(r.picks->frequency);

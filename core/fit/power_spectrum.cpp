@@ -157,31 +157,4 @@ double powerNear(const PowerSpectrum& s, const glm::dvec2& f) {
     return best;
 }
 
-std::optional<SpectralPeak> fundamentalPeak(const PowerSpectrum& s, glm::dvec2 direction, double halfAngle, double fMin,
-                                            double fMax) {
-    const std::optional<SpectralPeak> strongest = strongestPeak(s, direction, halfAngle, fMin, fMax);
-    if (!strongest) return strongest;
-    const double floor = 1e-3 * strongest->power;
-    const auto folded = [](const glm::dvec2& f) { return f - glm::round(f); };
-    const double bin = 1.0 / std::max(s.width, s.height);
-    std::optional<SpectralPeak> best;
-    double bestScore = -INFINITY;
-    for (double f = fMin; f <= fMax; f += bin) {
-        // The strongest bin of this ring of the window, kept if no bin around it is stronger.
-        const auto peak = strongestPeak(s, strongest->frequency, halfAngle, f, f + bin);
-        if (!peak || peak->power < 0.05 * strongest->power) continue;
-        const double at = glm::length(peak->frequency);
-        const auto around = strongestPeak(s, strongest->frequency, halfAngle, std::max(fMin, at - 2.0 * bin), at + 2.0 * bin);
-        if (!around || around->power > peak->power) continue;
-        double score = 0.0;
-        for (int n = 1; n <= 3; ++n) score += std::log(powerNear(s, folded(double(n) * peak->frequency)) + floor);
-        if (score > bestScore + 1e-9) {
-            bestScore = score;
-            best = peak;
-        }
-        f = at + bin;  // past this peak
-    }
-    return best ? best : strongest;
-}
-
 }  // namespace woven

@@ -33,16 +33,6 @@ struct SpectralPeak {
 std::optional<SpectralPeak> strongestPeak(const PowerSpectrum& spectrum, glm::dvec2 direction, double halfAngle,
                                           double fMin, double fMax);
 
-// The fundamental of the threads there. Narrow yarns with sharp edges put as much power in the
-// harmonics as in the fundamental, and a pixel grid folds the harmonics above its Nyquist
-// frequency back below it (at 4.7 pixels a thread the 4th harmonic lands at 0.67 of the
-// fundamental's frequency, the 5th at a third of it), so the strongest peak is not always the
-// thread. Of the local maxima with at least a twentieth of the strongest's power, the one whose
-// first three harmonics, folded as the pixel grid folds them, hold the most power (the sum of
-// their logs): a folded harmonic's own harmonics fall where the spectrum has little.
-std::optional<SpectralPeak> fundamentalPeak(const PowerSpectrum& spectrum, glm::dvec2 direction, double halfAngle,
-                                            double fMin, double fMax);
-
 // The largest power within a bin of frequency f (cycles per pixel, either half-plane).
 double powerNear(const PowerSpectrum& spectrum, const glm::dvec2& f);
 

@@ -150,6 +150,21 @@ TEST_F(RoundTrip, TwillThreadCounts) {
     EXPECT_LT(r.shots[0].directionError.y, 1.0);
 }
 
+// Denim's 25 ends and 16 picks per cm as a 3/1 twill at 512 pixels (6 and 9.4 pixels a thread,
+// yarns of full width): the twill's lattice folded by the pixel grid puts a point 3.9 degrees off
+// the ends' axis at 2.25 times their frequency whose folded harmonics outscored the ends' own
+// (bench_fit counted 2.25 times the ends); the picks' direction, not turned, rules it out
+// (thread_frequencies.h).
+TEST_F(RoundTrip, DenimThreadCountsAt512Pixels) {
+    RigPhoto photo;
+    photo.truth.pattern = {1, 3, 1};
+    photo.truth.repeat = {2500.0f, 1600.0f};
+    photo.truth.weft_color = {0.70f, 0.62f, 0.45f};
+    photo.truth.warp_color = {0.10f, 0.16f, 0.42f};
+    photo.size = 512;
+    expectThreadCounts(fit(photo, seconds()), photo.truth);
+}
+
 TEST_F(RoundTrip, PlainWeaveThreadCounts) {
     RigPhoto photo;
     photo.truth = cloth({1, 1, 1});
