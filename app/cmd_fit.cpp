@@ -1,5 +1,6 @@
 // `woven fit SHOT.json ... --target NAME -o FABRIC.json`: the woven material whose renders of the
 // shots have their photographs' statistics (docs/FIT.md).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -83,6 +84,9 @@ int runFit(const FitCommand& o) {
     std::cout << ", loss " << std::setprecision(4) << result.loss << ", " << result.evaluations << " renders";
     if (!result.history.empty()) std::cout << " in " << std::setprecision(3) << result.history.back().first << " s";
     if (result.exposure != 1.0) std::cout << ", exposure " << std::setprecision(4) << result.exposure;
+    if (std::any_of(shots.begin(), shots.end(), [](const Shot& s) { return s.backlit; }))
+        std::cout << ", transmission " << std::setprecision(3) << result.params.transmission << " (gloss "
+                  << result.params.transmission_gloss << ") from the backlit shots";
     std::cout << "\n";
     if (!o.report.empty()) {
         for (const std::string& w : writeFitReport(o.report, shots, result)) std::cerr << "warning: fit: " << w << "\n";

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     photo.size = pixels;
     std::vector<Shot> shots;
     shots.push_back(loadShot(test::writeCaptureShot(dir.string(), "flash", photo), "Swatch"));
-    photo.lightOffset = 0.03f;
+    photo.light.x = 0.03f;
     photo.seed += 1;
     shots.push_back(loadShot(test::writeCaptureShot(dir.string(), "side", photo), "Swatch"));
 

@@ -120,9 +120,14 @@ public:
         result_.loss = INFINITY;
         for (const Shot& s : shots_) {
             anyFree_ = anyFree_ || !s.photo.exposure;
-            allFree_ = allFree_ && !s.photo.exposure;
             whiteLight_ = whiteLight_ && litWhiteAndTargetOnly(s);
         }
+        // The colours are the reflection's: every shot lit from the camera's side shows them. A
+        // fit of backlit shots alone takes them from those, as if they were reflections.
+        bool anyReflected = false;
+        for (const Shot& s : shots_) anyReflected = anyReflected || !s.backlit;
+        for (const Shot& s : shots_) reflected_.push_back(!s.backlit || !anyReflected);
+        transmitted_ = anyReflected && std::find(reflected_.begin(), reflected_.end(), false) != reflected_.end();
     }
 
     FitResult run() {
@@ -137,6 +142,7 @@ public:
         stage_ = "thread counts";
         p.repeat = measurePhotos(p.repeat);
         p = initialColours(p);
+        if (transmitted_) p = initialTransmission(p);
         const bool weaveDone = chooseWeave(p);
         bool calibrated = false;
         if (weaveDone && !stop()) {
@@ -190,38 +196,47 @@ private:
         onProgress_(p);
     }
 
-    std::vector<Image> render(const WovenParams& p) {
-        std::vector<Image> images;
-        for (const Shot& s : shots_) {
-            images.push_back(renderShot(s, p, options_.render, cancel_));
-            applyVignette(images.back(), s.photo.vignetteSigmaPx);
+    // Each shot `which` names (all where it is empty); the others' images are left empty.
+    std::vector<Image> render(const WovenParams& p, const std::vector<bool>& which = {}) {
+        std::vector<Image> images(shots_.size());
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (!which.empty() && !which[i]) continue;
+            images[i] = renderShot(shots_[i], p, options_.render, cancel_);
+            applyVignette(images[i], shots_[i].photo.vignetteSigmaPx);
         }
         ++result_.evaluations;
         return images;
     }
 
-    // The loss of renders (vignetted, before exposure); with `record`, kept if the best so far.
-    double evaluate(const WovenParams& p, std::vector<Image> images, bool record) {
+    // The exposure shared by the free shots that `images` holds (renders, vignetted, before
+    // exposure): the least-squares scale of their block means, from the reflected shots where
+    // any is free (a backlit shot's brightness is the transmission's to match). 1 where none is.
+    double freeExposure(const std::vector<Image>& images) const {
+        bool anyReflectedFree = false;
+        for (size_t i = 0; i < shots_.size(); ++i)
+            anyReflectedFree = anyReflectedFree || (!shots_[i].photo.exposure && reflected_[i] && !images[i].pixels.empty());
+        const auto counted = [&](size_t i) {
+            return !shots_[i].photo.exposure && !images[i].pixels.empty() && (reflected_[i] || !anyReflectedFree);
+        };
         std::vector<float> photoMeans, renderMeans;
-        bool anyFree = false;
         for (size_t i = 0; i < shots_.size(); ++i) {
-            if (shots_[i].photo.exposure) continue;
-            anyFree = true;
+            if (!counted(i)) continue;
             const std::vector<float>& pm = photoStats_[i].values[kStatBlockMeans];
             photoMeans.insert(photoMeans.end(), pm.begin(), pm.end());
             const std::vector<float> rm = blockMeans(images[i]);
             renderMeans.insert(renderMeans.end(), rm.begin(), rm.end());
         }
-        double free = anyFree ? bestExposure(photoMeans, renderMeans) : 1.0;
+        if (photoMeans.empty()) return 1.0;
+        double free = bestExposure(photoMeans, renderMeans);
         // Where a free shot's photo clips its highlights, the exposure whose render, clipped
         // alike, has the photo's block means: a few steps of that fixed point, each raising the
         // exposure by what the clipping took away.
         bool clips = false;
-        for (const Shot& s : shots_) clips = clips || (!s.photo.exposure && std::isfinite(photoSaturation(s.photo)));
+        for (size_t i = 0; i < shots_.size(); ++i) clips = clips || (counted(i) && std::isfinite(photoSaturation(shots_[i].photo)));
         for (int step = 0; clips && step < kClippedExposureSteps; ++step) {
             std::vector<float> clipped;
             for (size_t i = 0; i < shots_.size(); ++i) {
-                if (shots_[i].photo.exposure) continue;
+                if (!counted(i)) continue;
                 Image exposed = images[i];
                 expose(exposed, float(free), photoSaturation(shots_[i].photo));
                 const std::vector<float> m = blockMeans(exposed);
@@ -229,9 +244,17 @@ private:
             }
             free *= bestExposure(photoMeans, clipped);
         }
+        return free;
+    }
+
+    // The loss of renders (vignetted, before exposure); with `record`, kept if the best so far. A
+    // shot whose image is empty is left out (only a loss that is not recorded may leave one out).
+    double evaluate(const WovenParams& p, std::vector<Image> images, bool record) {
+        const double free = freeExposure(images);
         double total = 0.0;
         std::vector<LossTerms> terms(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) {
+            if (images[i].pixels.empty()) continue;
             expose(images[i], float(shots_[i].photo.exposure.value_or(float(free))), photoSaturation(shots_[i].photo));
             std::optional<ThreadGrid> grid = renderGrid(p, i);
             if (grid) foldPhoto(i, grid->period);
@@ -326,15 +349,87 @@ private:
     WovenParams initialColours(WovenParams p) {
         p.weft_color = p.warp_color = glm::vec3(0.5f);
         const std::vector<Image> images = render(p);
+        const size_t first = size_t(std::find(reflected_.begin(), reflected_.end(), true) - reflected_.begin());
         glm::dvec3 photo(0.0), rendered(0.0);
-        for (const glm::vec3& v : shots_[0].image.pixels) photo += glm::dvec3(v);
-        for (const glm::vec3& v : images[0].pixels) rendered += glm::dvec3(v);
-        const double e = shots_[0].photo.exposure.value_or(1.0f);
+        for (const glm::vec3& v : shots_[first].image.pixels) photo += glm::dvec3(v);
+        for (const glm::vec3& v : images[first].pixels) rendered += glm::dvec3(v);
+        const double e = shots_[first].photo.exposure.value_or(1.0f);
         for (int c = 0; c < 3; ++c)
             p.weft_color[c] = float(std::clamp(0.5 * photo[c] / std::max(e * rendered[c], 1e-9), 0.02, 0.9));
         p.warp_color = p.weft_color;
         evaluate(p, images, true);
         return p;
+    }
+
+    // The transmission solved for p's shape and colours (withTransmission()), where the backlit
+    // shots' photos are still compared with opaque yarns: the start the later stages keep.
+    WovenParams initialTransmission(WovenParams p) {
+        std::vector<Image> images = render(p, reflected_);
+        const double free = freeExposure(images);
+        const std::vector<Image> transmitted = withTransmission(p, free);
+        for (size_t i = 0; i < shots_.size(); ++i)
+            if (!reflected_[i]) images[i] = transmitted[i];
+        evaluate(p, std::move(images), true);
+        return p;
+    }
+
+    // The backlit shots' renders are linear in T_d = t (1 - g) and T_g = t g, the transmission's
+    // diffuse and glossy parts (MODEL_TRANSMISSION.md section 2), once the colours and shape are
+    // set: two renders, one at t = 1, g = 0 and one at t = 1, g = 1, and the photos' block means
+    // (relative to each channel's mean, as the loss weighs them) give both by least squares with
+    // neither below 0. Sets p's transmission and transmission_gloss and returns the backlit
+    // shots' renders (vignetted, before exposure) at them; the other shots' are empty.
+    // `freeExposure`: the free shots' exposure.
+    std::vector<Image> withTransmission(WovenParams& p, double freeExposure) {
+        std::vector<bool> backlit(shots_.size());
+        for (size_t i = 0; i < shots_.size(); ++i) backlit[i] = !reflected_[i];
+        WovenParams q = p;
+        q.transmission = 1.0f;
+        q.transmission_gloss = 0.0f;
+        const std::vector<Image> diffuse = render(q, backlit);
+        q.transmission_gloss = 1.0f;
+        const std::vector<Image> glossy = render(q, backlit);
+        // Normal equations of sum w (photo - e (a D + b G))^2 over the backlit shots' block means.
+        glm::dmat2 A(0.0);
+        glm::dvec2 y(0.0);
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (!backlit[i]) continue;
+            const double e = shots_[i].photo.exposure.value_or(float(freeExposure));
+            const std::vector<float>& photo = photoStats_[i].values[kStatBlockMeans];
+            const std::vector<float> d = blockMeans(diffuse[i]), g = blockMeans(glossy[i]);
+            const glm::dvec3 scale = channelMeans(photo, 1);
+            for (size_t k = 0; k < photo.size(); ++k) {
+                const double w = 1.0 / (scale[int(k % 3)] * scale[int(k % 3)]);
+                const glm::dvec2 x(e * d[k], e * g[k]);
+                A += w * glm::outerProduct(x, x);
+                y += w * x * double(photo[k]);
+            }
+        }
+        // The unconstrained minimum, else the better of the two edges (one part alone).
+        glm::dvec2 ab(0.0);
+        if (std::abs(glm::determinant(A)) > 1e-12 * (A[0][0] * A[1][1] + 1e-300)) ab = glm::inverse(A) * y;
+        if (!(ab.x >= 0.0 && ab.y >= 0.0)) {
+            const glm::dvec2 onlyD(A[0][0] > 0.0 ? std::max(0.0, y.x / A[0][0]) : 0.0, 0.0);
+            const glm::dvec2 onlyG(0.0, A[1][1] > 0.0 ? std::max(0.0, y.y / A[1][1]) : 0.0);
+            const auto cost = [&](const glm::dvec2& v) { return glm::dot(v, A * v) - 2.0 * glm::dot(v, y); };
+            ab = cost(onlyD) <= cost(onlyG) ? onlyD : onlyG;
+        }
+        const double t = ab.x + ab.y;
+        if (t > 0.0) {
+            p.transmission = float(std::min(t, 1.0));
+            p.transmission_gloss = float(std::clamp(ab.y / t, 0.0, 1.0));
+        } else {
+            p.transmission = 0.0f;
+        }
+        const float kd = p.transmission * (1.0f - p.transmission_gloss), kg = p.transmission * p.transmission_gloss;
+        std::vector<Image> images(shots_.size());
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (!backlit[i]) continue;
+            images[i] = diffuse[i];
+            for (size_t k = 0; k < images[i].pixels.size(); ++k)
+                images[i].pixels[k] = kd * diffuse[i].pixels[k] + kg * glossy[i].pixels[k];
+        }
+        return images;
     }
 
     // Stage 2: the weaves the photo's spectrum shortlists (weave_lattice.h), each with its
@@ -386,7 +481,7 @@ private:
         if (whiteLight_) {
             p.weft_color = glm::vec3(1.0f, 0.0f, 0.0f);
             p.warp_color = glm::vec3(0.0f, 1.0f, 0.0f);
-            const std::vector<Image> images = render(p);
+            const std::vector<Image> images = render(p, reflected_);
             for (size_t s = 0; s < shots_.size(); ++s) {
                 basis[s] = {images[s], images[s], images[s]};
                 for (size_t i = 0; i < images[s].pixels.size(); ++i) {
@@ -399,12 +494,12 @@ private:
             return basis;
         }
         p.weft_color = p.warp_color = glm::vec3(0.0f);
-        const std::vector<Image> black = render(p);
+        const std::vector<Image> black = render(p, reflected_);
         p.weft_color = glm::vec3(1.0f);
-        const std::vector<Image> weft = render(p);
+        const std::vector<Image> weft = render(p, reflected_);
         p.weft_color = glm::vec3(0.0f);
         p.warp_color = glm::vec3(1.0f);
-        const std::vector<Image> warp = render(p);
+        const std::vector<Image> warp = render(p, reflected_);
         for (size_t s = 0; s < shots_.size(); ++s) {
             basis[s] = {weft[s], warp[s], black[s]};
             for (size_t i = 0; i < black[s].pixels.size(); ++i) {
@@ -535,29 +630,39 @@ private:
     // means and tile folds best (linear_colours.h); kept if the best so far. One colour basis,
     // kColourSolves solves, each folding the basis at the phase and shift of the last colours'
     // mixture.
+    // The colours are solved from the reflected shots alone; the backlit shots then take the
+    // transmission solved at those colours (withTransmission()).
     double evaluateSolvingColours(WovenParams p) {
         const ColourBasis basis = colourBasis(p);
         if (cancel_.load()) return INFINITY;
         // Where only some exposures are free, the free one is held at its best so far: the
         // colours and the exposure are then a product only in the free shots.
+        bool allFree = true;
+        for (size_t i = 0; i < shots_.size(); ++i) allFree = allFree && (!reflected_[i] || !shots_[i].photo.exposure);
         std::vector<std::optional<double>> exposures;
-        for (const Shot& s : shots_)
-            exposures.push_back(s.photo.exposure ? std::optional<double>(*s.photo.exposure)
-                                : allFree_        ? std::nullopt
-                                                  : std::optional<double>(result_.exposure));
         std::vector<const ImageStats*> photos;
-        for (const ImageStats& s : photoStats_) photos.push_back(&s);
+        std::vector<size_t> solved;  // the shots the colours are solved from
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (!reflected_[i]) continue;
+            const Shot& s = shots_[i];
+            exposures.push_back(s.photo.exposure ? std::optional<double>(*s.photo.exposure)
+                                : allFree         ? std::nullopt
+                                                  : std::optional<double>(result_.exposure));
+            photos.push_back(&photoStats_[i]);
+            solved.push_back(i);
+        }
         for (int solve = 0; solve < kColourSolves; ++solve) {
             const std::vector<Image> reference = mixture(basis, p);
-            std::vector<LinearStats> stats(shots_.size());
-            for (size_t i = 0; i < shots_.size(); ++i) {
-                for (size_t k = 0; k < 3; ++k) stats[i].blockMeans[k] = blockMeans(basis[i][k]);
+            std::vector<LinearStats> stats(solved.size());
+            for (size_t j = 0; j < solved.size(); ++j) {
+                const size_t i = solved[j];
+                for (size_t k = 0; k < 3; ++k) stats[j].blockMeans[k] = blockMeans(basis[i][k]);
                 const std::optional<ThreadGrid> grid = renderGrid(p, i);
                 if (!grid) continue;
                 foldPhoto(i, grid->period);
                 const std::vector<TileFold> folds =
                     foldsLaidOn(photoStats_[i].fold, reference[i], {&basis[i][0], &basis[i][1], &basis[i][2]}, *grid);
-                std::copy(folds.begin(), folds.end(), stats[i].folds.begin());
+                std::copy(folds.begin(), folds.end(), stats[j].folds.begin());
             }
             const LinearColours c = solveColours(photos, stats, exposures);
             if (!c.valid) break;
@@ -565,15 +670,23 @@ private:
             p.weft_color = glm::vec3(glm::clamp(c.weft, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
             p.warp_color = glm::vec3(glm::clamp(c.warp, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
         }
-        return evaluate(p, mixture(basis, p), true);
+        std::vector<Image> images = mixture(basis, p);
+        if (transmitted_) {
+            const std::vector<Image> transmitted = withTransmission(p, freeExposure(images));
+            if (cancel_.load()) return INFINITY;
+            for (size_t i = 0; i < shots_.size(); ++i)
+                if (!reflected_[i]) images[i] = transmitted[i];
+        }
+        return evaluate(p, std::move(images), true);
     }
 
-    // Stage 4: BOBYQA over the shape from the best so far, the colours solved at each point,
-    // again from where it stopped while that gains (it stops where its trust region shrinks,
-    // often short of the minimum), until the budget is spent. `shotRs`: the shot material's rs,
-    // held where an exposure is free. Returns the points it tried.
+    // Stage 4: BOBYQA over the shape from the best so far, the colours (and the transmission,
+    // where backlit shots join reflected ones) solved at each point, again from where it stopped
+    // while that gains (it stops where its trust region shrinks, often short of the minimum),
+    // until the budget is spent. `shotRs`: the shot material's rs, held where an exposure is
+    // free. Returns the points it tried.
     int refine(float shotRs) {
-        stage_ = "gloss, widths, bump";
+        stage_ = transmitted_ ? "gloss, widths, bump, transmission" : "gloss, widths, bump";
         const std::vector<size_t> axes = shapeAxes();
         int points = 0;
         for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
@@ -617,8 +730,11 @@ private:
     std::vector<std::optional<ThreadGrid>> photoGrids_;        // per shot, where its tile fold is read
     std::string stage_;
     FitResult result_;
-    bool anyFree_ = false, allFree_ = true;  // of the shots' exposures
+    bool anyFree_ = false;  // of the shots' exposures
     bool whiteLight_ = true;                 // every shot makes its colour basis in one render
+    // Per shot: the colours are fitted to it (not backlit, or every shot is).
+    std::vector<bool> reflected_;
+    bool transmitted_ = false;  // backlit shots beside reflected ones: the transmission is solved
 };
 
 }  // namespace

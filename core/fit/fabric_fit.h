@@ -11,6 +11,9 @@
 //   4. gloss (ex, ey, and rs where no exposure is free), yarn widths and bump (cy) by NLopt's
 //      BOBYQA, the colours and a free exposure solved in closed form at each point from the same
 //      mixtures (linear_colours.h), until the time budget is spent.
+// Where some shots are lit from behind (Shot::backlit) and others not, the colours are fitted to
+// the others, and the backlit shots' transmission (transmission, transmission_gloss) is solved in
+// closed form from two renders of them, after the first colours and at each point of stage 4.
 // The best parameters met are kept throughout: a cancelled or timed-out fit returns them.
 #include <atomic>
 #include <functional>

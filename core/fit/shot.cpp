@@ -85,6 +85,7 @@ Shot loadShot(const std::string& path, const std::string& target) {
     const CameraModel model(camera, frame.width, frame.height);
     const Ray ray = model.generateRay(glm::vec2(0.5f * float(frame.width), 0.5f * float(frame.height)));
     double nearest = INFINITY;
+    glm::dvec3 centre(0.0), normal(0.0);  // where the central ray meets the target
     for (size_t i : shot.meshes) {
         const Mesh& mesh = scene.meshes[i];
         if (mesh.uvs.empty()) continue;
@@ -111,11 +112,21 @@ Shot loadShot(const std::string& path, const std::string& target) {
             };
             shot.uvPerPixel = glm::dmat2(solve(glm::dvec3(f.dpdx)), solve(glm::dvec3(f.dpdy)));
             nearest = hit->z;
+            centre = p;
+            normal = n;
         }
     }
     if (!std::isfinite(nearest))
         throw fail("--target " + target + " is not what the image centre sees (or has no texture coordinates there): "
                    "a shot frames the swatch, the camera straight above it");
+    const auto side = [&](const glm::dvec3& towards) { return glm::dot(towards, normal) > 0.0; };
+    const bool cameraSide = side(glm::dvec3(ray.o) - centre);
+    shot.backlit = !scene.lights.empty() && scene.environment.color == glm::vec3(0.0f);
+    for (const PunctualLight& l : scene.lights) {
+        const glm::dvec3 towards = l.type == PunctualLight::Type::Directional ? -glm::dvec3(l.direction)
+                                                                              : glm::dvec3(l.position) - centre;
+        shot.backlit = shot.backlit && side(towards) != cameraSide;
+    }
     shot.scene = std::make_shared<const SceneDescription>(std::move(scene));
     return shot;
 }

@@ -17,7 +17,7 @@ namespace woven::test {
 namespace fs = std::filesystem;
 
 std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
-                          float lightOffset) {
+                          const glm::vec3& light, float lightIntensity) {
     SceneDescription swatch;
     swatch.meshes.push_back(flatCloth(glm::vec2(kSwatchMetres), "Swatch"));
     Material material;
@@ -26,10 +26,11 @@ std::string writeShotFile(const std::string& dir, const std::string& name, int s
     std::vector<std::string> warnings;
     writeGltf((fs::path(dir) / "swatch.gltf").string(), swatch, Camera{}, warnings);
     // 15 cm above the swatch's centre (the origin), a 13 degree lens that sees 3.4 cm of it, v up
-    // the image; the "flash" beside the lens (5 mm, as a phone's is, by default).
+    // the image; the "flash" beside the lens (5 mm, as a phone's is, by default) or a lamp behind the swatch.
     std::ofstream f(fs::path(dir) / (name + ".json"));
     f << "{\"gltf\": \"swatch.gltf\",\n"
-      << " \"lights\": [{\"type\": \"point\", \"position\": [" << lightOffset << ", 0.15, 0], \"intensity\": 0.08}],\n"
+      << " \"lights\": [{\"type\": \"point\", \"position\": [" << light.x << ", " << light.y << ", " << light.z
+      << "], \"intensity\": " << lightIntensity << "}],\n"
       << " \"camera\": {\"position\": [0, 0.15, 0], \"target\": [0, 0, 0], \"up\": [0, 0, -1], \"yfov_degrees\": 13},\n"
       << " \"render\": {\"width\": " << size << ", \"height\": " << size << "}"
       << (photoJson.empty() ? "" : ",\n \"photo\": " + photoJson) << "}\n";
@@ -39,9 +40,9 @@ std::string writeShotFile(const std::string& dir, const std::string& name, int s
 std::string writeCaptureShot(const std::string& dir, const std::string& name, const RigPhoto& photo) {
     std::string key = "{\"image\": \"" + name + ".png\"";
     if (photo.vignetteSigmaPx > 0.0f) key += ", \"vignette_sigma_px\": " + std::to_string(photo.vignetteSigmaPx);
-    if (!photo.exposureKnown) key += ", \"exposure\": \"free\"";
+    key += ", \"exposure\": " + (photo.exposureKnown ? std::to_string(photo.exposure) : std::string("\"free\""));
     key += "}";
-    const std::string shot = writeShotFile(dir, name, photo.size, key, photo.lightOffset);
+    const std::string shot = writeShotFile(dir, name, photo.size, key, photo.light, photo.lightIntensity);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(shot));
     for (Material& m : scene->materials)

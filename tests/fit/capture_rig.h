@@ -21,8 +21,11 @@ struct RigPhoto {
     float noise = 0.0f;          // sensor noise: Gaussian, this fraction of each value
     float vignetteSigmaPx = 0;   // applied to the photo; the shot says it
     float exposure = 1.0f;       // applied to the photo
-    bool exposureKnown = true;   // false: the shot says "free"
-    float lightOffset = 0.005f;  // metres beside the camera, along +x
+    bool exposureKnown = true;   // true: the shot says it; false: "free"
+    // The point light: by default the "flash", 5 mm beside the lens, along +x. Below the swatch
+    // (y < 0) it lights it from behind, as the backlit photo is taken.
+    glm::vec3 light{0.005f, 0.15f, 0.0f};
+    float lightIntensity = 0.08f;  // W/sr
 };
 
 // The shot file's path (DIR/NAME.json beside DIR/NAME.png and DIR/swatch.gltf).
@@ -30,6 +33,6 @@ std::string writeCaptureShot(const std::string& dir, const std::string& name, co
 
 // The same shot file with its photo key replaced by `photoJson` (a JSON object, or "" for none).
 std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
-                          float lightOffset = 0.005f);
+                          const glm::vec3& light = RigPhoto{}.light, float lightIntensity = RigPhoto{}.lightIntensity);
 
 }  // namespace woven::test

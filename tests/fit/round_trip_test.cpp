@@ -29,7 +29,13 @@ protected:
 
     // `renders` > 0: a budget of renders instead of time, so the fit is the same on any machine.
     FitResult fit(const RigPhoto& photo, double seconds, int renders = 0, int spp = 2) {
-        shots_ = {loadShot(writeCaptureShot(dir_.string(), "shot", photo), "Swatch")};
+        return fit(std::vector<RigPhoto>{photo}, seconds, renders, spp);
+    }
+    // Several shots of one swatch, in the rig under different lights.
+    FitResult fit(const std::vector<RigPhoto>& photos, double seconds, int renders = 0, int spp = 2) {
+        shots_.clear();
+        for (size_t i = 0; i < photos.size(); ++i)
+            shots_.push_back(loadShot(writeCaptureShot(dir_.string(), "shot" + std::to_string(i), photos[i]), "Swatch"));
         FitOptions options;
         options.seconds = seconds;
         options.renders = renders;
@@ -43,7 +49,8 @@ protected:
                   << r.params.warp_color.r << " " << r.params.warp_color.g << " " << r.params.warp_color.b
                   << ", exposure " << r.exposure << ", rs " << r.params.rs << ", ex " << r.params.ex << ", ey "
                   << r.params.ey << ", widths " << r.params.yarn_width << " " << r.params.warp_width << ", cy "
-                  << r.params.cy
+                  << r.params.cy << ", transmission " << r.params.transmission << ", transmission_gloss "
+                  << r.params.transmission_gloss
                   << (r.complete ? "" : ", incomplete") << "\n";
         for (const std::string& w : r.warnings) std::cerr << "fit: " << w << "\n";
         return r;
@@ -189,6 +196,39 @@ TEST_F(RoundTrip, PlainWeaveClassAndColoursWithNoiseVignetteAndUnknownExposure) 
 TEST_F(RoundTrip, TwillWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({1, 3, 1}); }
 TEST_F(RoundTrip, SatinWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({4, 1, 2}); }
 TEST_F(RoundTrip, SatinWeaveClassFromAPhotoHalfClipped) { expectWeave({4, 1, 2}, 1.6f); }
+
+// The backlit photo's light through the yarns (MODEL_TRANSMISSION.md): a flash shot and a shot lit
+// from 15 cm behind the swatch, the lamp 2 cm aside so that the glossy part's forward peak falls
+// inside the frame, 10 times the flash's intensity as a lamp behind cloth is exposed for. Both
+// photos share the exposure, given here. With a free one (0.478 fitted for 0.5) t came out 0.589
+// and the backlit render's red 13 % low: the transmitted colour t (1 - R_d) R_d^2 / max(R_d)^2
+// doubles the colours' errors and the yarns' widths set how much of each yarn the light crosses
+// (docs/FIT.md).
+TEST_F(RoundTrip, PlainWeaveTransmissionFromABacklitShot) {
+    RigPhoto flash;
+    flash.truth = cloth({1, 1, 1});
+    flash.truth.transmission = 0.5f;
+    flash.truth.transmission_gloss = 0.3f;
+    flash.noise = 0.03f;
+    flash.exposure = 0.5f;
+    RigPhoto backlit = flash;
+    backlit.light = {0.02f, -0.15f, 0.0f};
+    backlit.lightIntensity = 0.8f;
+    backlit.seed += 1;
+    const FitResult r = fit({flash, backlit}, 600.0, 250, 8);
+    EXPECT_EQ(r.params.pattern, flash.truth.pattern) << "fitted " << describeWeave(r.params.pattern);
+    expectThreadCounts(r, flash.truth);
+    // Measured 0.526. The split between the glossy and the diffuse part is not checked: it came
+    // out 0.185 for 0.3, stage 4 ending far from the truth's exponents (ex 100 and ey 2 for 60 and 4).
+    EXPECT_NEAR(r.params.transmission, 0.5f, 0.05f);
+    // Each photo's mean colour, the render's within 5 % per channel.
+    for (size_t i = 0; i < shots_.size(); ++i) {
+        glm::dvec3 photo(0.0), render(0.0);
+        for (const glm::vec3& v : shots_[i].image.pixels) photo += glm::dvec3(v);
+        for (const glm::vec3& v : r.shots[i].render.pixels) render += glm::dvec3(v);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(render[c] / photo[c], 1.0, 0.05) << "shot " << i << " channel " << c;
+    }
+}
 
 TEST_F(RoundTrip, PlainWeaveTruthFoldsOntoThePhoto) { expectTruthFolds({1, 1, 1}); }
 TEST_F(RoundTrip, TwillTruthFoldsOntoThePhoto) { expectTruthFolds({1, 3, 1}); }
