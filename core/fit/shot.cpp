@@ -131,4 +131,35 @@ Shot loadShot(const std::string& path, const std::string& target) {
     return shot;
 }
 
+Shot turnedShot(const Shot& shot, double radians) {
+    Shot turned = shot;
+    if (radians == 0.0) return turned;
+    // UVs rotated by a (u' = u cos a - v sin a about the centre) move U's gradient in the image to
+    // cos a gradU - sin a gradV: a's sign is the one that turns it by +radians there, which
+    // depends on which way the camera sees the UVs' axes.
+    const glm::dmat2& m = shot.uvPerPixel;
+    const glm::dvec2 gradU(m[0][0], m[1][0]), gradV(m[0][1], m[1][1]);
+    const glm::dvec2 g = std::cos(radians) * gradU - std::sin(radians) * gradV;
+    const double a = (gradU.x * g.y - gradU.y * g.x) * radians >= 0.0 ? radians : -radians;
+    const glm::dmat2 rotation(std::cos(a), std::sin(a), -std::sin(a), std::cos(a));
+    turned.uvPerPixel = rotation * m;
+
+    auto scene = std::make_shared<SceneDescription>(*shot.scene);
+    glm::dvec2 centre(0.0);
+    size_t count = 0;
+    for (size_t i : shot.meshes)
+        for (const glm::vec2& uv : scene->meshes[i].uvs) {
+            centre += glm::dvec2(uv);
+            ++count;
+        }
+    centre /= double(std::max<size_t>(count, 1));
+    for (size_t i : shot.meshes) {
+        Mesh& mesh = scene->meshes[i];
+        mesh.tangents.clear();
+        for (glm::vec2& uv : mesh.uvs) uv = glm::vec2(centre + rotation * (glm::dvec2(uv) - centre));
+    }
+    turned.scene = scene;
+    return turned;
+}
+
 }  // namespace woven

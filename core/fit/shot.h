@@ -35,6 +35,11 @@ struct Shot {
     bool backlit = false;
 };
 
+// The shot with its target's weave turned by `radians` in the image, as the cloth lay turned in
+// the photo (threadTurn() of its peaks): the target's UVs rotated about their mean, their tangents
+// dropped so that the renderer's own follow the UVs, and uvPerPixel rotated alike.
+Shot turnedShot(const Shot& shot, double radians);
+
 // Throws FitError naming the file: no "photo" key, a target that names nothing, an image that is
 // missing, cannot be decoded or whose size differs from the render's, a target the image centre
 // does not see.

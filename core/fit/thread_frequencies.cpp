@@ -32,10 +32,10 @@ std::vector<Candidate> candidates(const PowerSpectrum& s, const glm::dvec2& dire
     std::vector<Candidate> out;
     for (double f = fMin; f <= fMax; f += bin) {
         // The strongest bin of this ring of the window, kept if no bin around it is stronger.
-        const auto peak = strongestPeak(s, strongest->frequency, halfAngle, f, f + bin);
+        const auto peak = strongestPeak(s, direction, halfAngle, f, f + bin);
         if (!peak || peak->power < 0.05 * strongest->power) continue;
         const double at = glm::length(peak->frequency);
-        const auto around = strongestPeak(s, strongest->frequency, halfAngle, std::max(fMin, at - 2.0 * bin), at + 2.0 * bin);
+        const auto around = strongestPeak(s, direction, halfAngle, std::max(fMin, at - 2.0 * bin), at + 2.0 * bin);
         if (!around || around->power > peak->power) continue;
         Candidate c{*peak, 0.0, turnFrom(direction, peak->frequency)};
         for (int n = 1; n <= 3; ++n) c.score += std::log(powerNear(s, folded(double(n) * peak->frequency)) + floor);
@@ -88,6 +88,21 @@ ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel, double
     for (std::optional<SpectralPeak>* peak : {&peaks.ends, &peaks.picks})
         if (*peak) (*peak)->frequency = refineThreadFrequency(lum, image.width, image.height, (*peak)->frequency);
     return peaks;
+}
+
+double threadTurn(const ThreadPeaks& peaks, const glm::dmat2& uvPerPixel) {
+    const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+    double sum = 0.0;
+    int n = 0;
+    if (peaks.ends) {
+        sum += turnFrom(gradU, peaks.ends->frequency);
+        ++n;
+    }
+    if (peaks.picks) {
+        sum += turnFrom(gradV, peaks.picks->frequency);
+        ++n;
+    }
+    return n > 0 ? sum / n : 0.0;
 }
 
 }  // namespace woven

@@ -47,4 +47,9 @@ constexpr double kThreadSkewDegrees = 2.0;
 // fold (tile_fold.h's refineThreadFrequency).
 ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel, double halfAngle);
 
+// How far the threads lie turned in the image from where the camera puts them: the mean of the
+// found peaks' signed angles, radians, from the directions `uvPerPixel` gives (0 where neither
+// was found).
+double threadTurn(const ThreadPeaks& peaks, const glm::dmat2& uvPerPixel);
+
 }  // namespace woven

@@ -47,6 +47,16 @@ std::string writeCaptureShot(const std::string& dir, const std::string& name, co
     auto scene = std::make_shared<SceneDescription>(loadScene(shot));
     for (Material& m : scene->materials)
         if (m.name == "Swatch") m.woven = photo.truth;
+    const float turn = glm::radians(photo.turnDegrees);
+    for (Mesh& mesh : scene->meshes) {
+        if (turn == 0.0f) continue;
+        mesh.tangents.clear();  // the renderer's, from the turned UVs
+        for (glm::vec2& uv : mesh.uvs) {
+            // About the UVs' centre (the swatch's, where the camera looks).
+            const glm::vec2 c(0.5f * kSwatchMetres), d = uv - c;
+            uv = c + glm::vec2(std::cos(turn) * d.x - std::sin(turn) * d.y, std::sin(turn) * d.x + std::cos(turn) * d.y);
+        }
+    }
     RenderSettings settings = defaultRenderSettings(*scene);
     settings.spp = photo.spp;
     settings.seed = photo.seed;

@@ -26,6 +26,9 @@ struct RigPhoto {
     // (y < 0) it lights it from behind, as the backlit photo is taken.
     glm::vec3 light{0.005f, 0.15f, 0.0f};
     float lightIntensity = 0.08f;  // W/sr
+    // The cloth in the photo turned by this many degrees about the swatch's centre, as a swatch
+    // laid a little askew: the shot's mesh stays along the camera's axes.
+    float turnDegrees = 0.0f;
 };
 
 // The shot file's path (DIR/NAME.json beside DIR/NAME.png and DIR/swatch.gltf).
