@@ -74,6 +74,18 @@ protected:
         return p;
     }
 
+    // A photo as a phone takes it: 3 % sensor noise, a 150 px vignette, an exposure the fit is
+    // not told.
+    static RigPhoto noisyPhoto(glm::ivec3 pattern, float exposure = 0.5f) {
+        RigPhoto photo;
+        photo.truth = cloth(pattern);
+        photo.noise = 0.03f;
+        photo.vignetteSigmaPx = 150.0f;
+        photo.exposure = exposure;
+        photo.exposureKnown = false;
+        return photo;
+    }
+
     // Thread counts within 3 %, the bound: the spectrum's peaks, located to a tenth of a
     // bin of 1/128 cycle per pixel, are good to 0.5 % at 27 threads across.
     static void expectThreadCounts(const FitResult& r, const WovenParams& truth) {
@@ -107,12 +119,7 @@ protected:
     // thread counts' calibration; 8 samples a pixel, as at 2 to 4 the renders' own noise raises
     // their spectrum above the photo's and the truth's loss above a wrong fit's.
     FitResult expectWeave(glm::ivec3 pattern, float exposure = 0.5f, int renders = 115) {
-        RigPhoto photo;
-        photo.truth = cloth(pattern);
-        photo.noise = 0.03f;
-        photo.vignetteSigmaPx = 150.0f;
-        photo.exposure = exposure;
-        photo.exposureKnown = false;
+        const RigPhoto photo = noisyPhoto(pattern, exposure);
         FitResult r = fit(photo, 600.0, renders, 8);
         EXPECT_EQ(r.params.pattern, pattern) << "fitted " << describeWeave(r.params.pattern);
         expectThreadCounts(r, photo.truth);
@@ -125,12 +132,7 @@ protected:
     // spectrum's peaks alone, whose 0.9 % error drifts the fold by a tenth of a thread at the
     // edges. The 5-end satin's stays at 2e-3 (not understood yet), so it is not checked here.
     void expectTruthFolds(glm::ivec3 pattern) {
-        RigPhoto photo;
-        photo.truth = cloth(pattern);
-        photo.noise = 0.03f;
-        photo.vignetteSigmaPx = 150.0f;
-        photo.exposure = 0.5f;
-        photo.exposureKnown = false;
+        const RigPhoto photo = noisyPhoto(pattern);
         shots_ = {loadShot(writeCaptureShot(dir_.string(), "shot", photo), "Swatch")};
         FitOptions options;
         options.render.spp = 8;
@@ -179,12 +181,7 @@ TEST_F(RoundTrip, PlainWeaveThreadCounts) {
 }
 
 TEST_F(RoundTrip, SatinThreadCountsWithNoiseVignetteAndUnknownExposure) {
-    RigPhoto photo;
-    photo.truth = cloth({4, 1, 2});
-    photo.noise = 0.03f;
-    photo.vignetteSigmaPx = 150.0f;
-    photo.exposure = 1.6f;
-    photo.exposureKnown = false;
+    const RigPhoto photo = noisyPhoto({4, 1, 2}, 1.6f);
     expectThreadCounts(fit(photo, seconds()), photo.truth);
 }
 
@@ -236,12 +233,7 @@ TEST_F(RoundTrip, PlainWeaveTransmissionFromABacklitShot) {
 // 0.017, the weft within 1 % and the warp within 7 %.
 TEST_F(RoundTrip, TwillLaidAskew) {
     for (float degrees : {3.0f, -3.0f}) {
-        RigPhoto photo;
-        photo.truth = cloth({1, 3, 1});
-        photo.noise = 0.03f;
-        photo.vignetteSigmaPx = 150.0f;
-        photo.exposure = 0.5f;
-        photo.exposureKnown = false;
+        RigPhoto photo = noisyPhoto({1, 3, 1});
         photo.turnDegrees = degrees;
         const FitResult r = fit(photo, 600.0, 115, 8);
         EXPECT_EQ(r.params.pattern, photo.truth.pattern) << "fitted " << describeWeave(r.params.pattern);
