@@ -13,6 +13,7 @@ Image renderShot(const Shot& shot, const WovenParams& params, const FitRenderSet
     settings.maxDepth = 1;
     settings.noiseThreshold = 0.0;
     settings.integrator = "path";
+    settings.renderPasses = false;
     RenderJob job(scene, settings);
     job.run(cancel);
     return job.snapshot().radiance;

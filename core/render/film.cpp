@@ -19,20 +19,22 @@ std::vector<glm::vec3> PassImage::combined() const {
     return image;
 }
 
-Film::Film(int width, int height)
+Film::Film(int width, int height, bool passes)
     : width_(width), height_(height), sum_(3 * size_t(width) * height), count_(size_t(width) * height, 0.0f),
-      passSums_(size_t(width) * height) {}
+      passSums_(passes ? size_t(width) * height : 0) {}
 
 void Film::addPass(const PassImage& pass) {
-    const std::vector<glm::vec3> estimate = pass.combined();
+    const std::vector<glm::vec3> estimate = passSums_.empty() ? std::vector<glm::vec3>{} : pass.combined();
     // Each pixel's sums are its own: any order, any thread (the calling arena's), the same sums.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count_.size(), 4096), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
             if (!pass.samples(i)) continue;
+            count_[i] += 1.0f;
+            for (int c = 0; c < 3; ++c) sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
+            if (passSums_.empty()) continue;
             PassSums& p = passSums_[i];
             const FirstHit& hit = pass.firstHits[i];
             for (int c = 0; c < 3; ++c) {
-                sum_[3 * i + size_t(c)].add(pass.radiance[i][c]);
                 p.albedo[c].add(hit.albedo[c]);
                 p.normal[c].add(hit.normal[c]);
                 p.direct[c].add(hit.direct[c]);
@@ -41,7 +43,6 @@ void Film::addPass(const PassImage& pass) {
             p.depth.add(hit.depth);
             const float directLuminance = luminance(hit.direct);
             p.directSquare.add(directLuminance * directLuminance);
-            count_[i] += 1.0f;
         }
     });
     pass.forEachSplat([&](size_t i, const glm::vec3& L) {

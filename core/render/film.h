@@ -65,7 +65,8 @@ int pixelIndex(const glm::vec2& pRaster, int width, int height);
 
 class Film {
 public:
-    Film(int width, int height);
+    // `passes` false: the render passes' sums are not kept (FilmImage::passSums empty).
+    Film(int width, int height, bool passes = true);
 
     void addPass(const PassImage& pass);
     // Mean radiance: (samples + splats) / count. pbrt-v3 scales its splat buffer by 1 / spp, which
@@ -79,7 +80,7 @@ private:
     int width_, height_, passes_ = 0;
     std::vector<ExactSum> sum_;  // R, G, B per pixel
     std::vector<float> count_;
-    std::vector<PassSums> passSums_;
+    std::vector<PassSums> passSums_;  // empty where the film keeps no passes
 };
 
 template <typename F>

@@ -8,8 +8,7 @@ namespace woven {
 
 class PathIntegrator : public Integrator {
 public:
-    PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave)
-        : scene_(scene), camera_(camera), maxDepth_(maxDepth), filterWeave_(filterWeave) {}
+    PathIntegrator(const RenderScene& scene, const CameraModel& camera, int maxDepth, bool filterWeave);
 
     glm::vec3 Li(const glm::vec2& pRaster, Sampler& sampler, SampleSink& sink) const override;
 
@@ -23,6 +22,8 @@ private:
     const CameraModel& camera_;
     int maxDepth_;
     bool filterWeave_;
+    // Some light is not a point, spot or directional one: a ray can hit it.
+    bool lightsHittable_ = false;
 };
 
 }  // namespace woven

@@ -91,7 +91,7 @@ struct RenderJob::Impl {
     Impl(std::shared_ptr<const SceneDescription> scene_, RenderSettings settings_)
         : description(std::move(scene_)), settings(std::move(settings_)),
           arena(workerThreads(settings.threads)),
-          film(settings.width, settings.height) {}
+          film(settings.width, settings.height, settings.renderPasses) {}
 
     // Auto: the more efficient integrator (1 / (variance x time) per pass) in a pilot of each
     // on a low-resolution version of the frame.

@@ -36,6 +36,10 @@ struct RenderSettings {
     // (about 2 % per pixel on the paper's satin) exceeds the noise it removes (docs/RESULTS.md).
     bool filterWeave = false;
     std::optional<Camera> camera;  // overrides the scene's
+    // false: the film keeps the radiance's sums alone, not the render passes' (first hits, squares),
+    // for a render that no denoiser, merge or frame file reads: woven fit's, which at 512 x 512
+    // spent a quarter of its time allocating, summing and copying them.
+    bool renderPasses = true;
 };
 
 // --noise-threshold's default. At 64 spp few pixels reach it before their last sample, so it

@@ -646,12 +646,33 @@ TEST(RenderJob, AnAdaptivePixelHoldsTheFirstSamplesOfItsSequence) {
         ASSERT_GT(counts.size(), 1u) << "every pixel took the same samples: nothing was adaptive";
         for (float count : counts) {
             const FilmImage uniform = renderRange(scene, "path", 0, int(count), 24, 18, 0, sampler);
-            for (size_t i = 0; i < adaptive.sampleCount.size(); ++i)
-                if (adaptive.sampleCount[i] == count)
-                    for (size_t c = 0; c < 3; ++c)
-                        ASSERT_EQ(adaptive.sampleSums[3 * i + c], uniform.sampleSums[3 * i + c])
-                            << samplerName(sampler) << ", pixel " << i << ", " << count << " samples";
+            for (size_t i = 0; i < adaptive.sampleCount.size(); ++i) {
+                if (adaptive.sampleCount[i] != count) continue;
+                for (size_t c = 0; c < 3; ++c)
+                    ASSERT_EQ(adaptive.sampleSums[3 * i + c], uniform.sampleSums[3 * i + c])
+                        << samplerName(sampler) << ", pixel " << i << ", " << count << " samples";
+            }
         }
+    }
+}
+
+// A film without the render passes (woven fit's) keeps the same radiance sums to the bit, BDPT's
+// splats included.
+TEST(RenderJob, WithoutPassesTheSameRadiance) {
+    for (const char* integrator : {"path", "bdpt"}) {
+        RenderSettings settings;
+        settings.width = 24;
+        settings.height = 18;
+        settings.spp = 6;
+        settings.integrator = integrator;
+        settings.seed = 11;
+        const FilmImage with = render(clothInBoxScene(), settings);
+        settings.renderPasses = false;
+        const FilmImage without = render(clothInBoxScene(), settings);
+        EXPECT_EQ(with.passSums.size(), with.sampleCount.size()) << integrator;
+        EXPECT_TRUE(without.passSums.empty()) << integrator;
+        EXPECT_EQ(with.sampleCount, without.sampleCount) << integrator;
+        EXPECT_TRUE(with.sampleSums == without.sampleSums) << integrator;
     }
 }
 
