@@ -54,6 +54,9 @@ std::vector<std::string> writeFitReport(const std::string& dir, const std::vecto
         text << "\n" << shots[i].path << " (" << png << ": photo left, fit right)\n";
         for (int g = 0; g < kStatGroupCount; ++g)
             text << "  " << statGroupNames()[size_t(g)] << " error " << f.terms.error[size_t(g)] << "\n";
+        if (f.lambertianBlockMeansError >= 0.0)
+            text << "  block means error of the best Lambertian plane under the same light "
+                 << f.lambertianBlockMeansError << " (the fit's above " << f.terms.error[kStatBlockMeans] << ")\n";
         text << "  thread frequency, cycles per pixel: ends photo " << f.photoFrequency.x << " render "
              << f.renderFrequency.x << ", picks photo " << f.photoFrequency.y << " render " << f.renderFrequency.y << "\n";
         text << "  thread direction, render against photo: ends " << f.directionError.x << " degrees, picks "

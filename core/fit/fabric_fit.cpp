@@ -159,6 +159,7 @@ public:
         int refined = 0;
         if (calibrated && !stop()) refined = refine(shotRs);
         measureThreads();
+        compareWithLambertianPlanes();
         result_.complete = weaveDone && calibrated && refined >= 2 * int(shapeAxes().size()) + 1 && !cancel_;
         return std::move(result_);
     }
@@ -713,6 +714,29 @@ private:
             points += minimise(x, objective, 0);
         }
         return points;
+    }
+
+    void compareWithLambertianPlanes() {
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (shots_[i].backlit || cancel_.load()) continue;
+            Image plane = renderShotLambertian(shots_[i], options_.render, cancel_);
+            applyVignette(plane, shots_[i].photo.vignetteSigmaPx);
+            const std::vector<float> rendered = blockMeans(plane);
+            const std::vector<float>& photo = photoStats_[i].values[kStatBlockMeans];
+            glm::dvec3 pr(0.0), rr(0.0);
+            for (size_t k = 0; k < photo.size(); ++k) {
+                pr[int(k % 3)] += double(photo[k]) * rendered[k];
+                rr[int(k % 3)] += double(rendered[k]) * rendered[k];
+            }
+            const glm::dvec3 scale = pr / glm::max(rr, glm::dvec3(1e-300));
+            const glm::dvec3 mean = channelMeans(photo, 1);
+            double error = 0.0;
+            for (size_t k = 0; k < photo.size(); ++k) {
+                const double d = (scale[int(k % 3)] * rendered[k] - photo[k]) / mean[int(k % 3)];
+                error += d * d;
+            }
+            result_.shots[i].lambertianBlockMeansError = error / double(std::max<size_t>(photo.size(), 1));
+        }
     }
 
     void measureThreads() {

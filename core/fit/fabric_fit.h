@@ -46,6 +46,11 @@ struct ShotFit {
     // angle between the photo's thread directions and the render's, degrees.
     glm::dvec2 photoFrequency{0.0}, renderFrequency{0.0};
     glm::dvec2 directionError{0.0};
+    // The block means' error (LossTerms) of the best Lambertian plane under the shot's light: a
+    // white one rendered, each channel scaled to the photo by least squares. What the fit's own
+    // block means' error should beat: the light's fall-off and the highlight. Negative where the
+    // shot is backlit (a Lambertian plane passes no light).
+    double lambertianBlockMeansError = -1.0;
 };
 
 struct FitResult {

@@ -22,4 +22,8 @@ struct FitRenderSettings {
 Image renderShot(const Shot& shot, const WovenParams& params, const FitRenderSettings& settings,
                  const std::atomic<bool>& cancel);
 
+// The same render with the target a white Lambertian plane (glTF's base colour 1, no specular
+// reflection) in place of the cloth: what a fit that knew no weave would have, scaled.
+Image renderShotLambertian(const Shot& shot, const FitRenderSettings& settings, const std::atomic<bool>& cancel);
+
 }  // namespace woven
