@@ -17,7 +17,7 @@ namespace woven::test {
 namespace fs = std::filesystem;
 
 std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
-                          const glm::vec3& light, float lightIntensity) {
+                          const glm::vec3& light, float lightIntensity, int height) {
     SceneDescription swatch;
     swatch.meshes.push_back(flatCloth(glm::vec2(kSwatchMetres), "Swatch"));
     Material material;
@@ -32,7 +32,7 @@ std::string writeShotFile(const std::string& dir, const std::string& name, int s
       << " \"lights\": [{\"type\": \"point\", \"position\": [" << light.x << ", " << light.y << ", " << light.z
       << "], \"intensity\": " << lightIntensity << "}],\n"
       << " \"camera\": {\"position\": [0, 0.15, 0], \"target\": [0, 0, 0], \"up\": [0, 0, -1], \"yfov_degrees\": 13},\n"
-      << " \"render\": {\"width\": " << size << ", \"height\": " << size << "}"
+      << " \"render\": {\"width\": " << size << ", \"height\": " << (height > 0 ? height : size) << "}"
       << (photoJson.empty() ? "" : ",\n \"photo\": " + photoJson) << "}\n";
     return (fs::path(dir) / (name + ".json")).string();
 }
@@ -42,7 +42,7 @@ std::string writeCaptureShot(const std::string& dir, const std::string& name, co
     if (photo.vignetteSigmaPx > 0.0f) key += ", \"vignette_sigma_px\": " + std::to_string(photo.vignetteSigmaPx);
     key += ", \"exposure\": " + (photo.exposureKnown ? std::to_string(photo.exposure) : std::string("\"free\""));
     key += "}";
-    const std::string shot = writeShotFile(dir, name, photo.size, key, photo.light, photo.lightIntensity);
+    const std::string shot = writeShotFile(dir, name, photo.size, key, photo.light, photo.lightIntensity, photo.height);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(shot));
     for (Material& m : scene->materials)

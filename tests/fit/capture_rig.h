@@ -16,6 +16,7 @@ constexpr float kSwatchMetres = 0.04f;  // 4 cm; one UV unit a metre (flat_cloth
 struct RigPhoto {
     WovenParams truth;           // repeat: threads per metre, as one UV unit is a metre
     int size = 128;              // pixels, square
+    int height = 0;              // > 0: the photo is `size` wide and this tall (the lens's 13 degrees are its height's)
     int spp = 32;                // the photo's samples: far more than the fit's
     uint64_t seed = 1234;        // not the fit's seed
     float noise = 0.0f;          // sensor noise: Gaussian, this fraction of each value
@@ -34,8 +35,10 @@ struct RigPhoto {
 // The shot file's path (DIR/NAME.json beside DIR/NAME.png and DIR/swatch.gltf).
 std::string writeCaptureShot(const std::string& dir, const std::string& name, const RigPhoto& photo);
 
-// The same shot file with its photo key replaced by `photoJson` (a JSON object, or "" for none).
+// The same shot file with its photo key replaced by `photoJson` (a JSON object, or "" for none);
+// `height` > 0: the frame `size` wide and `height` tall.
 std::string writeShotFile(const std::string& dir, const std::string& name, int size, const std::string& photoJson,
-                          const glm::vec3& light = RigPhoto{}.light, float lightIntensity = RigPhoto{}.lightIntensity);
+                          const glm::vec3& light = RigPhoto{}.light, float lightIntensity = RigPhoto{}.lightIntensity,
+                          int height = 0);
 
 }  // namespace woven::test

@@ -184,6 +184,18 @@ TEST_F(RoundTrip, DenimThreadCountsAt512Pixels) {
     expectThreadCounts(fit(photo, seconds()), photo.truth);
 }
 
+// A photo not cropped square (120 x 160, as a phone's portrait frame): the spectrum's bins differ
+// either way.
+TEST_F(RoundTrip, TwillWeaveClassFromAPortraitPhoto) {
+    RigPhoto photo = noisyPhoto({1, 3, 1});
+    photo.size = 120;
+    photo.height = 160;
+    const FitResult r = fit(photo, 600.0, 115, 8);
+    EXPECT_EQ(r.params.pattern, photo.truth.pattern) << "fitted " << describeWeave(r.params.pattern);
+    expectThreadCounts(r, photo.truth);
+    expectBeatsLambertianPlane(r.shots[0]);
+}
+
 TEST_F(RoundTrip, PlainWeaveThreadCounts) {
     RigPhoto photo;
     photo.truth = cloth({1, 1, 1});
