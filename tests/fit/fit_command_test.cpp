@@ -18,6 +18,13 @@
 namespace woven::test {
 namespace {
 
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 class FitCommand : public CommandTest {
 protected:
     // A small rig (64 pixels: the commands' behaviour, not the fit's accuracy, is tested here).
@@ -96,19 +103,42 @@ TEST_F(FitCommand, TooShortTimeGivesTheBestFitSoFarWithAWarning) {
     EXPECT_TRUE(std::filesystem::exists(file("report/loss.csv")));
 }
 
+// A flash shot and one lit from behind: the fit says it took the light through the yarns from the
+// backlit shot, writes it, and compares only the flash shot with a Lambertian plane.
+TEST_F(FitCommand, BacklitShotFitsTheLightThroughTheYarns) {
+    RigPhoto photo;
+    photo.truth.pattern = {1, 1, 1};
+    photo.truth.repeat = {800.0f, 800.0f};
+    photo.truth.yarn_width = photo.truth.warp_width = 0.85f;
+    photo.truth.transmission = 0.5f;
+    photo.size = 64;
+    photo.spp = 4;
+    const std::string flash = writeCaptureShot(dir_.string(), "flash", photo);
+    photo.light = {0.02f, -0.15f, 0.0f};
+    photo.lightIntensity = 0.8f;
+    const std::string backlit = writeCaptureShot(dir_.string(), "backlit", photo);
+    const RunResult r = runWovenCommand("fit '" + flash + "' '" + backlit + "' --target Swatch --time 3 -o '" +
+                                        file("out.json") + "' --report '" + file("report") + "'");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("from the backlit shots"), std::string::npos) << r.out;
+    std::ifstream in(file("out.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j.contains("transmission")) << j.dump();
+    EXPECT_GT(j["transmission"].get<double>(), 0.1) << j.dump();
+    const std::string report = readText(file("report/report.txt"));
+    const size_t second = report.find("backlit.json");
+    ASSERT_NE(second, std::string::npos) << report;
+    EXPECT_LT(report.find("best Lambertian plane"), second) << report;  // the flash shot's
+    EXPECT_EQ(report.find("best Lambertian plane", second), std::string::npos) << report;
+}
+
 TEST_F(FitCommand, RenderTakesAShotAndSaysItDoesNotUseThePhoto) {
     const std::string path = shot();
     const RunResult r = runWovenCommand("render '" + path + "' --spp 1 -o '" + file("frame.png") + "'");
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("is for woven fit; the render does not use it"), std::string::npos) << r.out;
     EXPECT_TRUE(std::filesystem::exists(file("frame.png")));
-}
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 // Ctrl-C once the fit has reported progress: the best fit so far, exit status 130. The process is
