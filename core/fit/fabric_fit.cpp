@@ -389,8 +389,8 @@ private:
     // (relative to each channel's mean, as the loss weighs them) give both by least squares with
     // neither below 0. Sets p's transmission and transmission_gloss and returns the backlit
     // shots' renders (vignetted, before exposure) at them; the other shots' are empty.
-    // `freeExposure`: the free shots' exposure.
-    std::vector<Image> withTransmission(WovenParams& p, double freeExposure) {
+    // `exposure`: the free shots' exposure.
+    std::vector<Image> withTransmission(WovenParams& p, double exposure) {
         std::vector<bool> backlit(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) backlit[i] = !reflected_[i];
         WovenParams q = p;
@@ -404,7 +404,7 @@ private:
         glm::dvec2 y(0.0);
         for (size_t i = 0; i < shots_.size(); ++i) {
             if (!backlit[i]) continue;
-            const double e = shots_[i].photo.exposure.value_or(float(freeExposure));
+            const double e = shots_[i].photo.exposure.value_or(float(exposure));
             const std::vector<float>& photo = photoStats_[i].values[kStatBlockMeans];
             const std::vector<float> d = blockMeans(diffuse[i]), g = blockMeans(glossy[i]);
             const glm::dvec3 scale = channelMeans(photo, 1);
