@@ -121,12 +121,22 @@ Shot loadShot(const std::string& path, const std::string& target) {
                    "a shot frames the swatch, the camera straight above it");
     const auto side = [&](const glm::dvec3& towards) { return glm::dot(towards, normal) > 0.0; };
     const bool cameraSide = side(glm::dvec3(ray.o) - centre);
-    shot.backlit = !scene.lights.empty() && scene.environment.color == glm::vec3(0.0f);
-    for (const PunctualLight& l : scene.lights) {
-        const glm::dvec3 towards = l.type == PunctualLight::Type::Directional ? -glm::dvec3(l.direction)
-                                                                              : glm::dvec3(l.position) - centre;
-        shot.backlit = shot.backlit && side(towards) != cameraSide;
+    // The lights: punctual ones, and emissive surfaces (a light box behind the swatch), each of
+    // whose corners must lie behind.
+    bool anyLight = false, allBehind = true;
+    const auto light = [&](const glm::dvec3& towards) {
+        anyLight = true;
+        allBehind = allBehind && side(towards) != cameraSide;
+    };
+    for (const PunctualLight& l : scene.lights)
+        light(l.type == PunctualLight::Type::Directional ? -glm::dvec3(l.direction) : glm::dvec3(l.position) - centre);
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& mesh = scene.meshes[i];
+        const bool target = std::find(shot.meshes.begin(), shot.meshes.end(), i) != shot.meshes.end();
+        if (!target && mesh.material >= 0 && scene.materials[size_t(mesh.material)].emission != glm::vec3(0.0f))
+            for (const glm::vec3& p : mesh.positions) light(glm::dvec3(p) - centre);
     }
+    shot.backlit = anyLight && allBehind && scene.environment.color == glm::vec3(0.0f);
     shot.scene = std::make_shared<const SceneDescription>(std::move(scene));
     return shot;
 }

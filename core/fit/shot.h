@@ -29,8 +29,8 @@ struct Shot {
     // columns are per pixel along x (right) and y (down). How the weave's threads per UV unit
     // become cycles per pixel in the photo.
     glm::dmat2 uvPerPixel{1.0};
-    // Every light of the shot lies behind the target as the camera sees it (and the environment
-    // is black): the photo shows only light through the cloth, and the fit's transmission
+    // Every light of the shot (punctual, or an emissive surface such as a light box) lies behind
+    // the target as the camera sees it (and the environment is black): the photo shows only light through the cloth, and the fit's transmission
     // (transmission, transmission_gloss) is solved from it, not its colours.
     bool backlit = false;
 };
