@@ -3,30 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <filesystem>
 #include <iostream>
 
 #include "capture_rig.h"
 #include "fabric_fit.h"
 #include "fit_output.h"
 #include "shot.h"
+#include "temp_dir_test.h"
 #include "weave_candidates.h"  // describeWeave, for a failure's message
 
 namespace woven::test {
 namespace {
 
-namespace fs = std::filesystem;
-
-class RoundTrip : public testing::Test {
+class RoundTrip : public TempDirTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("woven_fit_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-                std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // `renders` > 0: a budget of renders instead of time, so the fit is the same on any machine.
     FitResult fit(const RigPhoto& photo, double seconds, int renders = 0, int spp = 2) {
         return fit(std::vector<RigPhoto>{photo}, seconds, renders, spp);
@@ -151,7 +141,6 @@ protected:
         EXPECT_NEAR(truth.exposure, photo.exposure, 0.01);
     }
 
-    fs::path dir_;
     std::vector<Shot> shots_;
 };
 

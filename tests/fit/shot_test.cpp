@@ -3,35 +3,28 @@
 // yarns from them and the colours from the others.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "capture_rig.h"
 #include "display_transform.h"
 #include "flat_cloth.h"
 #include "gltf_writer.h"
 #include "shot.h"
+#include "temp_dir_test.h"
 
 namespace woven::test {
 namespace {
 
-namespace fs = std::filesystem;
 
-class ShotLights : public testing::Test {
+class ShotLights : public TempDirTest {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("woven_shot_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-                std::to_string(::getpid()));
-        fs::create_directories(dir_);
+        TempDirTest::SetUp();
         Image photo;
         photo.width = photo.height = 32;
         photo.pixels.assign(32 * 32, glm::vec3(0.2f));
         writePng((dir_ / "photo.png").string(), photo, {0.0f, ToneMap::Clamp});
     }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // The rig's swatch and camera, no punctual light, and a 10 cm light box `height` metres above
     // the swatch's plane (below it where negative).
     Shot withLightBox(float height) {
@@ -55,8 +48,6 @@ protected:
         f.close();
         return loadShot((dir_ / "box.json").string(), "Swatch");
     }
-
-    fs::path dir_;
 };
 
 TEST_F(ShotLights, PointLampBehindTheSwatchIsBacklitTheFlashIsNot) {
