@@ -300,7 +300,7 @@ private:
         const ThreadPeaks& peaks = photoPeaks_[i];
         if (!peaks.ends || !peaks.picks) return std::nullopt;
         const glm::dmat2& uvPerPixel = shots_[i].uvPerPixel;
-        const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+        const glm::dvec2 gradU = gradientU(uvPerPixel), gradV = gradientV(uvPerPixel);
         ThreadGrid g;
         g.ends = glm::dot(peaks.ends->frequency, gradU) < 0.0 ? -peaks.ends->frequency : peaks.ends->frequency;
         g.picks = glm::dot(peaks.picks->frequency, gradV) < 0.0 ? -peaks.picks->frequency : peaks.picks->frequency;
@@ -313,8 +313,8 @@ private:
         if (!photoGrids_[i]) return std::nullopt;
         const glm::dmat2& uvPerPixel = renderShots_[i].uvPerPixel;
         ThreadGrid g;
-        g.ends = double(p.repeat.x) * glm::dvec2(uvPerPixel[0][0], uvPerPixel[1][0]);
-        g.picks = double(p.repeat.y) * glm::dvec2(uvPerPixel[0][1], uvPerPixel[1][1]);
+        g.ends = double(p.repeat.x) * gradientU(uvPerPixel);
+        g.picks = double(p.repeat.y) * gradientV(uvPerPixel);
         g.period = p.pattern.x + p.pattern.y;
         return g;
     }
@@ -333,7 +333,7 @@ private:
         for (size_t i = 0; i < shots_.size(); ++i) {
             const Shot& s = shots_[i];
             const ThreadPeaks peaks = threadPeaks(s.image, s.uvPerPixel, kPeakHalfAngle);
-            const glm::dvec2 gradU(s.uvPerPixel[0][0], s.uvPerPixel[1][0]), gradV(s.uvPerPixel[0][1], s.uvPerPixel[1][1]);
+            const glm::dvec2 gradU = gradientU(s.uvPerPixel), gradV = gradientV(s.uvPerPixel);
             if (peaks.ends) result_.shots[i].photoFrequency.x = glm::length(peaks.ends->frequency);
             if (peaks.picks) result_.shots[i].photoFrequency.y = glm::length(peaks.picks->frequency);
             photoPeaks_.push_back(peaks);
@@ -729,13 +729,9 @@ private:
                 rr[int(k % 3)] += double(rendered[k]) * rendered[k];
             }
             const glm::dvec3 scale = pr / glm::max(rr, glm::dvec3(1e-300));
-            const glm::dvec3 mean = channelMeans(photo, 1);
-            double error = 0.0;
-            for (size_t k = 0; k < photo.size(); ++k) {
-                const double d = (scale[int(k % 3)] * rendered[k] - photo[k]) / mean[int(k % 3)];
-                error += d * d;
-            }
-            result_.shots[i].lambertianBlockMeansError = error / double(std::max<size_t>(photo.size(), 1));
+            std::vector<float> scaled(rendered.size());
+            for (size_t k = 0; k < scaled.size(); ++k) scaled[k] = float(scale[int(k % 3)] * rendered[k]);
+            result_.shots[i].lambertianBlockMeansError = colourError(photo, scaled, 1);
         }
     }
 

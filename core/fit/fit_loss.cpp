@@ -6,10 +6,6 @@
 
 namespace woven {
 
-namespace {
-
-// Mean of ((render - photo) / the photo's channel mean)^2, for values laid out with the
-// channel varying as (index / stride) % 3.
 double colourError(const std::vector<float>& photo, const std::vector<float>& render, size_t stride) {
     const glm::dvec3 mean = channelMeans(photo, stride);
     double e = 0.0;
@@ -19,6 +15,8 @@ double colourError(const std::vector<float>& photo, const std::vector<float>& re
     }
     return e / double(std::max<size_t>(photo.size(), 1));
 }
+
+namespace {
 
 double spectrumError(const std::vector<float>& photo, const std::vector<float>& render) {
     const size_t perChannel = photo.size() / 3;

@@ -19,6 +19,10 @@ struct LossTerms {
 // which no fabric parameter should chase).
 LossTerms loss(const ImageStats& photo, const ImageStats& render);
 
+// Mean of ((render - photo) / the photo's channel mean)^2, for values laid out with the channel
+// varying as (index / stride) % 3: the block means' and quantiles' error.
+double colourError(const std::vector<float>& photo, const std::vector<float>& render, size_t stride);
+
 // The mean of each channel (at least 1e-4) of values laid out with the channel varying as
 // (index / stride) % 3: the scale the block means' and quantiles' errors are relative to.
 glm::dvec3 channelMeans(const std::vector<float>& values, size_t stride);

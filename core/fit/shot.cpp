@@ -148,7 +148,7 @@ Shot turnedShot(const Shot& shot, double radians) {
     // cos a gradU - sin a gradV: a's sign is the one that turns it by +radians there, which
     // depends on which way the camera sees the UVs' axes.
     const glm::dmat2& m = shot.uvPerPixel;
-    const glm::dvec2 gradU(m[0][0], m[1][0]), gradV(m[0][1], m[1][1]);
+    const glm::dvec2 gradU = gradientU(m), gradV = gradientV(m);
     const glm::dvec2 g = std::cos(radians) * gradU - std::sin(radians) * gradV;
     const double a = (gradU.x * g.y - gradU.y * g.x) * radians >= 0.0 ? radians : -radians;
     const glm::dmat2 rotation(std::cos(a), std::sin(a), -std::sin(a), std::cos(a));

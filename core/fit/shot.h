@@ -35,6 +35,11 @@ struct Shot {
     bool backlit = false;
 };
 
+// U's and V's gradients in the image, per pixel (x right, y down): the rows of uvPerPixel, which
+// the warp ends' and the weft picks' frequencies follow.
+inline glm::dvec2 gradientU(const glm::dmat2& uvPerPixel) { return {uvPerPixel[0][0], uvPerPixel[1][0]}; }
+inline glm::dvec2 gradientV(const glm::dmat2& uvPerPixel) { return {uvPerPixel[0][1], uvPerPixel[1][1]}; }
+
 // The shot with its target's weave turned by `radians` in the image, as the cloth lay turned in
 // the photo (threadTurn() of its peaks): the target's UVs rotated about their mean, their tangents
 // dropped so that the renderer's own follow the UVs, and uvPerPixel rotated alike.

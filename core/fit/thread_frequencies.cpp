@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "shot.h"
 #include "tile_fold.h"
 
 namespace woven {
@@ -83,7 +84,7 @@ ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel, double
     for (size_t i = 0; i < lum.size(); ++i) lum[i] = luminance(image.pixels[i]);
     const PowerSpectrum s = powerSpectrum(lum, image.width, image.height);
     const double fMin = 3.0 / std::min(image.width, image.height);
-    const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+    const glm::dvec2 gradU = gradientU(uvPerPixel), gradV = gradientV(uvPerPixel);
     ThreadPeaks peaks = threadFundamentals(s, gradU, gradV, halfAngle, fMin, 0.5);
     for (std::optional<SpectralPeak>* peak : {&peaks.ends, &peaks.picks})
         if (*peak) (*peak)->frequency = refineThreadFrequency(lum, image.width, image.height, (*peak)->frequency);
@@ -91,7 +92,7 @@ ThreadPeaks threadPeaks(const Image& image, const glm::dmat2& uvPerPixel, double
 }
 
 double threadTurn(const ThreadPeaks& peaks, const glm::dmat2& uvPerPixel) {
-    const glm::dvec2 gradU(uvPerPixel[0][0], uvPerPixel[1][0]), gradV(uvPerPixel[0][1], uvPerPixel[1][1]);
+    const glm::dvec2 gradU = gradientU(uvPerPixel), gradV = gradientV(uvPerPixel);
     double sum = 0.0;
     int n = 0;
     if (peaks.ends) {
