@@ -30,8 +30,9 @@ struct Shot {
     // become cycles per pixel in the photo.
     glm::dmat2 uvPerPixel{1.0};
     // Every light of the shot (punctual, or an emissive surface such as a light box) lies behind
-    // the target as the camera sees it (and the environment is black): the photo shows only light through the cloth, and the fit's transmission
-    // (transmission, transmission_gloss) is solved from it, not its colours.
+    // the target as the camera sees it (and the environment is black): the photo shows only light
+    // through the cloth, and the fit solves the transmission (transmission, transmission_gloss)
+    // from it, not the colours.
     bool backlit = false;
 };
 
