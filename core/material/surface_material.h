@@ -41,6 +41,8 @@ public:
         return emits_ ? emission_ * glm::vec3(emissiveTexture_.eval(tc)) : glm::vec3(0.0f);
     }
     bool twoSidedEmission() const { return twoSided_; }
+    // The same emission everywhere: no emissive texture.
+    bool uniformEmission() const { return !emissiveTexture_; }
     // Radiance the surface shows without being a light (KHR_materials_unlit): seen by camera and
     // bounce rays, never sampled as a light.
     virtual glm::vec3 unlitRadiance(const TexCoords& tc) const { return glm::vec3(0.0f); }

@@ -253,7 +253,7 @@ int BdptIntegrator::lightSubpath(Sampler& sampler, SampleSink& sink, Vertex* pat
     const float cosLight = light.isDeltaPosition() ? 1.0f : std::abs(glm::dot(le->nLight, le->ray.d));
     const glm::vec3 beta = le->L * (cosLight / (pmf * le->pdfPos * le->pdfDir));
     Ray ray = le->ray;
-    if (light.is<TriangleLight>()) {
+    if (light.planar()) {
         // Leave an area light like any surface, lifted off it, or the ray may hit its own triangle.
         SurfaceHit origin;
         origin.p = ray.o;

@@ -7,6 +7,7 @@
 #include "frame.h"
 #include "piecewise_constant.h"
 #include "sampling.h"
+#include "spherical_rectangle.h"
 #include "spherical_triangle.h"
 
 namespace woven {
@@ -80,76 +81,34 @@ float SpotCone::solidAngle() const {
     return 2.0f * kPi * (width * rampEnd * rampEnd / 3.0f + (1.0f - cosOuter - width));
 }
 
-// Triangle
+// Planar emitters: triangles and rectangles
 
-glm::vec3 TriangleLight::radiance(const glm::vec2& bary) const {
-    if (!emitter) return L;
-    const float b0 = 1.0f - bary.x - bary.y;
-    TexCoords tc = corners[0];
-    for (int set = 0; set < 2; ++set)
-        tc.uv[set] = b0 * corners[0].uv[set] + bary.x * corners[1].uv[set] + bary.y * corners[2].uv[set];
-    tc.color = b0 * corners[0].color + bary.x * corners[1].color + bary.y * corners[2].color;
-    return emitter->emission(tc);
+glm::vec3 PlanarEmitter::power() const { return L * area * kPi * (twoSided ? 2.0f : 1.0f); }
+
+bool PlanarEmitter::nearPlane(const glm::vec3& ref, const glm::vec3& pointOfPlane) const {
+    const float height = glm::dot(n, ref - pointOfPlane);
+    return height * height < longestEdge2;
 }
 
-glm::vec3 TriangleLight::power() const { return L * area * kPi * (twoSided ? 2.0f : 1.0f); }
-
-float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
-    // Area sampling's density in solid angle, d^2 / (cos_light area), varies little over the
-    // triangle while ref is far from its plane compared with its size (Cycles' test), and is
-    // then as good and cheaper; nearer, it grows without bound towards the edges.
-    const float height = glm::dot(n, ref - a);
-    if (height * height >= longestEdge2) return 0.0f;
-    const float solidAngle = triangleSolidAngle(a, b, c, ref);
-    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
-}
-
-std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
-    if (!(area > 0.0f)) return std::nullopt;
-    const float solidAngle = solidAngleSampled(ref);
-    glm::vec2 bary;
-    if (solidAngle > 0.0f) {
-        const auto sampled = sampleSphericalTriangle(a, b, c, ref, solidAngle, u);
-        if (!sampled) return std::nullopt;
-        bary = *sampled;
-    } else {
-        bary = sampleTriangleBarycentrics(u);
-    }
-    auto s = towards(ref, (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c, solidAngle);
-    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = radiance(bary);
-    return s;
-}
-
-std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
-    if (!(area > 0.0f)) return std::nullopt;
-    auto s = towards(ref, (a + b + c) / 3.0f, 0.0f);
-    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = L;
-    return s;
-}
-
-std::optional<LightLiSample> TriangleLight::towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle) const {
+std::optional<LightLiSample> PlanarEmitter::towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle,
+                                                    const glm::vec3& radiance) const {
     LightLiSample s;
     s.pLight = pLight;
     s.nLight = n;
-    s.L = glm::vec3(0.0f);
     const glm::vec3 toLight = s.pLight - ref;
     const float dist2 = glm::dot(toLight, toLight);
     if (!(dist2 > 0.0f)) return std::nullopt;
     s.wi = toLight / std::sqrt(dist2);
-    const float cosLight = std::abs(glm::dot(n, s.wi));
-    if (!(cosLight > 0.0f)) return std::nullopt;
-    s.pdf = solidAngle > 0.0f ? 1.0f / solidAngle : dist2 / (cosLight * area);
+    const float cosLight = glm::dot(n, -s.wi);
+    if (!(std::abs(cosLight) > 0.0f)) return std::nullopt;
+    s.pdf = solidAngle > 0.0f ? 1.0f / solidAngle : dist2 / (std::abs(cosLight) * area);
+    s.L = twoSided || cosLight > 0.0f ? radiance : glm::vec3(0.0f);
     return s;
 }
 
-std::optional<LightLiSample> Light::fixedPointLi(const glm::vec3& ref) const {
-    if (const TriangleLight* t = get<TriangleLight>()) return t->centroidLi(ref);
-    return sampleLi(ref, glm::vec2(0.5f));
-}
-
-float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
+float PlanarEmitter::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight,
+                           float solidAngle) const {
     if (!(area > 0.0f)) return 0.0f;
-    const float solidAngle = solidAngleSampled(ref);
     if (solidAngle > 0.0f) return 1.0f / solidAngle;
     const glm::vec3 toLight = pLight - ref;
     const float cosLight = std::abs(glm::dot(nLight, glm::normalize(wi)));
@@ -157,11 +116,9 @@ float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm:
     return glm::dot(toLight, toLight) / (cosLight * area);
 }
 
-std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
-    if (!(area > 0.0f)) return std::nullopt;
+std::optional<LightLeSample> PlanarEmitter::leaving(const glm::vec3& origin, const glm::vec2& u2) const {
     LightLeSample s;
-    const glm::vec2 bary = sampleTriangleBarycentrics(u1);
-    s.ray.o = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
+    s.ray.o = origin;
     // Two-sided: u2.x picks the face, then is stretched back to [0, 1).
     glm::vec2 uDir = u2;
     glm::vec3 face = n;
@@ -177,14 +134,104 @@ std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const 
     s.pdfPos = 1.0f / area;
     s.pdfDir = sidePdf * local.z / kPi;
     if (!(s.pdfDir > 0.0f)) return std::nullopt;
-    s.L = radiance(bary);
     return s;
 }
 
-void TriangleLight::pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const {
+void PlanarEmitter::pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const {
     const float cosTheta = glm::dot(nLight, ray.d);
     *pdfPos = area > 0.0f ? 1.0f / area : 0.0f;
     *pdfDir = twoSided ? 0.5f * std::abs(cosTheta) / kPi : std::max(cosTheta, 0.0f) / kPi;
+}
+
+glm::vec3 TriangleLight::radiance(const glm::vec2& bary) const {
+    if (!emitter) return L;
+    const float b0 = 1.0f - bary.x - bary.y;
+    TexCoords tc = corners[0];
+    for (int set = 0; set < 2; ++set)
+        tc.uv[set] = b0 * corners[0].uv[set] + bary.x * corners[1].uv[set] + bary.y * corners[2].uv[set];
+    tc.color = b0 * corners[0].color + bary.x * corners[1].color + bary.y * corners[2].color;
+    return emitter->emission(tc);
+}
+
+float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
+    if (!nearPlane(ref, a)) return 0.0f;
+    const float solidAngle = triangleSolidAngle(a, b, c, ref);
+    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+}
+
+std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    const float solidAngle = solidAngleSampled(ref);
+    glm::vec2 bary;
+    if (solidAngle > 0.0f) {
+        const auto sampled = sampleSphericalTriangle(a, b, c, ref, solidAngle, u);
+        if (!sampled) return std::nullopt;
+        bary = *sampled;
+    } else {
+        bary = sampleTriangleBarycentrics(u);
+    }
+    const glm::vec3 pLight = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
+    // The emission is looked up only where the face towards ref emits.
+    auto s = towards(ref, pLight, solidAngle, glm::vec3(0.0f));
+    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = radiance(bary);
+    return s;
+}
+
+std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    return towards(ref, (a + b + c) / 3.0f, 0.0f, L);
+}
+
+float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
+    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, area > 0.0f ? solidAngleSampled(ref) : 0.0f);
+}
+
+std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    const glm::vec2 bary = sampleTriangleBarycentrics(u1);
+    auto s = leaving((1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c, u2);
+    if (s) s->L = radiance(bary);
+    return s;
+}
+
+float RectangleLight::solidAngleSampled(const glm::vec3& ref) const {
+    if (!nearPlane(ref, corner)) return 0.0f;
+    const float solidAngle = SphericalRectangle(corner, ex, ey, ref).solidAngle();
+    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+}
+
+std::optional<LightLiSample> RectangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    if (nearPlane(ref, corner)) {
+        const SphericalRectangle rectangle(corner, ex, ey, ref);
+        const float solidAngle = rectangle.solidAngle();
+        if (solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea)
+            return towards(ref, rectangle.sample(u), solidAngle, L);
+    }
+    return towards(ref, corner + u.x * ex + u.y * ey, 0.0f, L);
+}
+
+std::optional<LightLiSample> RectangleLight::centroidLi(const glm::vec3& ref) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    return towards(ref, corner + 0.5f * (ex + ey), 0.0f, L);
+}
+
+float RectangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight,
+                            const glm::vec3& nLight) const {
+    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, area > 0.0f ? solidAngleSampled(ref) : 0.0f);
+}
+
+std::optional<LightLeSample> RectangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
+    if (!(area > 0.0f)) return std::nullopt;
+    auto s = leaving(corner + u1.x * ex + u1.y * ey, u2);
+    if (s) s->L = L;
+    return s;
+}
+
+std::optional<LightLiSample> Light::fixedPointLi(const glm::vec3& ref) const {
+    if (const TriangleLight* t = get<TriangleLight>()) return t->centroidLi(ref);
+    if (const RectangleLight* r = get<RectangleLight>()) return r->centroidLi(ref);
+    return sampleLi(ref, glm::vec2(0.5f));
 }
 
 // Point
@@ -357,6 +404,21 @@ Light Light::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     return Light(t);
 }
 
+Light Light::rectangle(const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey, const glm::vec3& L,
+                       bool twoSided) {
+    RectangleLight r;
+    r.corner = corner;
+    r.ex = ex;
+    r.ey = ey;
+    const glm::vec3 cr = glm::cross(ex, ey);
+    r.area = glm::length(cr);
+    r.n = r.area > 0.0f ? cr / r.area : glm::vec3(0.0f);
+    r.longestEdge2 = std::max(glm::dot(ex, ex), glm::dot(ey, ey));
+    r.L = L;
+    r.twoSided = twoSided;
+    return Light(r);
+}
+
 Light Light::punctual(const PunctualLight& p) {
     const glm::vec3 direction = glm::normalize(p.direction);
     switch (p.type) {
@@ -417,17 +479,24 @@ void Light::setSceneBounds(const Bounds& b) {
     if (auto* e = std::get_if<EnvironmentLight>(&kind_)) e->sphere = sphere;
 }
 
+const PlanarEmitter* Light::planar() const {
+    if (const TriangleLight* t = get<TriangleLight>()) return t;
+    return get<RectangleLight>();
+}
+
 float Light::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
     if (const auto* t = std::get_if<TriangleLight>(&kind_)) return t->pdfLi(ref, wi, pLight, nLight);
+    if (const auto* r = std::get_if<RectangleLight>(&kind_)) return r->pdfLi(ref, wi, pLight, nLight);
     if (const auto* e = std::get_if<EnvironmentLight>(&kind_)) return e->pdfLi(ref, wi, pLight, nLight);
     return 0.0f;  // a delta light: no direction reaches it by chance
 }
 
 glm::vec3 Light::L(const glm::vec3& n, const glm::vec3& w, const TexCoords& tc) const {
-    const auto* t = std::get_if<TriangleLight>(&kind_);
-    if (!t) return glm::vec3(0.0f);
-    if (!t->twoSided && !(glm::dot(n, w) > 0.0f)) return glm::vec3(0.0f);
-    return t->emitter ? t->emitter->emission(tc) : t->L;
+    const PlanarEmitter* e = planar();
+    if (!e) return glm::vec3(0.0f);
+    if (!e->twoSided && !(glm::dot(n, w) > 0.0f)) return glm::vec3(0.0f);
+    const TriangleLight* t = get<TriangleLight>();
+    return t && t->emitter ? t->emitter->emission(tc) : e->L;
 }
 
 glm::vec3 Light::Le(const glm::vec3& dir) const {

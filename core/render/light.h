@@ -1,10 +1,11 @@
 #pragma once
 // Lights, shaped like pbrt-v3's Light interface so that both integrators can use every kind:
-// emissive triangles (area), point, spot, directional, and the environment (constant or
-// equirectangular image, importance-sampled), each a struct of its own in a variant, as
-// bsdf.h keeps its lobes. Which light a sample takes is light_sampler.h's choice. Radiance, importance and densities follow pbrt-v3's
-// conventions: pdfLi is per unit solid angle at the reference point, pdfPos per unit area (or 1
-// for delta positions), pdfDir per unit solid angle (or 1 for delta directions).
+// emissive triangles and rectangles (area), point, spot, directional, and the environment
+// (constant or equirectangular image, importance-sampled), each a struct of its own in a
+// variant, as bsdf.h keeps its lobes. Which light a sample takes is light_sampler.h's choice.
+// Radiance, importance and densities follow pbrt-v3's conventions: pdfLi is per unit solid
+// angle at the reference point, pdfPos per unit area (or 1 for delta positions), pdfDir per
+// unit solid angle (or 1 for delta directions).
 #include <array>
 #include <glm/glm.hpp>
 #include <memory>
@@ -52,35 +53,65 @@ struct SpotCone {
 // interface forwards to (power, sampleLi, pdfLi, sampleLe, pdfLe) and says whether its position
 // or direction is a delta and whether it lies at infinity.
 
-// An emissive triangle: radiance L from its front face (and its back when twoSided), or the
-// emission of a material (which must outlive the light) at the corners' texture coordinates.
-// sampleLi() samples it by area from afar and by solid angle (spherical_triangle.h) near its
-// plane.
-struct TriangleLight {
+// What emissive triangles and rectangles share: a flat face of radiance L from its front (and
+// its back when twoSided), a cosine lobe each way. Both are sampled by area from afar and by
+// solid angle near their plane, where area sampling's density in solid angle, d^2 / (cos_light
+// area), grows without bound towards the edges.
+struct PlanarEmitter {
     static constexpr bool kDeltaPosition = false, kDeltaDirection = false, kInfinite = false;
-    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
+    glm::vec3 n{0.0f};
     float area = 0.0f;
     float longestEdge2 = 0.0f;  // squared
     bool twoSided = false;
+    glm::vec3 L{0.0f};  // a triangle's with an emitter: its mean, for choosing lights by power
+
+    glm::vec3 power() const;
+    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
+
+protected:
+    // Whether ref is near enough the plane (closer than the longest edge: Cycles' test) for
+    // sampling by solid angle to pay.
+    bool nearPlane(const glm::vec3& ref, const glm::vec3& pointOfPlane) const;
+    // The sample of pLight from ref, its density by solidAngle (0: by area), L set where the face
+    // towards ref emits (to `radiance`).
+    std::optional<LightLiSample> towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle,
+                                         const glm::vec3& radiance) const;
+    float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight,
+                float solidAngle) const;
+    // A ray leaving `origin` on the face, cosine-distributed on a side chosen by u2 (L unset).
+    std::optional<LightLeSample> leaving(const glm::vec3& origin, const glm::vec2& u2) const;
+};
+
+// An emissive triangle: the constant L, or the emission of a material (which must outlive the
+// light) at the corners' texture coordinates. Near its plane it is sampled by solid angle with
+// spherical_triangle.h.
+struct TriangleLight : PlanarEmitter {
+    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
     const SurfaceMaterial* emitter = nullptr;  // else the constant L
     std::array<TexCoords, 3> corners;
-    glm::vec3 L{0.0f};  // with an emitter: its mean, for choosing lights by power
 
     glm::vec3 radiance(const glm::vec2& barycentrics) const;  // from the front
-    glm::vec3 power() const;
     std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
     // As sampleLi() at the centroid, by area, with the mean radiance L: no spherical triangle.
     std::optional<LightLiSample> centroidLi(const glm::vec3& ref) const;
     float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
     std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
-    void pdfLe(const Ray& ray, const glm::vec3& nLight, float* pdfPos, float* pdfDir) const;
     // The solid angle sampleLi() samples uniformly from ref, 0 where it samples by area.
     float solidAngleSampled(const glm::vec3& ref) const;
+};
 
-private:
-    // The sample of pLight from ref, its density by solidAngle (0: by area), L left 0 for the
-    // caller to set where the face towards ref emits.
-    std::optional<LightLiSample> towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle) const;
+// An emissive rectangle of constant radiance L: corner + s ex + t ey for s, t in [0, 1], ex and
+// ey orthogonal, n along ex x ey. A mesh's rectangular lamp made of two triangles becomes one
+// (render_scene.cpp), sampled near its plane by solid angle (spherical_rectangle.h) in one
+// sample, with no choice between its halves.
+struct RectangleLight : PlanarEmitter {
+    glm::vec3 corner{0.0f}, ex{0.0f}, ey{0.0f};
+
+    std::optional<LightLiSample> sampleLi(const glm::vec3& ref, const glm::vec2& u) const;
+    std::optional<LightLiSample> centroidLi(const glm::vec3& ref) const;  // at its centre, by area
+    float pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const;
+    std::optional<LightLeSample> sampleLe(const glm::vec2& u1, const glm::vec2& u2) const;
+    float solidAngleSampled(const glm::vec3& ref) const;
 };
 
 // Intensity I (W/sr) from a point, the same every way.
@@ -149,7 +180,7 @@ struct EnvironmentLight {
 
 class Light {
 public:
-    using Kind = std::variant<TriangleLight, PointLight, SpotLight, DirectionalLight, EnvironmentLight>;
+    using Kind = std::variant<TriangleLight, RectangleLight, PointLight, SpotLight, DirectionalLight, EnvironmentLight>;
 
     // An emissive triangle (world-space vertices) with radiance `L` from its front face
     // (and its back when `twoSided`).
@@ -159,6 +190,10 @@ public:
     // choosing lights, is estimated from 16 points of the triangle.
     static Light triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const SurfaceMaterial& emitter,
                           const std::array<TexCoords, 3>& corners);
+    // A rectangle (corner + s ex + t ey, ex orthogonal to ey) of radiance L from the face whose
+    // normal is along ex x ey (and its back when `twoSided`).
+    static Light rectangle(const glm::vec3& corner, const glm::vec3& ex, const glm::vec3& ey, const glm::vec3& L,
+                           bool twoSided);
     static Light punctual(const PunctualLight& light);
     static Light environment(const Environment& env);  // builds the importance distribution
 
@@ -166,6 +201,8 @@ public:
     bool is() const { return std::holds_alternative<K>(kind_); }
     template <class K>
     const K* get() const { return std::get_if<K>(&kind_); }  // null when the light is another kind
+    // The emissive surface, triangle or rectangle; null for the other kinds.
+    const PlanarEmitter* planar() const;
     bool isDeltaPosition() const { return std::visit([](const auto& k) { return k.kDeltaPosition; }, kind_); }
     bool isDeltaDirection() const { return std::visit([](const auto& k) { return k.kDeltaDirection; }, kind_); }
     bool isDelta() const { return isDeltaPosition() || isDeltaDirection(); }

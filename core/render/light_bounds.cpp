@@ -109,6 +109,13 @@ std::optional<LightBounds> boundsOf(const Light& light) {
         b.cone = {t->n, 1.0f};
         b.cosThetaE = 0.0f;  // the cosine lobe: pi / 2 beyond the normal
         b.twoSided = t->twoSided;
+    } else if (const RectangleLight* r = light.get<RectangleLight>()) {
+        const glm::vec3 far = r->corner + r->ex + r->ey;
+        b.bounds = {glm::min(glm::min(r->corner, far), glm::min(r->corner + r->ex, r->corner + r->ey)),
+                    glm::max(glm::max(r->corner, far), glm::max(r->corner + r->ex, r->corner + r->ey))};
+        b.cone = {r->n, 1.0f};
+        b.cosThetaE = 0.0f;
+        b.twoSided = r->twoSided;
     } else if (const PointLight* q = light.get<PointLight>()) {
         b.bounds = {q->position, q->position};
         b.cone = DirectionCone::entireSphere();

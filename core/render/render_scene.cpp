@@ -293,6 +293,42 @@ void RenderScene::Impl::addInstances(size_t m, RTCGeometry triangles) {
     rtcReleaseScene(own);  // its instances hold it
 }
 
+namespace {
+// Two triangles that together make a rectangle, as a modeller splits a quad: sharing a diagonal
+// (two vertex indices), wound alike, and the far corners mirror images about the diagonal's
+// midpoint with a right angle there. Returns the rectangle's corner and edges (their cross
+// product along the first triangle's normal). The tolerance is relative to the edges, far below
+// anything a render could show, and above the rounding of a placed quad's corners.
+struct RectangleShape {
+    glm::vec3 corner, ex, ey;
+};
+std::optional<RectangleShape> rectangleOf(const Corners& first, const Corners& second) {
+    constexpr float kTolerance = 1e-5f;
+    int shared = 0, lone1 = -1, lone2 = -1;
+    for (int i = 0; i < 3; ++i) {
+        bool inSecond = false;
+        for (int j = 0; j < 3; ++j) inSecond = inSecond || first.tri[i] == second.tri[j];
+        if (inSecond) ++shared;
+        else lone1 = i;
+    }
+    for (int j = 0; j < 3; ++j)
+        if (second.tri[j] != first.tri[0] && second.tri[j] != first.tri[1] && second.tri[j] != first.tri[2]) lone2 = j;
+    if (shared != 2 || lone1 < 0 || lone2 < 0) return std::nullopt;
+    const glm::vec3 u = first.p[lone1], v = second.p[lone2];
+    const glm::vec3 x = first.p[(lone1 + 1) % 3], y = first.p[(lone1 + 2) % 3];
+    const glm::vec3 ex = x - u, ey = y - u;
+    const float scale = std::max(glm::length(ex), glm::length(ey));
+    if (!(scale > 0.0f) || glm::length(u + v - x - y) > kTolerance * scale ||
+        std::abs(glm::dot(ex, ey)) > kTolerance * scale * scale)
+        return std::nullopt;
+    const glm::vec3 n1 = glm::cross(first.p[1] - first.p[0], first.p[2] - first.p[0]);
+    const glm::vec3 n2 = glm::cross(second.p[1] - second.p[0], second.p[2] - second.p[0]);
+    if (!(glm::dot(n1, n2) > 0.0f)) return std::nullopt;
+    // (u, x, y) is the first triangle's winding, so ex x ey is along its normal.
+    return RectangleShape{u, ex, ey};
+}
+}  // namespace
+
 void RenderScene::Impl::buildLights() {
     triangleLights.resize(scene->meshes.size());
     for (size_t m = 0; m < scene->meshes.size(); ++m) {
@@ -305,6 +341,21 @@ void RenderScene::Impl::buildLights() {
         for (size_t i = 0; i < copies(mesh); ++i)
             for (size_t t = 0; t < n; ++t) {
                 const int instance = mesh.instances ? int(i) : -1;
+                if (material.uniformEmission() && t + 1 < n) {
+                    // A rectangle of one radiance is one light, sampled whole (spherical_rectangle.h).
+                    const std::optional<RectangleShape> r = rectangleOf(cornerPositions(mesh, instance, unsigned(t), 0.0f, 0.0f),
+                                                                        cornerPositions(mesh, instance, unsigned(t + 1), 0.0f, 0.0f));
+                    if (r) {
+                        Light light = Light::rectangle(r->corner, r->ex, r->ey, material.emission(TexCoords{}),
+                                                       material.twoSidedEmission());
+                        if (light.power() != glm::vec3(0.0f)) {
+                            triangleLights[m][i * n + t] = triangleLights[m][i * n + t + 1] = int(lights.size());
+                            lights.push_back(std::move(light));
+                        }
+                        ++t;
+                        continue;
+                    }
+                }
                 const Corners c = hitCorners(mesh, instance, unsigned(t), 0.0f, 0.0f);
                 const std::array<TexCoords, 3> corners = {interpolateTexCoords(mesh, unsigned(t), 0.0f, 0.0f),
                                                           interpolateTexCoords(mesh, unsigned(t), 1.0f, 0.0f),

@@ -104,7 +104,9 @@ TEST(BvhLightSampler, NoLightThatReachesAPointIsCulled) {
                 reaches = t->twoSided || glm::dot(ctx.p - t->a, t->n) > 1e-4f;
             if (const SpotLight* s = light.get<SpotLight>())
                 reaches = glm::dot(glm::normalize(ctx.p - s->position), s->direction) > s->cone.cosOuter + 1e-4f;
-            if (reaches) EXPECT_GT(sampler.pmf(ctx, i), 0.0f) << trial << " light " << i;
+            if (reaches) {
+                EXPECT_GT(sampler.pmf(ctx, i), 0.0f) << trial << " light " << i;
+            }
         }
     }
 }

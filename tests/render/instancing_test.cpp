@@ -143,8 +143,9 @@ TEST(Instancing, EachCopyOfAnEmitterIsItsOwnLight) {
     Mesh mesh = unitQuad(0);
     mesh.instances = std::make_shared<const std::vector<glm::mat4>>(ninePlacements());
     RenderScene scene(sceneWith({mesh}, {glow}));
-    ASSERT_EQ(scene.lights().size(), 18u);
-    std::vector<bool> found(18, false);
+    // Each copy of the square stays a rectangle (turned, scaled, mirrored), one light each.
+    ASSERT_EQ(scene.lights().size(), 9u);
+    std::vector<bool> found(9, false);
     for (int i = 0; i < 9; ++i)
         for (const glm::vec2 at : {glm::vec2(0.7f, 0.2f), glm::vec2(0.2f, 0.7f)}) {
             const glm::vec3 target((*mesh.instances)[size_t(i)] * glm::vec4(at, 0.0f, 1.0f));
@@ -155,6 +156,7 @@ TEST(Instancing, EachCopyOfAnEmitterIsItsOwnLight) {
             ASSERT_TRUE(hit);
             const int light = scene.lightIndex(*hit);
             ASSERT_GE(light, 0);
+            EXPECT_TRUE(scene.lights()[size_t(light)].is<RectangleLight>());
             found[size_t(light)] = true;
             EXPECT_NEAR(glm::length(scene.emitted(*hit, -ray.d) - glm::vec3(2.0f)), 0.0f, 1e-6f);
         }

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "render_scene.h"
 #include "sampling.h"
+#include "spherical_rectangle.h"
 #include "spherical_triangle.h"
 #include "statistics.h"
 #include "test_scenes.h"
@@ -64,17 +66,12 @@ TEST(TriangleLight, SampledDirectionsHaveThePdfThatPdfLiGives) {
     EXPECT_NEAR(Light::triangle(kA, kB, kC, kRadiance, true).power().r, 2.0f * kRadiance.r * area * kPi, 1e-5f);
 }
 
-TEST(TriangleLight, PdfLiIntegratesToOneOverTheDirectionsThatReachIt) {
-    // Real geometry: the triangle in an Embree scene finds which directions reach it.
-    Mesh mesh;
-    mesh.name = "emitter";
-    mesh.positions = {kA, kB, kC};
-    mesh.triangles = {glm::uvec3(0, 1, 2)};
+// The integral of light.pdfLi() over the sphere of directions from ref, by uniform directions;
+// real geometry, the light's mesh in an Embree scene, finds which of them reach it.
+Estimate pdfLiIntegral(const Light& light, const Mesh& mesh, const glm::vec3& ref, uint64_t seed) {
     RenderScene scene(test::sceneWith({mesh}));
-    const Light light = Light::triangle(kA, kB, kC, kRadiance, false);
-    const glm::vec3 ref{0.1f, 0.2f, -0.3f};
     Estimate integral;
-    Rng rng(4);
+    Rng rng(seed);
     for (int i = 0; i < 200000; ++i) {
         Ray ray;
         ray.o = ref;
@@ -82,6 +79,15 @@ TEST(TriangleLight, PdfLiIntegratesToOneOverTheDirectionsThatReachIt) {
         const auto hit = scene.intersect(ray);
         integral.add(hit ? 4.0 * kPi * light.pdfLi(ref, ray.d, hit->p, hit->ng) : 0.0);
     }
+    return integral;
+}
+
+TEST(TriangleLight, PdfLiIntegratesToOneOverTheDirectionsThatReachIt) {
+    Mesh mesh;
+    mesh.name = "emitter";
+    mesh.positions = {kA, kB, kC};
+    mesh.triangles = {glm::uvec3(0, 1, 2)};
+    const Estimate integral = pdfLiIntegral(Light::triangle(kA, kB, kC, kRadiance, false), mesh, {0.1f, 0.2f, -0.3f}, 4);
     EXPECT_ESTIMATE(integral, 1.0);
 }
 
@@ -205,6 +211,140 @@ TEST(TriangleLight, EmissionSamplesMatchPdfLeAndCarryThePower) {
         }
         if (twoSided) EXPECT_NEAR(backward, count / 2, 5 * std::sqrt(count / 4.0));  // binomial, 5 sigma
         else EXPECT_EQ(backward, 0);
+        EXPECT_ESTIMATE(flux, light.power().r);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Emissive rectangle
+
+// A tilted 1.2 x 0.8 rectangle: kEx and kEy orthogonal, its front (kEx x kEy) facing up (+z).
+const glm::vec3 kCorner{-0.5f, -0.4f, 2.0f}, kEx{1.2f, 0.0f, 0.3f}, kEy{0.0f, 0.8f, 0.0f};
+std::vector<glm::dvec3> rectangleCorners() { return {kCorner, kCorner + kEx, kCorner + kEx + kEy, kCorner + kEy}; }
+// Beside the rectangle, 1 cm off its plane on its front side: sampled by solid angle there.
+const glm::vec3 kBesideRectangle = kCorner + 1.3f * kEx + 0.5f * kEy + 0.01f * glm::normalize(glm::cross(kEx, kEy));
+
+TEST(SphericalRectangle, SolidAngleIsItsTwoTrianglesAndDirectionsAreUniformOverIt) {
+    // The rectangle cut into an 8 x 8 grid, each cell of which should receive samples in
+    // proportion to its solid angle: from beside it near its plane, from afar, from behind it and
+    // from where it fills most of the view.
+    const int n = 8;
+    const auto at = [&](int i, int j) { return kCorner + (float(i) / n) * kEx + (float(j) / n) * kEy; };
+    const glm::vec3 front = glm::normalize(glm::cross(kEx, kEy));
+    for (const glm::vec3& ref : {kBesideRectangle, glm::vec3(0.1f, 0.2f, -0.3f), glm::vec3(0.2f, 0.1f, 3.0f),
+                                 kCorner + 0.5f * (kEx + kEy) + 0.05f * front}) {
+        const SphericalRectangle rectangle(kCorner, kEx, kEy, ref);
+        const float solidAngle = rectangle.solidAngle();
+        EXPECT_NEAR(solidAngle, triangleSolidAngle(at(0, 0), at(n, 0), at(n, n), ref) +
+                                    triangleSolidAngle(at(0, 0), at(n, n), at(0, n), ref), 1e-4f * solidAngle);
+        const int count = 200000;
+        std::vector<double> expected, observed(size_t(n * n), 0.0);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                expected.push_back(count * double(SphericalRectangle(at(i, j), kEx / float(n), kEy / float(n), ref).solidAngle()) /
+                                   solidAngle);
+        Rng rng(14);
+        for (int s = 0; s < count; ++s) {
+            const glm::vec3 p = rectangle.sample(rng.uniform2());
+            const glm::vec3 local = p - kCorner;
+            ASSERT_NEAR(glm::dot(local, front), 0.0f, 1e-5f);
+            const float x = glm::dot(local, kEx) / glm::dot(kEx, kEx), y = glm::dot(local, kEy) / glm::dot(kEy, kEy);
+            ASSERT_GE(x, -1e-6f);
+            ASSERT_LE(x, 1.0f + 1e-6f);
+            ASSERT_GE(y, -1e-6f);
+            ASSERT_LE(y, 1.0f + 1e-6f);
+            observed[size_t(std::clamp(int(x * n), 0, n - 1) * n + std::clamp(int(y * n), 0, n - 1))] += 1.0;
+        }
+        EXPECT_LT(test::chiSquareZ(observed, expected), 4.0) << "from " << ref.x << " " << ref.y << " " << ref.z;
+    }
+    // From a point in its plane it subtends nothing.
+    EXPECT_EQ(SphericalRectangle(kCorner, kEx, kEy, kCorner + 2.0f * kEx).solidAngle(), 0.0f);
+}
+
+TEST(RectangleLight, SampledPointsHaveThePdfThatPdfLiGivesAndLieOnIt) {
+    const Light light = Light::rectangle(kCorner, kEx, kEy, kRadiance, false);
+    const glm::vec3 n = glm::normalize(glm::cross(kEx, kEy));
+    for (const glm::vec3& ref : {kBesideRectangle, glm::vec3(0.1f, 0.2f, -0.3f), glm::vec3(0.2f, 0.1f, 3.0f)}) {
+        const bool refInFront = glm::dot(ref - kCorner, n) > 0.0f;
+        Rng rng(15);
+        for (int i = 0; i < 2000; ++i) {
+            const auto s = light.sampleLi(ref, rng.uniform2());
+            ASSERT_TRUE(s);
+            ASSERT_NEAR(glm::length(glm::normalize(s->pLight - ref) - s->wi), 0.0f, 1e-5f);
+            ASSERT_NEAR(glm::dot(s->pLight - kCorner, n), 0.0f, 1e-5f);
+            ASSERT_NEAR(glm::length(s->nLight - n), 0.0f, 1e-5f);
+            ASSERT_NEAR(s->pdf, light.pdfLi(ref, s->wi, s->pLight, s->nLight), 1e-4f * s->pdf);
+            ASSERT_EQ(s->L, refInFront ? kRadiance : glm::vec3(0.0f));  // one-sided
+        }
+    }
+    const float area = glm::length(glm::cross(kEx, kEy));
+    EXPECT_NEAR(light.power().r, kRadiance.r * area * kPi, 1e-5f);
+    EXPECT_NEAR(Light::rectangle(kCorner, kEx, kEy, kRadiance, true).power().r, 2.0f * kRadiance.r * area * kPi, 1e-5f);
+    EXPECT_FALSE(light.isDelta());
+    ASSERT_NE(light.planar(), nullptr);
+}
+
+TEST(RectangleLight, PdfLiIntegratesToOneOverTheDirectionsThatReachIt) {
+    Mesh mesh;
+    mesh.name = "emitter";
+    mesh.positions = {kCorner, kCorner + kEx, kCorner + kEx + kEy, kCorner + kEy};
+    mesh.triangles = {glm::uvec3(0, 1, 2), glm::uvec3(0, 2, 3)};
+    const Light light = Light::rectangle(kCorner, kEx, kEy, kRadiance, true);
+    for (const glm::vec3& ref : {kBesideRectangle, glm::vec3(0.1f, 0.2f, -0.3f)}) {
+        const Estimate integral = pdfLiIntegral(light, mesh, ref, 16);
+        EXPECT_ESTIMATE(integral, 1.0);
+    }
+}
+
+TEST(RectangleLight, IrradianceMatchesLambertsFormulaWithLowVarianceNearItsPlane) {
+    const Light light = Light::rectangle(kCorner, kEx, kEy, kRadiance, true);
+    // A surface beside the lamp, facing it and tilted towards it, as a ceiling beside a lamp hung
+    // just below it; and one far below.
+    const glm::vec3 front = glm::normalize(glm::cross(kEx, kEy));
+    const struct {
+        glm::vec3 p, n;
+        bool nearPlane;
+    } cases[] = {{kBesideRectangle, glm::normalize(-front - 0.3f * glm::normalize(kEx)), true},
+                 {glm::vec3(0.3f, -0.2f, 0.4f), glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f)), false}};
+    for (const auto& c : cases) {
+        const double expected = lambertIrradiance(c.p, c.n, rectangleCorners(), kRadiance.r);
+        Estimate E;
+        Rng rng(17);
+        for (int i = 0; i < 100000; ++i) {
+            const auto s = light.sampleLi(c.p, rng.uniform2());
+            ASSERT_TRUE(s);
+            E.add(s->L.r * std::max(0.0f, glm::dot(c.n, s->wi)) / s->pdf);
+        }
+        EXPECT_ESTIMATE(E, expected);
+        EXPECT_GT(expected, 0.01);
+        // By solid angle, the relative deviation of a sample is the cosine's alone, under 1; by
+        // area from beside the lamp it would be several.
+        if (c.nearPlane) {
+            EXPECT_LT(E.stdError() * std::sqrt(double(E.n)) / E.mean(), 1.0);
+        }
+    }
+}
+
+TEST(RectangleLight, EmissionSamplesMatchPdfLeAndCarryThePower) {
+    for (bool twoSided : {false, true}) {
+        const Light light = Light::rectangle(kCorner, kEx, kEy, kRadiance, twoSided);
+        const glm::vec3 n = glm::normalize(glm::cross(kEx, kEy));
+        Estimate flux;
+        Rng rng(18);
+        for (int i = 0; i < 50000; ++i) {
+            const auto s = light.sampleLe(rng.uniform2(), rng.uniform2());
+            ASSERT_TRUE(s);
+            ASSERT_NEAR(glm::dot(s->ray.o - kCorner, n), 0.0f, 1e-5f);
+            ASSERT_GT(glm::dot(s->ray.d, s->nLight), 0.0f);
+            if (!twoSided) {
+                ASSERT_GT(glm::dot(s->ray.d, n), 0.0f);
+            }
+            float pdfPos, pdfDir;
+            light.pdfLe(s->ray, s->nLight, &pdfPos, &pdfDir);
+            ASSERT_NEAR(pdfPos, s->pdfPos, 1e-5f * pdfPos);
+            ASSERT_NEAR(pdfDir, s->pdfDir, 1e-4f * pdfDir + 1e-7f);
+            flux.add(s->L.r * glm::dot(s->ray.d, s->nLight) / (s->pdfPos * s->pdfDir));
+        }
         EXPECT_ESTIMATE(flux, light.power().r);
     }
 }

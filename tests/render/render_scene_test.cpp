@@ -387,10 +387,11 @@ TEST(RenderSceneLights, EmissiveTrianglesPunctualLightsAndEnvironment) {
     desc->lights = {point};
     desc->environment.color = glm::vec3(0.1f);
     RenderScene scene(desc);
-    ASSERT_EQ(scene.lights().size(), 4u);
-    EXPECT_EQ(scene.environmentLight(), 3);
-    EXPECT_TRUE(scene.lights()[2].is<PointLight>());
-    EXPECT_TRUE(scene.lights()[3].is<EnvironmentLight>());
+    ASSERT_EQ(scene.lights().size(), 3u);  // the square lamp is one rectangle
+    EXPECT_EQ(scene.environmentLight(), 2);
+    EXPECT_TRUE(scene.lights()[0].is<RectangleLight>());
+    EXPECT_TRUE(scene.lights()[1].is<PointLight>());
+    EXPECT_TRUE(scene.lights()[2].is<EnvironmentLight>());
 
     Ray up;
     up.o = {0.3f, 0.6f, 0.5f};
@@ -398,8 +399,7 @@ TEST(RenderSceneLights, EmissiveTrianglesPunctualLightsAndEnvironment) {
     const auto below = scene.intersect(up);
     ASSERT_TRUE(below);
     EXPECT_EQ(below->mesh, 0);
-    const int index = scene.lightIndex(*below);
-    EXPECT_TRUE(index == 0 || index == 1);
+    EXPECT_EQ(scene.lightIndex(*below), 0);
     EXPECT_EQ(scene.emitted(*below, {0, 0, -1}), glm::vec3(3.0f));  // front face, towards -z
     const auto above = scene.intersect(rayDown(0.3f, 0.6f, 2.0f));
     ASSERT_TRUE(above);
@@ -413,24 +413,73 @@ TEST(RenderSceneLights, EmissiveTrianglesPunctualLightsAndEnvironment) {
     // 4 pi^2 r^2 L with r the bounding sphere's radius.
     const float r = scene.bounds().radius();
     EXPECT_NEAR(r, 0.5f * std::sqrt(3.0f * 3.0f * 2.0f + 1.0f), 1e-5f);
-    const double powers[4] = {1.5 * kPi, 1.5 * kPi, 8.0 * kPi, 4.0 * kPi * kPi * r * r * 0.1};
-    const double total = powers[0] + powers[1] + powers[2] + powers[3];
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(scene.lightPmf(i), powers[i] / total, 1e-5) << i;
-    std::vector<int> counts(4, 0);
+    const double powers[3] = {3.0 * kPi, 8.0 * kPi, 4.0 * kPi * kPi * r * r * 0.1};
+    const double total = powers[0] + powers[1] + powers[2];
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(scene.lightPmf(i), powers[i] / total, 1e-5) << i;
+    std::vector<int> counts(3, 0);
     Rng rng(31);
     const int n = 100000;
     for (int i = 0; i < n; ++i) {
         float pmf;
         const int l = scene.sampleLight(rng.uniform(), &pmf);
         ASSERT_GE(l, 0);
-        ASSERT_LT(l, 4);
+        ASSERT_LT(l, 3);
         ASSERT_FLOAT_EQ(pmf, scene.lightPmf(l));
         ++counts[l];
     }
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 3; ++i) {
         const double p = powers[i] / total;
         EXPECT_NEAR(counts[i], n * p, 5.0 * std::sqrt(n * p * (1.0 - p))) << i;  // binomial, 5 sigma
     }
+}
+
+TEST(RenderSceneLights, ARectangularLampOfOneRadianceIsOneLightAndOtherQuadsAreTriangles) {
+    Material glow;
+    glow.emission = glm::vec3(2.0f);
+    glow.doubleSided = false;
+    Material textured = glow;
+    textured.emissiveTexture.image = 0;
+    const auto lightsOf = [&](const Mesh& lamp, const Material& material) {
+        auto desc = sceneWith({lamp}, {material});
+        TextureImage image;
+        image.name = "grey";
+        image.width = image.height = 1;
+        image.bytes = {glm::u8vec4(128, 128, 128, 255)};
+        desc->textures = {image};
+        RenderScene scene(desc);
+        std::vector<int> kinds;  // 0: triangle, 1: rectangle
+        for (const Light& light : scene.lights()) kinds.push_back(light.is<RectangleLight>() ? 1 : 0);
+        return std::make_pair(kinds, scene.lights().empty() ? 0.0f : scene.lights()[0].power().r);
+    };
+    // A tilted rectangle: one light, with both triangles' power, facing as they do.
+    const glm::vec3 a{0, 0, 1}, b{2, 0, 1.5f}, d{0, 1, 1};
+    const auto [rectangle, power] = lightsOf(quad("lamp", a, b, b + d - a, d, 0), glow);
+    EXPECT_EQ(rectangle, std::vector<int>{1});
+    EXPECT_NEAR(power, 2.0f * glm::length(b - a) * glm::length(d - a) * kPi, 1e-4f);
+    RenderScene scene(sceneWith({quad("lamp", a, b, b + d - a, d, 0)}, {glow}));
+    const RectangleLight* r = scene.lights()[0].get<RectangleLight>();
+    EXPECT_GT(glm::dot(r->n, glm::cross(b - a, d - a)), 0.0f);
+    EXPECT_FLOAT_EQ(r->area, glm::length(b - a) * glm::length(d - a));
+    Ray up;
+    up.o = {0.5f, 0.2f, 0.0f};
+    up.d = {0.0f, 0.0f, 1.0f};
+    Ray upOtherHalf = up;
+    upOtherHalf.o = {0.2f, 0.8f, 0.0f};
+    const auto first = scene.intersect(up), second = scene.intersect(upOtherHalf);
+    ASSERT_TRUE(first && second);
+    EXPECT_NE(first->triangle, second->triangle);
+    EXPECT_EQ(scene.lightIndex(*first), 0);
+    EXPECT_EQ(scene.lightIndex(*second), 0);
+
+    // A parallelogram that is not a rectangle, a trapezoid, and a textured emission stay two triangles.
+    const glm::vec3 shear{0.5f, 0, 0};
+    EXPECT_EQ(lightsOf(quad("lamp", a, b, b + d - a + shear, d + shear, 0), glow).first, (std::vector<int>{0, 0}));
+    EXPECT_EQ(lightsOf(quad("lamp", a, b, b + d - a + shear, d, 0), glow).first, (std::vector<int>{0, 0}));
+    EXPECT_EQ(lightsOf(quad("lamp", a, b, b + d - a, d, 0), textured).first, (std::vector<int>{0, 0}));
+    // Two halves wound opposite ways.
+    Mesh apart = quad("lamp", a, b, b + d - a, d, 0);
+    apart.triangles[1] = glm::uvec3(0, 3, 2);  // the same square, its second half flipped
+    EXPECT_EQ(lightsOf(apart, glow).first, (std::vector<int>{0, 0}));
 }
 
 TEST(RenderSceneLights, DoubleSidedEmittersShineBothWaysAndDarkScenesHaveNoLights) {
