@@ -160,7 +160,7 @@ float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
 }
 
 std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
-    if (!(area > 0.0f)) return std::nullopt;
+    if (!(area > 0.0f) || darkFrom(ref, a)) return std::nullopt;
     const float solidAngle = solidAngleSampled(ref);
     glm::vec2 bary;
     if (solidAngle > 0.0f) {
@@ -201,7 +201,7 @@ float RectangleLight::solidAngleSampled(const glm::vec3& ref) const {
 }
 
 std::optional<LightLiSample> RectangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
-    if (!(area > 0.0f)) return std::nullopt;
+    if (!(area > 0.0f) || darkFrom(ref, corner)) return std::nullopt;
     if (nearPlane(ref, corner)) {
         const SphericalRectangle rectangle(corner, ex, ey, ref);
         const float solidAngle = rectangle.solidAngle();

@@ -72,6 +72,11 @@ protected:
     // Whether ref is near enough the plane (closer than the longest edge: Cycles' test) for
     // sampling by solid angle to pay.
     bool nearPlane(const glm::vec3& ref, const glm::vec3& pointOfPlane) const;
+    // ref lies behind a one-sided emitter or in its plane, where no point of it shines: a ceiling
+    // above a lamp that lights downwards. Its samples would all carry no light.
+    bool darkFrom(const glm::vec3& ref, const glm::vec3& pointOfPlane) const {
+        return !twoSided && !(glm::dot(n, ref - pointOfPlane) > 0.0f);
+    }
     // The sample of pLight from ref, its density by solidAngle (0: by area), L set where the face
     // towards ref emits (to `radiance`).
     std::optional<LightLiSample> towards(const glm::vec3& ref, const glm::vec3& pLight, float solidAngle,

@@ -46,18 +46,21 @@ const glm::vec3 kRadiance{2.0f, 1.0f, 0.5f};
 TEST(TriangleLight, SampledDirectionsHaveThePdfThatPdfLiGives) {
     const Light light = Light::triangle(kA, kB, kC, kRadiance, false);
     const glm::vec3 n = glm::normalize(glm::cross(kB - kA, kC - kA));
-    const glm::vec3 ref{0.1f, 0.2f, -0.3f};
-    const bool refInFront = glm::dot(ref - kA, n) > 0.0f;
+    const glm::vec3 front{0.2f, 0.1f, 3.0f}, behind{0.1f, 0.2f, -0.3f};
+    ASSERT_GT(glm::dot(front - kA, n), 0.0f);
+    ASSERT_LT(glm::dot(behind - kA, n), 0.0f);
     Rng rng(3);
     for (int i = 0; i < 2000; ++i) {
-        const auto s = light.sampleLi(ref, rng.uniform2());
+        const auto s = light.sampleLi(front, rng.uniform2());
         ASSERT_TRUE(s);
         ASSERT_NEAR(glm::length(s->wi), 1.0f, 1e-5f);
-        ASSERT_NEAR(glm::length(glm::normalize(s->pLight - ref) - s->wi), 0.0f, 1e-5f);
+        ASSERT_NEAR(glm::length(glm::normalize(s->pLight - front) - s->wi), 0.0f, 1e-5f);
         ASSERT_NEAR(glm::length(s->nLight - n), 0.0f, 1e-5f);
-        ASSERT_NEAR(s->pdf, light.pdfLi(ref, s->wi, s->pLight, s->nLight), 1e-4f * s->pdf);
-        // One-sided: only the front face (counter-clockwise winding) shines.
-        ASSERT_EQ(s->L, refInFront ? kRadiance : glm::vec3(0.0f));
+        ASSERT_NEAR(s->pdf, light.pdfLi(front, s->wi, s->pLight, s->nLight), 1e-4f * s->pdf);
+        ASSERT_EQ(s->L, kRadiance);
+        // One-sided: only the front face (counter-clockwise winding) shines, so from behind there
+        // is no sample to take.
+        ASSERT_FALSE(light.sampleLi(behind, rng.uniform2()));
     }
     EXPECT_FALSE(light.isDelta());
     EXPECT_FALSE(light.isInfinite());
@@ -269,12 +272,13 @@ TEST(RectangleLight, SampledPointsHaveThePdfThatPdfLiGivesAndLieOnIt) {
         Rng rng(15);
         for (int i = 0; i < 2000; ++i) {
             const auto s = light.sampleLi(ref, rng.uniform2());
-            ASSERT_TRUE(s);
+            ASSERT_EQ(bool(s), refInFront);  // one-sided: no sample from behind
+            if (!s) continue;
             ASSERT_NEAR(glm::length(glm::normalize(s->pLight - ref) - s->wi), 0.0f, 1e-5f);
             ASSERT_NEAR(glm::dot(s->pLight - kCorner, n), 0.0f, 1e-5f);
             ASSERT_NEAR(glm::length(s->nLight - n), 0.0f, 1e-5f);
             ASSERT_NEAR(s->pdf, light.pdfLi(ref, s->wi, s->pLight, s->nLight), 1e-4f * s->pdf);
-            ASSERT_EQ(s->L, refInFront ? kRadiance : glm::vec3(0.0f));  // one-sided
+            ASSERT_EQ(s->L, kRadiance);
         }
     }
     const float area = glm::length(glm::cross(kEx, kEy));
