@@ -74,13 +74,19 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
     for (const Material& m : scene.materials)
         out << "  " << quoted(m.name) << "  " << (m.woven ? "woven" : "glTF") << "\n";
     out << "meshes:" << (scene.meshes.empty() ? " none" : "") << "\n";
+    bool emitters = false;
     for (const Mesh& m : scene.meshes) {
         const bool hasMaterial = m.material >= 0 && m.material < int(scene.materials.size());
+        const glm::vec3 emission = hasMaterial ? scene.materials[size_t(m.material)].emission : glm::vec3(0.0f);
+        const bool emits = glm::max(emission.r, glm::max(emission.g, emission.b)) > 0.0f;
+        emitters = emitters || emits;
         out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles"
             << (m.instances ? " x " + std::to_string(m.instances->size()) + " instances" : "") << "  material "
-            << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default") << "\n";
+            << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default")
+            << (emits ? "  emissive: an area light" : "") << "\n";
     }
-    out << "lights:" << (scene.lights.empty() ? " none" : "") << "\n";
+    // Emissive meshes light a scene too: a file lit by a lamp mesh alone is not unlit.
+    out << "lights:" << (scene.lights.empty() ? (emitters ? " none but the emissive meshes" : " none") : "") << "\n";
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const PunctualLight& l = scene.lights[i];
         const bool directional = l.type == PunctualLight::Type::Directional;
