@@ -298,7 +298,8 @@ namespace {
 // (two vertex indices), wound alike, and the far corners mirror images about the diagonal's
 // midpoint with a right angle there. Returns the rectangle's corner and edges (their cross
 // product along the first triangle's normal). The tolerance is relative to the edges, far below
-// anything a render could show, and above the rounding of a placed quad's corners.
+// anything a render could show; a quad whose placed corners round beyond it stays two triangles,
+// which is always right.
 struct RectangleShape {
     glm::vec3 corner, ex, ey;
 };
@@ -317,9 +318,10 @@ std::optional<RectangleShape> rectangleOf(const Corners& first, const Corners& s
     const glm::vec3 u = first.p[lone1], v = second.p[lone2];
     const glm::vec3 x = first.p[(lone1 + 1) % 3], y = first.p[(lone1 + 2) % 3];
     const glm::vec3 ex = x - u, ey = y - u;
-    const float scale = std::max(glm::length(ex), glm::length(ey));
-    if (!(scale > 0.0f) || glm::length(u + v - x - y) > kTolerance * scale ||
-        std::abs(glm::dot(ex, ey)) > kTolerance * scale * scale)
+    const float width = glm::length(ex), height = glm::length(ey);
+    // Relative to the shorter edge and to both, so that a long thin strip is held as tightly.
+    if (!(std::min(width, height) > 0.0f) || glm::length(u + v - x - y) > kTolerance * std::min(width, height) ||
+        std::abs(glm::dot(ex, ey)) > kTolerance * width * height)
         return std::nullopt;
     const glm::vec3 n1 = glm::cross(first.p[1] - first.p[0], first.p[2] - first.p[0]);
     const glm::vec3 n2 = glm::cross(second.p[1] - second.p[0], second.p[2] - second.p[0]);

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spherical_triangle.h"
+
 namespace woven {
 
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-
-float safeAcos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
 
 }  // namespace
 
@@ -38,8 +38,8 @@ SphericalRectangle::SphericalRectangle(const glm::vec3& corner, const glm::vec3&
     const glm::vec3 n1 = glm::normalize(glm::vec3(-z0_, 0.0f, x1_));
     const glm::vec3 n2 = glm::normalize(glm::vec3(0.0f, -z0_, y1_));
     const glm::vec3 n3 = glm::normalize(glm::vec3(z0_, 0.0f, -x0_));
-    const float g0 = safeAcos(-glm::dot(n0, n1)), g1 = safeAcos(-glm::dot(n1, n2));
-    const float g2 = safeAcos(-glm::dot(n2, n3)), g3 = safeAcos(-glm::dot(n3, n0));
+    const float g0 = angleBetween(n0, -n1), g1 = angleBetween(n1, -n2);
+    const float g2 = angleBetween(n2, -n3), g3 = angleBetween(n3, -n0);
     b0_ = n0.z;
     b1_ = n2.z;
     k_ = 2.0f * kPi - g2 - g3;
@@ -57,7 +57,7 @@ glm::vec3 SphericalRectangle::sample(const glm::vec2& u) const {
     const float dist = std::sqrt(xu * xu + z0_ * z0_);
     const float h0 = y0_ / std::sqrt(dist * dist + y0_ * y0_), h1 = y1_ / std::sqrt(dist * dist + y1_ * y1_);
     const float hv = h0 + u.y * (h1 - h0), hv2 = hv * hv;
-    const float yv = hv2 < 1.0f - 1e-6f ? std::clamp(hv * dist / std::sqrt(1.0f - hv2), y0_, y1_) : y1_;
+    const float yv = hv2 < 1.0f - 1e-6f ? std::clamp(hv * dist / std::sqrt(1.0f - hv2), y0_, y1_) : (hv > 0.0f ? y1_ : y0_);
     return p_ + xu * x_ + yv * y_ + z0_ * z_;
 }
 

@@ -12,16 +12,15 @@ constexpr float kPi = 3.14159265358979f;
 float safeAsin(float x) { return std::asin(std::clamp(x, -1.0f, 1.0f)); }
 float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
 
-// The angle between unit vectors, accurate near 0 and pi where acos(dot) is not.
-float angleBetween(const glm::vec3& v1, const glm::vec3& v2) {
-    if (glm::dot(v1, v2) < 0.0f) return kPi - 2.0f * safeAsin(glm::length(v1 + v2) / 2.0f);
-    return 2.0f * safeAsin(glm::length(v2 - v1) / 2.0f);
-}
-
 // v less its component along the unit vector w.
 glm::vec3 gramSchmidt(const glm::vec3& v, const glm::vec3& w) { return v - glm::dot(v, w) * w; }
 
 }  // namespace
+
+float angleBetween(const glm::vec3& v1, const glm::vec3& v2) {
+    if (glm::dot(v1, v2) < 0.0f) return kPi - 2.0f * safeAsin(glm::length(v1 + v2) / 2.0f);
+    return 2.0f * safeAsin(glm::length(v2 - v1) / 2.0f);
+}
 
 float triangleSolidAngle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& p) {
     const glm::vec3 da = glm::normalize(a - p), db = glm::normalize(b - p), dc = glm::normalize(c - p);

@@ -10,6 +10,10 @@
 
 namespace woven {
 
+// The angle between unit vectors, accurate near 0 and pi where acos(dot) is not (pbrt-v4's
+// AngleBetween): the spherical polygons' angles near a lamp's plane are there.
+float angleBetween(const glm::vec3& v1, const glm::vec3& v2);
+
 // The solid angle of triangle (a, b, c) seen from p (Van Oosterom and Strackee 1983).
 float triangleSolidAngle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& p);
 

@@ -140,13 +140,15 @@ TEST(Instancing, SingleSidedCopiesShowTheirFrontOnly) {
 TEST(Instancing, EachCopyOfAnEmitterIsItsOwnLight) {
     Material glow;
     glow.emission = glm::vec3(2.0f);
+    glow.doubleSided = false;  // so that each copy's light must face as its triangles do
     Mesh mesh = unitQuad(0);
     mesh.instances = std::make_shared<const std::vector<glm::mat4>>(ninePlacements());
     RenderScene scene(sceneWith({mesh}, {glow}));
     // Each copy of the square stays a rectangle (turned, scaled, mirrored), one light each.
     ASSERT_EQ(scene.lights().size(), 9u);
     std::vector<bool> found(9, false);
-    for (int i = 0; i < 9; ++i)
+    for (int i = 0; i < 9; ++i) {
+        int copysLight = -1;  // both halves of a copy are the one light
         for (const glm::vec2 at : {glm::vec2(0.7f, 0.2f), glm::vec2(0.2f, 0.7f)}) {
             const glm::vec3 target((*mesh.instances)[size_t(i)] * glm::vec4(at, 0.0f, 1.0f));
             Ray ray;
@@ -157,9 +159,20 @@ TEST(Instancing, EachCopyOfAnEmitterIsItsOwnLight) {
             const int light = scene.lightIndex(*hit);
             ASSERT_GE(light, 0);
             EXPECT_TRUE(scene.lights()[size_t(light)].is<RectangleLight>());
+            if (copysLight >= 0) {
+                EXPECT_EQ(light, copysLight) << "copy " << i;
+            }
+            copysLight = light;
             found[size_t(light)] = true;
             EXPECT_NEAR(glm::length(scene.emitted(*hit, -ray.d) - glm::vec3(2.0f)), 0.0f, 1e-6f);
+            // Its sampling shines on the side the copy's triangles face (the ray's) only.
+            const Light& lamp = scene.lights()[size_t(light)];
+            const auto lit = lamp.sampleLi(ray.o, {0.3f, 0.6f});
+            ASSERT_TRUE(lit) << "copy " << i;
+            EXPECT_EQ(lit->L, glm::vec3(2.0f)) << "copy " << i;
+            EXPECT_FALSE(lamp.sampleLi(2.0f * target - ray.o, {0.3f, 0.6f})) << "copy " << i << ", from behind";
         }
+    }
     for (size_t l = 0; l < found.size(); ++l) EXPECT_TRUE(found[l]) << "light " << l << " is no copy's";
 }
 

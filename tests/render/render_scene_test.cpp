@@ -480,6 +480,15 @@ TEST(RenderSceneLights, ARectangularLampOfOneRadianceIsOneLightAndOtherQuadsAreT
     Mesh apart = quad("lamp", a, b, b + d - a, d, 0);
     apart.triangles[1] = glm::uvec3(0, 3, 2);  // the same square, its second half flipped
     EXPECT_EQ(lightsOf(apart, glow).first, (std::vector<int>{0, 0}));
+    // Split along the other diagonal, corners listed from another one: still one rectangle.
+    Mesh otherDiagonal = quad("lamp", a, b, b + d - a, d, 0);
+    otherDiagonal.triangles = {glm::uvec3(1, 3, 0), glm::uvec3(3, 1, 2)};
+    EXPECT_EQ(lightsOf(otherDiagonal, glow).first, std::vector<int>{1});
+    // A 10 m x 1 mm strip skewed by 0.1 degree: a right angle within 1e-5 of its long edge alone,
+    // not of both edges, so it stays two triangles.
+    const float skew = 0.1f * kPi / 180.0f;
+    const glm::vec3 along{10, 0, 0}, across{0.001f * std::sin(skew), 0.001f * std::cos(skew), 0};
+    EXPECT_EQ(lightsOf(quad("lamp", a, a + along, a + along + across, a + across, 0), glow).first, (std::vector<int>{0, 0}));
 }
 
 TEST(RenderSceneLights, DoubleSidedEmittersShineBothWaysAndDarkScenesHaveNoLights) {
