@@ -77,8 +77,7 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
     bool emitters = false;
     for (const Mesh& m : scene.meshes) {
         const bool hasMaterial = m.material >= 0 && m.material < int(scene.materials.size());
-        const glm::vec3 emission = hasMaterial ? scene.materials[size_t(m.material)].emission : glm::vec3(0.0f);
-        const bool emits = glm::max(emission.r, glm::max(emission.g, emission.b)) > 0.0f;
+        const bool emits = hasMaterial && scene.materials[size_t(m.material)].emits();
         emitters = emitters || emits;
         out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles"
             << (m.instances ? " x " + std::to_string(m.instances->size()) + " instances" : "") << "  material "

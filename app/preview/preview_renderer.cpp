@@ -107,7 +107,7 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
         meshes_.push_back(std::make_unique<GpuMesh>(m));
         // Emitters cast no shadow here: an area light's samples sit on (or in) its own surface.
         const bool emitter = m.material >= 0 && m.material < int(scene.materials.size()) &&
-                             scene.materials[m.material].emission != glm::vec3(0.0f);
+                             scene.materials[m.material].emits();
         if (!emitter) shadowCasters_.push_back(meshes_.back().get());
     }
 }

@@ -133,7 +133,7 @@ Shot loadShot(const std::string& path, const std::string& target) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
         const bool target = std::find(shot.meshes.begin(), shot.meshes.end(), i) != shot.meshes.end();
-        if (!target && mesh.material >= 0 && scene.materials[size_t(mesh.material)].emission != glm::vec3(0.0f))
+        if (!target && mesh.material >= 0 && scene.materials[size_t(mesh.material)].emits())
             for (const glm::vec3& p : mesh.positions) light(glm::dvec3(p) - centre);
     }
     shot.backlit = anyLight && allBehind && scene.environment.color == glm::vec3(0.0f);

@@ -6,6 +6,6 @@ SurfaceMaterial::SurfaceMaterial(const Material& material, const std::vector<Tex
     : emission_(glm::max(material.emission, glm::vec3(0.0f))),
       emissiveTexture_(material.emissiveTexture, textures),
       twoSided_(material.doubleSided),
-      emits_(glm::max(emission_.r, glm::max(emission_.g, emission_.b)) > 0.0f && !material.unlit) {}
+      emits_(material.emits()) {}
 
 }  // namespace woven

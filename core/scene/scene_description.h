@@ -155,6 +155,10 @@ struct Material {
     TransmissionParams transmission;
     DiffuseTransmissionParams diffuseTransmission;
     IridescenceParams iridescence;
+
+    // An area light: some emission, on a surface that is not unlit (which shows its colour and
+    // lights nothing).
+    bool emits() const { return glm::max(emission.r, glm::max(emission.g, emission.b)) > 0.0f && !unlit; }
 };
 
 // One primitive in world space. Per-vertex arrays are either empty (missing in the file and not
