@@ -36,6 +36,12 @@ glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
 
 float average(const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; }
 
+// The solid angle a planar light is sampled by from a point near its plane, where it lies within
+// the bounds in which that is sound (spherical_triangle.h); else 0: sampled by area.
+float samplableSolidAngle(float solidAngle) {
+    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+}
+
 // A ray towards the scene from infinitely far along -toLight: from a disk of the bounding
 // sphere's radius, perpendicular to it and one radius outside the sphere's centre (pbrt-v3).
 void infiniteLightRay(const SceneSphere& sphere, const glm::vec3& toLight, const glm::vec2& u, LightLeSample* s) {
@@ -154,9 +160,7 @@ glm::vec3 TriangleLight::radiance(const glm::vec2& bary) const {
 }
 
 float TriangleLight::solidAngleSampled(const glm::vec3& ref) const {
-    if (!nearPlane(ref, a)) return 0.0f;
-    const float solidAngle = triangleSolidAngle(a, b, c, ref);
-    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+    return nearPlane(ref, a) ? samplableSolidAngle(triangleSolidAngle(a, b, c, ref)) : 0.0f;
 }
 
 std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
@@ -170,11 +174,7 @@ std::optional<LightLiSample> TriangleLight::sampleLi(const glm::vec3& ref, const
     } else {
         bary = sampleTriangleBarycentrics(u);
     }
-    const glm::vec3 pLight = (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c;
-    // The emission is looked up only where the face towards ref emits.
-    auto s = towards(ref, pLight, solidAngle, glm::vec3(0.0f));
-    if (s && (twoSided || glm::dot(n, -s->wi) > 0.0f)) s->L = radiance(bary);
-    return s;
+    return towards(ref, (1.0f - bary.x - bary.y) * a + bary.x * b + bary.y * c, solidAngle, radiance(bary));
 }
 
 std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) const {
@@ -183,7 +183,7 @@ std::optional<LightLiSample> TriangleLight::centroidLi(const glm::vec3& ref) con
 }
 
 float TriangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight, const glm::vec3& nLight) const {
-    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, area > 0.0f ? solidAngleSampled(ref) : 0.0f);
+    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, solidAngleSampled(ref));
 }
 
 std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
@@ -195,17 +195,14 @@ std::optional<LightLeSample> TriangleLight::sampleLe(const glm::vec2& u1, const 
 }
 
 float RectangleLight::solidAngleSampled(const glm::vec3& ref) const {
-    if (!nearPlane(ref, corner)) return 0.0f;
-    const float solidAngle = SphericalRectangle(corner, ex, ey, ref).solidAngle();
-    return solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea ? solidAngle : 0.0f;
+    return nearPlane(ref, corner) ? samplableSolidAngle(SphericalRectangle(corner, ex, ey, ref).solidAngle()) : 0.0f;
 }
 
 std::optional<LightLiSample> RectangleLight::sampleLi(const glm::vec3& ref, const glm::vec2& u) const {
     if (!(area > 0.0f) || darkFrom(ref, corner)) return std::nullopt;
-    if (nearPlane(ref, corner)) {
+    if (nearPlane(ref, corner)) {  // as solidAngleSampled(), keeping the rectangle to sample
         const SphericalRectangle rectangle(corner, ex, ey, ref);
-        const float solidAngle = rectangle.solidAngle();
-        if (solidAngle >= kMinSphericalSampleArea && solidAngle <= kMaxSphericalSampleArea)
+        if (const float solidAngle = samplableSolidAngle(rectangle.solidAngle()); solidAngle > 0.0f)
             return towards(ref, rectangle.sample(u), solidAngle, L);
     }
     return towards(ref, corner + u.x * ex + u.y * ey, 0.0f, L);
@@ -218,7 +215,7 @@ std::optional<LightLiSample> RectangleLight::centroidLi(const glm::vec3& ref) co
 
 float RectangleLight::pdfLi(const glm::vec3& ref, const glm::vec3& wi, const glm::vec3& pLight,
                             const glm::vec3& nLight) const {
-    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, area > 0.0f ? solidAngleSampled(ref) : 0.0f);
+    return PlanarEmitter::pdfLi(ref, wi, pLight, nLight, solidAngleSampled(ref));
 }
 
 std::optional<LightLeSample> RectangleLight::sampleLe(const glm::vec2& u1, const glm::vec2& u2) const {
