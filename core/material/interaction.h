@@ -26,6 +26,11 @@ struct SurfaceHit {
     int instance = -1;  // which of an instanced mesh's copies (Mesh::instances), or -1
     int material = -1;
     float pError = 0.0f;  // bound on p's rounding error along ng: how far spawnRay lifts the origin
+    // Where spawnRay also moves a ray's origin: by pError towards the triangle's centroid, so that
+    // a hit rounded past the edge where two walls meet does not start outside the closed surface.
+    // Set with the hit (RenderScene), once for its shadow rays and its next ray; zero for a hit
+    // built by hand.
+    glm::vec3 towardsCentroid{0.0f};
     // The pixel's footprint at this point in TEXCOORD_0: how uv changes from one pixel to the next
     // along x and y (setUvFootprint(), footprint.h). Zero: no footprint (a point sample); only
     // materials that filter by it (filtersByFootprint()) get one.

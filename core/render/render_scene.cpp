@@ -33,6 +33,10 @@ constexpr float kPositionError = 4.0f * (7.0f * kUnitRoundoff) / (1.0f - 7.0f * 
 // the target's own rounding error is larger.
 constexpr float kShadowEpsilon = 1e-4f;
 
+// How far spawnRay lifts a ray's origin off the surface. A hit built by hand has no error bound:
+// it takes the one of a point of its magnitude.
+float spawnOffset(const SurfaceHit& hit) { return std::max(hit.pError, kPositionError * maxAbs(hit.p)); }
+
 // What an Embree filter callback needs to decide whether a candidate hit lets the ray through.
 struct HitFilter {
     const Mesh* mesh;
@@ -178,8 +182,7 @@ struct Corners {
     glm::vec4 t[3];  // where it has tangents (hitCorners)
 };
 
-// The corners' positions and winding alone: what spawnRay needs of them, at every bounce and
-// every shadow ray.
+// The corners' positions and winding alone: what finding rectangular lamps needs of them.
 Corners cornerPositions(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
     Corners c;
     c.tri = mesh.triangles[prim];
@@ -416,6 +419,10 @@ SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, int instance, unsigned
     // The largest component, not just the one along ng: Embree's own rounding when it meets the
     // triangle again mixes all three.
     hit.pError = kPositionError * std::max({absSum.x, absSum.y, absSum.z});
+    const float offset = spawnOffset(hit);
+    const glm::vec3 toCentroid = (p0 + p1 + p2) / 3.0f - hit.p;
+    const float toCentroidLength = glm::length(toCentroid);
+    if (toCentroidLength > offset) hit.towardsCentroid = toCentroid * (offset / toCentroidLength);
 
     glm::vec3 nFile = hit.ng;  // the file's normal, unflipped: glTF's bitangent is built from it
     if (!mesh.normals.empty()) {
@@ -529,21 +536,11 @@ bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float t
 }  // namespace
 
 Ray RenderScene::spawnRay(const SurfaceHit& from, const glm::vec3& d) const {
-    // A hit built by hand has no error bound: use the one of a point of its magnitude.
-    const float offset = std::max(from.pError, kPositionError * maxAbs(from.p));
+    const float offset = spawnOffset(from);
     Ray ray;
     ray.o = from.p + (glm::dot(d, from.ng) < 0.0f ? -offset : offset) * from.ng;
+    ray.o += from.towardsCentroid;
     ray.d = d;
-    // Also pull the origin by the same bound towards the triangle's centroid: a hit that rounds
-    // onto the far side of an edge where two walls meet (a box's corner seen from inside) would
-    // otherwise start outside the closed surface and escape through the seam.
-    if (from.mesh >= 0 && from.triangle >= 0 && from.mesh < int(impl_->scene->meshes.size())) {
-        const Corners c =
-            cornerPositions(impl_->scene->meshes[size_t(from.mesh)], from.instance, unsigned(from.triangle), 0.0f, 0.0f);
-        const glm::vec3 toCentroid = (c.p[0] + c.p[1] + c.p[2]) / 3.0f - from.p;
-        const float length = glm::length(toCentroid);
-        if (length > offset) ray.o += toCentroid * (offset / length);
-    }
     return ray;
 }
 
