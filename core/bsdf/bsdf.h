@@ -31,6 +31,9 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const {
         return std::visit([&](const auto& l) { return l.sample(wo, u, uc); }, lobe_);
     }
+    bool choosesLobe() const {
+        return std::visit([](const auto& l) { return l.choosesLobe(); }, lobe_);
+    }
     bool transmits() const {
         return std::visit([](const auto& l) { return l.transmits(); }, lobe_);
     }

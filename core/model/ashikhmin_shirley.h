@@ -36,6 +36,7 @@ public:
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     // u: two uniform numbers in [0, 1) for the direction, uc one more for the lobe choice.
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
+    bool choosesLobe() const { return true; }  // sample() reads uc
 
     bool transmits() const { return false; }
     // The reflectance a denoiser's albedo pass shows (integrator.h's FirstHit): the specular

@@ -30,6 +30,7 @@ public:
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
+    bool choosesLobe() const { return true; }  // sample() reads uc
     bool transmits() const { return false; }
     // The mixture's albedo: each lobe's (AshikhminShirley::albedo()) by its weight.
     glm::vec3 albedo() const;

@@ -31,6 +31,8 @@ public:
         if (s) s->wi = frame_.toWorld(s->wi);
         return s;
     }
+    // Whether sample() reads its uc: an integrator draws that number only then.
+    bool choosesLobe() const { return lobe_.choosesLobe(); }
     // Whether light may pass to the other side of the surface (else the lobe only reflects).
     bool transmits() const { return lobe_.transmits(); }
     // The reflectance the albedo render pass shows (integrator.h's FirstHit).

@@ -18,6 +18,7 @@ public:
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
     float pdf(const glm::vec3& wo, const glm::vec3& wi) const;
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
+    bool choosesLobe() const { return true; }  // sample() reads uc
     bool transmits() const { return true; }
     // The thread's colour as its reflection shows it: what the albedo render pass keeps.
     glm::vec3 albedo() const { return reflection_.albedo(); }

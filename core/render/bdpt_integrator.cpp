@@ -208,7 +208,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
         if (++count >= maxVertices || !v.bsdf) break;
 
         const glm::vec2 u = sampler.get2D(sampleDimension(subpath, count, SampleUse::BsdfDirection));
-        const auto bs = v.bsdf->sample(v.wo, u, sampler.get1D(sampleDimension(subpath, count, SampleUse::BsdfLobe)));
+        const auto bs = v.bsdf->sample(v.wo, u, lobeNumber(*v.bsdf, sampler, sampleDimension(subpath, count, SampleUse::BsdfLobe)));
         if (!bs || !connects(v.hit, *v.bsdf, v.wo, bs->wi)) break;
         beta *= bs->weight;
         if (importance) beta *= shadingNormalCorrection(v, v.wo, bs->wi);
@@ -233,7 +233,7 @@ int BdptIntegrator::cameraSubpath(const glm::vec2& pRaster, Sampler& sampler, Sa
 
 int BdptIntegrator::lightSubpath(Sampler& sampler, SampleSink& sink, Vertex* path) const {
     float pmf = 0.0f;
-    const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Light, 0, SampleUse::LightChoice)), &pmf);
+    const int index = scene_.sampleLight(lightChoiceNumber(scene_, sampler, sampleDimension(Subpath::Light, 0, SampleUse::LightChoice)), &pmf);
     const glm::vec2 u1 = sampler.get2D(sampleDimension(Subpath::Light, 0, SampleUse::LightPoint)),
                     u2 = sampler.get2D(sampleDimension(Subpath::Light, 0, SampleUse::LightDirection));
     if (index < 0 || !(pmf > 0.0f)) return 0;
@@ -336,7 +336,8 @@ glm::vec3 BdptIntegrator::connect(Vertex* light, Vertex* camera, int s, int t, S
     } else if (s == 1) {
         const Vertex& pt = camera[t - 1];
         float pmf = 0.0f;
-        const int index = scene_.sampleLight(sampler.get1D(sampleDimension(Subpath::Camera, t - 1, SampleUse::LightChoice)), &pmf);
+        const int index = scene_.sampleLight(
+            lightChoiceNumber(scene_, sampler, sampleDimension(Subpath::Camera, t - 1, SampleUse::LightChoice)), &pmf);
         const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, t - 1, SampleUse::LightPoint));
         if (!isConnectible(pt) || index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
         const Light& lightSource = scene_.lights()[size_t(index)];

@@ -64,6 +64,19 @@ inline bool connects(const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& w
     return sameSide == (glm::dot(wo, n) * glm::dot(wi, n) > 0.0f);
 }
 
+// The number that chooses one of the scene's lights for a light sample, at `dimension`: drawn
+// only where there is a choice. The sampler's numbers are per dimension, so leaving it undrawn
+// changes no other number of the path.
+inline float lightChoiceNumber(const RenderScene& scene, Sampler& sampler, uint32_t dimension) {
+    return scene.lights().size() > 1 ? sampler.get1D(dimension) : 0.0f;
+}
+
+// The number that chooses a BSDF's lobe for its sample, at `dimension`: drawn only where the BSDF
+// has a choice to make, as lightChoiceNumber().
+inline float lobeNumber(const Bsdf& bsdf, Sampler& sampler, uint32_t dimension) {
+    return bsdf.choosesLobe() ? sampler.get1D(dimension) : 0.0f;
+}
+
 // The power heuristic (beta = 2) for one-sample densities f and g.
 inline float powerHeuristic(float f, float g) {
     if (!(f > 0.0f)) return 0.0f;

@@ -26,8 +26,9 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const CameraModel& came
 glm::vec3 PathIntegrator::sampleOneLight(const SurfaceHit& hit, int vertex, const Bsdf& bsdf, const glm::vec3& wo,
                                          Sampler& sampler, SampleSink& sink) const {
     float pmf = 0.0f;
-    const int index = scene_.sampleLight(LightSampleContext{hit.p, hit.ns},
-                                         sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightChoice)), &pmf);
+    const int index = scene_.sampleLight(
+        LightSampleContext{hit.p, hit.ns},
+        lightChoiceNumber(scene_, sampler, sampleDimension(Subpath::Camera, vertex, SampleUse::LightChoice)), &pmf);
     const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, vertex, SampleUse::LightPoint));
     if (index < 0 || !(pmf > 0.0f)) return glm::vec3(0.0f);
     const Light& light = scene_.lights()[size_t(index)];
@@ -94,7 +95,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
         if (bounces + 1 >= maxDepth_ && !lightsHittable_) break;
 
         const glm::vec2 u = sampler.get2D(sampleDimension(Subpath::Camera, vertex, SampleUse::BsdfDirection));
-        const auto bs = bsdf->sample(wo, u, sampler.get1D(sampleDimension(Subpath::Camera, vertex, SampleUse::BsdfLobe)));
+        const auto bs = bsdf->sample(wo, u, lobeNumber(*bsdf, sampler, sampleDimension(Subpath::Camera, vertex, SampleUse::BsdfLobe)));
         if (!bs || !connects(*hit, *bsdf, wo, bs->wi)) break;
         beta *= bs->weight;
         if (isBlack(beta) || !std::isfinite(beta.x + beta.y + beta.z)) break;

@@ -12,8 +12,7 @@
 namespace woven {
 
 // Independent PCG numbers (Rng), drawn in the order the integrators ask for them whatever the
-// dimension: the renders of woven before the Sobol sampler, bit for bit, for comparison and
-// for tests that need independent samples.
+// dimension: for comparison and for tests that need independent samples.
 class IndependentSampler {
 public:
     IndependentSampler(uint64_t seed, uint64_t pixel, uint64_t sampleIndex) : rng_(seed, pixel, sampleIndex) {}
