@@ -65,7 +65,9 @@ TEST(HugeUv, PointsWholeRepeatsApartShowTheSameThread) {
             EXPECT_EQ(a.normal, b.normal);
             const auto sa = m.shade(at(base)), sb = m.shade(at(base + k * period));
             ASSERT_EQ(sa.has_value(), sb.has_value());
-            if (sa) EXPECT_EQ(sa->bsdf.eval(kWo, kWi), sb->bsdf.eval(kWo, kWi));
+            if (sa) {
+                EXPECT_EQ(sa->bsdf.eval(kWo, kWi), sb->bsdf.eval(kWo, kWi));
+            }
         }
     // Beyond 2^63 elements, where an unwrapped thread index overflows: a unit normal.
     for (double u : {1e19, 3e30, -1e300}) {
