@@ -22,13 +22,13 @@ public:
     int channels() const { return int(data_.size()); }
 
 private:
-    int width_ = 0, height_ = 0, pad_ = 0;
+    int width_ = 0, pad_ = 0;
     std::vector<std::vector<float>> data_;
 };
 
 template <typename F>
 PaddedPlanes::PaddedPlanes(int width, int height, int channels, int pad, F&& value)
-    : width_(width), height_(height), pad_(pad), data_(size_t(channels)) {
+    : width_(width), pad_(pad), data_(size_t(channels)) {
     const size_t rows = size_t(height + 2 * pad);
     for (int c = 0; c < channels; ++c) {
         std::vector<float>& plane = data_[size_t(c)];
