@@ -30,7 +30,7 @@ const glm::vec3 kPlainWarpColor{0.0f}, kPlainWeftColor{1.0f};
 struct Weave {
     WeavePattern pattern;
     std::vector<glm::vec3> warpColors{kPlainWarpColor}, weftColors{kPlainWeftColor};
-    std::optional<FabricMeasures> measures;  // a material with thread counts
+    std::optional<FabricMeasures> measures{};  // a material with thread counts
 };
 
 Weave weaveFromDraft(const std::string& path) {

@@ -55,7 +55,9 @@ WOVEN_VECTOR_CLONES void FeatureRegression::accumulate(size_t p, ptrdiff_t offse
     // registers, and each moment is loaded and stored once. Separate loops per moment took twice
     // the time, and the same sums as loops over j and k inside this one 1.4x (bench_denoise).
     // The moments' planes, the inputs and the weights are distinct arrays.
+#if !defined(__clang__)  // GCC builds woven; clang (the fuzz build) would warn of the unknown pragma
 #pragma GCC ivdep
+#endif
     for (int i = 0; i < count; ++i) {
         const float w = weight[i];
         const float d0 = x0[i + offset] - x0[i], d1 = x1[i + offset] - x1[i], d2 = x2[i + offset] - x2[i];

@@ -202,7 +202,9 @@ private:
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
         document_ = jsonPart(file);
         // Compressed files hold what tinygltf refuses: stand-ins (replaced when decoding) first.
-        if (stubMeshoptFallbackBuffers(document_) | standInDracoIndexViews(document_)) file = withJson(file, document_);
+        const bool meshoptStubbed = stubMeshoptFallbackBuffers(document_);
+        const bool dracoStoodIn = standInDracoIndexViews(document_);
+        if (meshoptStubbed || dracoStoodIn) file = withJson(file, document_);
         const nlohmann::json& document = document_;
         if (document.is_object() && document.contains("extensionsRequired") && document["extensionsRequired"].is_array())
             for (const auto& name : document["extensionsRequired"])
