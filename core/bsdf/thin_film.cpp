@@ -46,7 +46,7 @@ glm::vec3 thinFilmFresnel(float outsideIor, float filmIor, float cosTheta, float
     const float phi21 = ior < outsideIor ? 0.0f : kPi;
     // Film to base, the base's index from its F0 (exact for dielectrics, an extinction-free
     // approximation for metals).
-    glm::vec3 r23, phi;
+    glm::vec3 r23(0.0f), phi(0.0f);  // every channel set below; initialised for GCC's maybe-uninitialized
     for (int i = 0; i < 3; ++i) {
         const float s = std::sqrt(std::clamp(baseF0[i], 0.0f, 0.9999f));
         const float baseIor = (1.0f + s) / (1.0f - s);
