@@ -130,9 +130,8 @@ protected:
     // threads, the render on the material's. Measured 1.7e-5 (plain) and 5.8e-5 (3/1 twill) with
     // the threads' frequencies refined by the fold's sharpness; 5.7e-4 and 2.1e-3 with the
     // spectrum's peaks alone, whose 0.9 % error drifts the fold by a tenth of a thread at the
-    // edges. The 5-end satin's: 5.7e-5 (2026-12-05; it was 2e-3 while its ends were measured 0.5 %
-    // short, 796 per metre for 800, before the two directions were chosen together), 2.2e-5 with
-    // the photo folded on the exact threads.
+    // edges. The 5-end satin's: 5.7e-5 (2026-12-05; it was 2e-3 when its ends were measured 0.5 %
+    // short, 796 per metre for 800), 2.2e-5 with the photo folded on the exact threads.
     void expectTruthFolds(glm::ivec3 pattern) {
         const RigPhoto photo = noisyPhoto(pattern);
         shots_ = {loadShot(writeCaptureShot(dir_.string(), "shot", photo), "Swatch")};
