@@ -198,7 +198,9 @@ TEST_F(RoundTrip, SatinThreadCountsWithNoiseVignetteAndUnknownExposure) {
 }
 
 // The plain weave's colours too, with 250 renders: stage 4 then has some 135 (docs/FIT.md). The
-// twill's and the satin's are not yet within 5 % (docs/FIT.md, "What is left").
+// twill's and the satin's are not yet within 5 % (docs/FIT.md, "What is left"), and this one
+// holds at the fit's render seed 1 only: at seeds 2 and 3 the warp's red came out 15.7 and 10.9 %
+// low (docs/FIT.md, "How much the colours depend on the fit's render seed").
 TEST_F(RoundTrip, PlainWeaveClassAndColoursWithNoiseVignetteAndUnknownExposure) {
     expectColours(expectWeave({1, 1, 1}, 0.5f, 250), cloth({1, 1, 1}), 0.5f);
 }
