@@ -444,15 +444,26 @@ private:
 
     // Stage 2: the weaves the photo's spectrum shortlists (weave_lattice.h), each with its
     // colours fitted, the best kept. False when the budget ran out first.
+    // Where backlit shots join reflected ones, each weave is refined on every shot's loss but the
+    // reflected shots' loss chooses among them: the face's weave is what reflection shows, light
+    // through the cloth shows the gaps between its yarns, which a weave and its complement share,
+    // and the backlit shots' loss, 10 to 100 times the flash's before stage 4 fits the
+    // transmission's shape, chose the rig's 3/1 twill's and 5-end satin's complements
+    // (docs/FIT.md). The best loss so far then starts afresh with each weave.
     bool chooseWeave(const WovenParams& start) {
         const std::vector<glm::ivec3> candidates = shortlist();
+        const bool byReflection = transmitted_ && candidates.size() > 1;
+        std::optional<FitResult> chosen;  // byReflection: the candidate the reflected shots rank first
+        double chosenLoss = INFINITY;
         for (size_t c = 0; c < candidates.size(); ++c) {
             if (stop()) {
                 result_.warnings.push_back("the time ran out during the weave search (" + std::to_string(c) + " of " +
                                            std::to_string(candidates.size()) + " weaves tried)");
+                keepChosen(chosen);
                 return false;
             }
             stage_ = "weave " + std::to_string(c + 1) + "/" + std::to_string(candidates.size());
+            if (byReflection) result_.loss = INFINITY;  // the best of this candidate alone
             WovenParams p = start;
             p.pattern = candidates[c];
             fitColours(p);
@@ -464,8 +475,26 @@ private:
             std::vector<double> x = encode(p);
             const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, p)); };
             minimise(x, objective, kShortlistRefineRenders);
+            if (!byReflection || !std::isfinite(result_.loss)) continue;
+            double reflectedLoss = 0.0;
+            for (size_t i = 0; i < shots_.size(); ++i)
+                if (reflected_[i]) reflectedLoss += result_.shots[i].terms.total;
+            if (reflectedLoss < chosenLoss) {
+                chosenLoss = reflectedLoss;
+                chosen = result_;
+            }
         }
+        keepChosen(chosen);
         return true;
+    }
+
+    // The fit chooseWeave() chose (where it chose by the reflected shots) as the best so far.
+    void keepChosen(const std::optional<FitResult>& chosen) {
+        if (!chosen) return;
+        result_.params = chosen->params;
+        result_.exposure = chosen->exposure;
+        result_.loss = chosen->loss;
+        result_.shots = chosen->shots;
     }
 
     // The weaves whose lattice of peaks the first shot that shows both thread directions has;

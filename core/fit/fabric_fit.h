@@ -6,7 +6,7 @@
 //   2. the weave: each of weaveCandidates() with its yarn colours fitted (by NLopt, on mixtures
 //      of renders whose mixtures are exact for any colours under direct light from point lights:
 //      one render with the weft red and the warp green under white light, else three), the best
-//      kept;
+//      kept: by the reflected shots' loss where backlit shots join them (fabric_fit.cpp says why);
 //   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
 //   4. gloss (ex, ey, and rs where no exposure is free), yarn widths and bump (cy) by NLopt's
 //      BOBYQA, the colours and a free exposure solved in closed form at each point from the same

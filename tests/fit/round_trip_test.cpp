@@ -76,6 +76,38 @@ protected:
         return photo;
     }
 
+    // A flash shot and a shot lit from 15 cm behind the swatch, the lamp 2 cm aside so that the
+    // glossy part's forward peak falls inside the frame, 10 times the flash's intensity as a lamp
+    // behind cloth is exposed for; yarns that pass t = 0.5 with g = 0.3, 3 % noise, the exposure
+    // (shared) given.
+    static std::vector<RigPhoto> flashAndBacklit(glm::ivec3 pattern) {
+        RigPhoto flash;
+        flash.truth = cloth(pattern);
+        flash.truth.transmission = 0.5f;
+        flash.truth.transmission_gloss = 0.3f;
+        flash.noise = 0.03f;
+        flash.exposure = 0.5f;
+        RigPhoto backlit = flash;
+        backlit.light = {0.02f, -0.15f, 0.0f};
+        backlit.lightIntensity = 0.8f;
+        backlit.seed += 1;
+        return {flash, backlit};
+    }
+
+    // The weave class, exact, from the pair of photos (flashAndBacklit()) as a phone takes
+    // them: a 150 px vignette and an exposure the fit is not told.
+    void expectWeaveFromAFlashAndABacklitShot(glm::ivec3 pattern) {
+        std::vector<RigPhoto> photos = flashAndBacklit(pattern);
+        for (RigPhoto& photo : photos) {
+            photo.vignetteSigmaPx = 150.0f;
+            photo.exposureKnown = false;
+        }
+        const FitResult r = fit(photos, 600.0, 250, 8);
+        EXPECT_EQ(r.params.pattern, pattern) << "fitted " << describeWeave(r.params.pattern);
+        expectThreadCounts(r, photos[0].truth);
+        expectBeatsLambertianPlane(r.shots[0]);
+    }
+
     // Thread counts within 3 %, the bound: the spectrum's peaks, located to a tenth of a
     // bin of 1/128 cycle per pixel, are good to 0.5 % at 27 threads across.
     static void expectThreadCounts(const FitResult& r, const WovenParams& truth) {
@@ -208,25 +240,15 @@ TEST_F(RoundTrip, TwillWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWe
 TEST_F(RoundTrip, SatinWeaveClassWithNoiseVignetteAndUnknownExposure) { expectWeave({4, 1, 2}); }
 TEST_F(RoundTrip, SatinWeaveClassFromAPhotoHalfClipped) { expectWeave({4, 1, 2}, 1.6f); }
 
-// The backlit photo's light through the yarns (MODEL_TRANSMISSION.md): a flash shot and a shot lit
-// from 15 cm behind the swatch, the lamp 2 cm aside so that the glossy part's forward peak falls
-// inside the frame, 10 times the flash's intensity as a lamp behind cloth is exposed for. Both
-// photos share the exposure, given here. With a free one (0.478 fitted for 0.5) t came out 0.589
+// The backlit photo's light through the yarns (MODEL_TRANSMISSION.md), from flashAndBacklit()'s
+// pair, the exposure given. With a free one (0.478 fitted for 0.5) t came out 0.589
 // and the backlit render's red 13 % low: the transmitted colour t (1 - R_d) R_d^2 / max(R_d)^2
 // doubles the colours' errors and the yarns' widths set how much of each yarn the light crosses
 // (docs/FIT.md).
 TEST_F(RoundTrip, PlainWeaveTransmissionFromABacklitShot) {
-    RigPhoto flash;
-    flash.truth = cloth({1, 1, 1});
-    flash.truth.transmission = 0.5f;
-    flash.truth.transmission_gloss = 0.3f;
-    flash.noise = 0.03f;
-    flash.exposure = 0.5f;
-    RigPhoto backlit = flash;
-    backlit.light = {0.02f, -0.15f, 0.0f};
-    backlit.lightIntensity = 0.8f;
-    backlit.seed += 1;
-    const FitResult r = fit({flash, backlit}, 600.0, 250, 8);
+    const std::vector<RigPhoto> photos = flashAndBacklit({1, 1, 1});
+    const RigPhoto& flash = photos[0];
+    const FitResult r = fit(photos, 600.0, 250, 8);
     EXPECT_EQ(r.params.pattern, flash.truth.pattern) << "fitted " << describeWeave(r.params.pattern);
     expectThreadCounts(r, flash.truth);
     // Measured 0.526. The split between the glossy and the diffuse part is not checked: it came
@@ -262,6 +284,16 @@ TEST_F(RoundTrip, TwillLaidAskew) {
 TEST_F(RoundTrip, PlainWeaveTruthFoldsOntoThePhoto) { expectTruthFolds({1, 1, 1}); }
 TEST_F(RoundTrip, TwillTruthFoldsOntoThePhoto) { expectTruthFolds({1, 3, 1}); }
 TEST_F(RoundTrip, SatinTruthFoldsOntoThePhoto) { expectTruthFolds({4, 1, 2}); }
+
+// The twill and the satin from the pair of photos. The weave is chosen by the flash's
+// shot alone (fabric_fit.h, stage 2): with the backlit shot's loss counted, the fit chose the
+// 3/1 twill's complement (seeds 1 and 2) or a plain weave (seed 3), and the satin's complement
+// (seeds 1 to 3), at losses of 1.06 to 2.11; chosen by the flash alone, each weave came right at
+// the fit's render seeds 1 to 3, at losses of 0.13 to 0.35 (2026-12-05). Its colours x exposure
+// then came within 4.9 to 6.7 % (twill) and 6.3 to 24.5 % (satin), t 0.40 to 0.88 for 0.5:
+// neither checked here (docs/FIT.md).
+TEST_F(RoundTrip, TwillWeaveClassFromAFlashAndABacklitShot) { expectWeaveFromAFlashAndABacklitShot({1, 3, 1}); }
+TEST_F(RoundTrip, SatinWeaveClassFromAFlashAndABacklitShot) { expectWeaveFromAFlashAndABacklitShot({4, 1, 2}); }
 
 }  // namespace
 }  // namespace woven::test
