@@ -273,6 +273,16 @@ private:
         }
 
         if (record) {
+            if (weaveBest_ && total < weaveBest_->loss) {
+                weaveBest_->loss = total;
+                weaveBest_->params = p;
+                weaveBest_->exposure = free;
+                weaveBest_->shots = result_.shots;
+                for (size_t i = 0; i < shots_.size(); ++i) {
+                    weaveBest_->shots[i].terms = terms[i];
+                    weaveBest_->shots[i].render = images[i];
+                }
+            }
             if (total < result_.loss) {
                 result_.loss = total;
                 result_.params = p;
@@ -449,21 +459,21 @@ private:
     // through the cloth shows the gaps between its yarns, which a weave and its complement share,
     // and the backlit shots' loss, 10 to 100 times the flash's before stage 4 fits the
     // transmission's shape, chose the rig's 3/1 twill's and 5-end satin's complements
-    // (docs/FIT.md). The best loss so far then starts afresh with each weave.
+    // (docs/FIT.md).
     bool chooseWeave(const WovenParams& start) {
         const std::vector<glm::ivec3> candidates = shortlist();
         const bool byReflection = transmitted_ && candidates.size() > 1;
-        std::optional<FitResult> chosen;  // byReflection: the candidate the reflected shots rank first
+        std::optional<WeaveBest> chosen;  // byReflection: the weave the reflected shots rank first
         double chosenLoss = INFINITY;
+        bool done = true;
         for (size_t c = 0; c < candidates.size(); ++c) {
             if (stop()) {
                 result_.warnings.push_back("the time ran out during the weave search (" + std::to_string(c) + " of " +
                                            std::to_string(candidates.size()) + " weaves tried)");
-                keepChosen(chosen);
-                return false;
+                done = false;
+                break;
             }
             stage_ = "weave " + std::to_string(c + 1) + "/" + std::to_string(candidates.size());
-            if (byReflection) result_.loss = INFINITY;  // the best of this candidate alone
             WovenParams p = start;
             p.pattern = candidates[c];
             fitColours(p);
@@ -471,30 +481,28 @@ private:
                 evaluate(p);
                 continue;
             }
+            if (byReflection) weaveBest_.emplace();
             p = rescaled(p);
             std::vector<double> x = encode(p);
             const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, p)); };
             minimise(x, objective, kShortlistRefineRenders);
-            if (!byReflection || !std::isfinite(result_.loss)) continue;
+            if (!weaveBest_ || !std::isfinite(weaveBest_->loss)) continue;
             double reflectedLoss = 0.0;
             for (size_t i = 0; i < shots_.size(); ++i)
-                if (reflected_[i]) reflectedLoss += result_.shots[i].terms.total;
+                if (reflected_[i]) reflectedLoss += weaveBest_->shots[i].terms.total;
             if (reflectedLoss < chosenLoss) {
                 chosenLoss = reflectedLoss;
-                chosen = result_;
+                chosen = std::move(weaveBest_);
             }
         }
-        keepChosen(chosen);
-        return true;
-    }
-
-    // The fit chooseWeave() chose (where it chose by the reflected shots) as the best so far.
-    void keepChosen(const std::optional<FitResult>& chosen) {
-        if (!chosen) return;
-        result_.params = chosen->params;
-        result_.exposure = chosen->exposure;
-        result_.loss = chosen->loss;
-        result_.shots = chosen->shots;
+        weaveBest_.reset();
+        if (chosen) {
+            result_.params = chosen->params;
+            result_.exposure = chosen->exposure;
+            result_.loss = chosen->loss;
+            result_.shots = std::move(chosen->shots);
+        }
+        return done;
     }
 
     // The weaves whose lattice of peaks the first shot that shows both thread directions has;
@@ -795,6 +803,15 @@ private:
     // Per shot: the colours are fitted to it (not backlit, or every shot is).
     std::vector<bool> reflected_;
     bool transmitted_ = false;  // backlit shots beside reflected ones: the transmission is solved
+    // The best of one weave in stage 2, where the reflected shots choose the weave (chooseWeave()):
+    // the best so far (result_) stays every evaluation's, as the progress line shows it.
+    struct WeaveBest {
+        WovenParams params;
+        double exposure = 1.0;
+        double loss = INFINITY;
+        std::vector<ShotFit> shots;
+    };
+    std::optional<WeaveBest> weaveBest_;
 };
 
 }  // namespace
