@@ -277,7 +277,7 @@ private:
                 weaveBest_->loss = total;
                 weaveBest_->params = p;
                 weaveBest_->exposure = free;
-                weaveBest_->shots = result_.shots;
+                weaveBest_->shots.resize(shots_.size());
                 for (size_t i = 0; i < shots_.size(); ++i) {
                     weaveBest_->shots[i].terms = terms[i];
                     weaveBest_->shots[i].render = images[i];

@@ -285,8 +285,8 @@ TEST_F(RoundTrip, PlainWeaveTruthFoldsOntoThePhoto) { expectTruthFolds({1, 1, 1}
 TEST_F(RoundTrip, TwillTruthFoldsOntoThePhoto) { expectTruthFolds({1, 3, 1}); }
 TEST_F(RoundTrip, SatinTruthFoldsOntoThePhoto) { expectTruthFolds({4, 1, 2}); }
 
-// The twill and the satin from the pair of photos. The weave is chosen by the flash's
-// shot alone (fabric_fit.h, stage 2): with the backlit shot's loss counted, the fit chose the
+// The twill and the satin from the pair of photos. The weave is chosen by the flash
+// shot's loss (fabric_fit.h, stage 2): with the backlit shot's loss counted, the fit chose the
 // 3/1 twill's complement (seeds 1 and 2) or a plain weave (seed 3), and the satin's complement
 // (seeds 1 to 3), at losses of 1.06 to 2.11; chosen by the flash alone, each weave came right at
 // the fit's render seeds 1 to 3, at losses of 0.13 to 0.35 (2026-12-05). Its colours x exposure
