@@ -111,6 +111,21 @@ WovenParams decode(const std::vector<double>& x, WovenParams p) {
     return p;
 }
 
+// `best` (a FitResult, or one weave's best in stage 2: each holds params, exposure, loss and
+// shots) made p's fit: its loss, and each shot's terms and render.
+template <class Best>
+void keepFit(Best& best, const WovenParams& p, double exposure, double loss, const std::vector<LossTerms>& terms,
+             std::vector<Image> images) {
+    best.params = p;
+    best.exposure = exposure;
+    best.loss = loss;
+    best.shots.resize(terms.size());
+    for (size_t i = 0; i < terms.size(); ++i) {
+        best.shots[i].terms = terms[i];
+        best.shots[i].render = std::move(images[i]);
+    }
+}
+
 using Objective = std::function<double(const std::vector<double>&)>;
 
 double trampoline(const std::vector<double>& x, std::vector<double>&, void* data) {
@@ -273,25 +288,8 @@ private:
         }
 
         if (record) {
-            if (weaveBest_ && total < weaveBest_->loss) {
-                weaveBest_->loss = total;
-                weaveBest_->params = p;
-                weaveBest_->exposure = free;
-                weaveBest_->shots.resize(shots_.size());
-                for (size_t i = 0; i < shots_.size(); ++i) {
-                    weaveBest_->shots[i].terms = terms[i];
-                    weaveBest_->shots[i].render = images[i];
-                }
-            }
-            if (total < result_.loss) {
-                result_.loss = total;
-                result_.params = p;
-                result_.exposure = free;
-                for (size_t i = 0; i < shots_.size(); ++i) {
-                    result_.shots[i].terms = terms[i];
-                    result_.shots[i].render = std::move(images[i]);
-                }
-            }
+            if (weaveBest_ && total < weaveBest_->loss) keepFit(*weaveBest_, p, free, total, terms, images);
+            if (total < result_.loss) keepFit(result_, p, free, total, terms, std::move(images));
             result_.history.emplace_back(elapsed(), result_.loss);
             progress();
         }
