@@ -39,9 +39,22 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
     command.add_flag("--filter", o.filterRender,
                      "experimental: the final render filters woven materials over each pixel's footprint, blending "
                      "to the weave's far field (biased by about 2 % per pixel and slower: docs/RESULTS.md)");
-    command.add_flag("--denoise,!--no-denoise", o.denoise,
-                     "denoise the final frame, guided by its albedo, normal, depth and direct-light passes (the EXR keeps the "
-                     "noisy beauty as noisy.R/G/B; default: on; --no-denoise: the beauty as rendered)");
+    CLI::Option* denoise = command.add_flag(
+        "--denoise,!--no-denoise", o.denoise,
+        "denoise the final frame, guided by its albedo, normal, depth and direct-light passes (the EXR keeps the "
+        "noisy beauty as noisy.R/G/B; default: on; --no-denoise: the beauty as rendered)");
+    command.add_flag("!--no-passes", o.passes,
+                     "the frame keeps the beauty alone, without the render passes (albedo, normal, depth, direct light) "
+                     "that guide the denoiser, so it is not denoised: less work a sample where paths are short "
+                     "(docs/RESULTS.md)");
+    // --no-passes takes the denoiser's guides away, so it takes the denoiser with it; asked for
+    // both, the user hears which to drop rather than getting an undenoised frame.
+    command.parse_complete_callback([&o, denoise] {
+        if (o.passes) return;
+        if (o.denoise && denoise->count() > 0)
+            throw CLI::ValidationError("--no-passes", "the denoiser needs the render passes: give --no-denoise, or drop --no-passes");
+        o.denoise = false;
+    });
     command.add_flag("--allow-any-path", o.load.anyPath,
                      "let a glTF file's buffers and images come from anywhere, not only from its own folder");
     command.add_flag("--strict", o.load.strict,
@@ -114,6 +127,7 @@ RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& 
     settings.maxDepth = o.maxDepth;
     if (o.noiseThreshold) settings.noiseThreshold = *o.noiseThreshold;
     settings.filterWeave = o.filterRender;
+    settings.renderPasses = o.passes;
     return settings;
 }
 

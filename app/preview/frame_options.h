@@ -27,6 +27,7 @@ struct FrameOptions {
     bool noFilter = false;               // the preview point-samples the weave everywhere (preview's --no-filter)
     bool filterRender = false;           // the final render filters the weave over footprints (--filter)
     bool denoise = true;                 // the final frame's beauty is denoised (--no-denoise: not; frame_denoise.h)
+    bool passes = true;                  // the frame keeps the render passes (--no-passes: the beauty alone, undenoised)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
     LoadOptions load;                    // --allow-any-path, --strict
@@ -35,7 +36,7 @@ struct FrameOptions {
 };
 
 // Registers --width --height --spp --integrator --seed --sampler --max-depth --noise-threshold --filter
-// --denoise/--no-denoise --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
+// --denoise/--no-denoise --no-passes --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without

@@ -201,7 +201,7 @@ int BdptIntegrator::randomWalk(Ray ray, glm::vec3 beta, float pdfFwd, int maxVer
         v.wo = -ray.d;
         v.bsdf = scene_.materials().bsdf(*hit, v.wo);
         v.ns = v.bsdf ? v.bsdf->shadingNormal() : hit->ns;
-        if (!importance && count == 0) sink.firstHit = firstHitOf(scene_, v.hit, v.bsdf, ray.o);
+        if (!importance && count == 0 && sink.recordsFirstHit) sink.firstHit = firstHitOf(scene_, v.hit, v.bsdf, ray.o);
         v.light = scene_.lightIndex(*hit);
         v.beta = beta;
         v.pdfFwd = convertDensity(prev, pdfFwd, v);

@@ -36,6 +36,9 @@ struct SampleSink {
     std::vector<Splat> splats;
     uint64_t rays = 0;  // intersection and shadow rays traced
     FirstHit firstHit;  // of the latest sample: set by Li(), reset by its caller before each
+    // Whether Li() records firstHit: not where the film keeps no render passes, since the record
+    // (a BSDF's albedo, a light's unshadowed contribution) costs a few per cent of a short path.
+    bool recordsFirstHit = true;
 };
 
 class Integrator {

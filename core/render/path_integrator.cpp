@@ -86,7 +86,7 @@ glm::vec3 PathIntegrator::Li(const glm::vec2& pRaster, Sampler& sampler, SampleS
         if (bounces >= maxDepth_) break;
         if (filterWeave_) addFootprint(*hit, scene_, camera_);
         const auto bsdf = scene_.materials().bsdf(*hit, wo);
-        if (bounces == 0) sink.firstHit = firstHitOf(scene_, *hit, bsdf, ray.o);
+        if (bounces == 0 && sink.recordsFirstHit) sink.firstHit = firstHitOf(scene_, *hit, bsdf, ray.o);
         if (!bsdf) break;
 
         const int vertex = bounces + 1;  // the camera is vertex 0

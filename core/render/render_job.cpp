@@ -29,17 +29,18 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Renders one pass (one sample per pixel, sample index `sampleIndex`) over tiles on the arena's
-// threads, of the pixels `sampled` marks (empty: all). Every pixel's random numbers come from
+// threads, of the pixels `sampled` marks (empty: all), with the first hits' records where
+// `firstHits` (else pass->firstHits is left empty). Every pixel's random numbers come from
 // (seed, pixel, sample index) alone. Returns false, leaving `pass` incomplete, when `cancel`
 // became true.
 bool renderPass(const Integrator& integrator, int width, int height, SamplerKind samplerKind, uint64_t seed, uint64_t sampleIndex,
-                const std::vector<uint8_t>& sampled, size_t sampledCount, tbb::task_arena& arena,
+                const std::vector<uint8_t>& sampled, size_t sampledCount, bool firstHits, tbb::task_arena& arena,
                 const std::atomic<bool>& cancel, uint64_t* rays, PassImage* pass) {
     const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
     pass->width = width;
     pass->height = height;
     pass->radiance.assign(size_t(width) * height, glm::vec3(0.0f));
-    pass->firstHits.assign(size_t(width) * height, FirstHit{});
+    pass->firstHits.assign(firstHits ? size_t(width) * height : 0, FirstHit{});
     pass->tileSplats.assign(size_t(tilesX) * tilesY, {});
     pass->sampled = sampled;
     const size_t pixels = size_t(width) * height;
@@ -50,6 +51,7 @@ bool renderPass(const Integrator& integrator, int width, int height, SamplerKind
             for (int tile = range.begin(); tile != range.end(); ++tile) {
                 if (cancel.load(std::memory_order_relaxed)) return;
                 SampleSink sink;
+                sink.recordsFirstHit = firstHits;
                 const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
                 for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
                     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
@@ -61,7 +63,7 @@ bool renderPass(const Integrator& integrator, int width, int height, SamplerKind
                         const glm::vec3 L = integrator.Li(pRaster, sampler, sink);
                         // A rare non-finite sample would poison the pixel for good: drop it.
                         pass->radiance[pixel] = std::isfinite(L.x + L.y + L.z) ? L : glm::vec3(0.0f);
-                        pass->firstHits[pixel] = sink.firstHit;
+                        if (firstHits) pass->firstHits[pixel] = sink.firstHit;
                     }
                 pass->tileSplats[size_t(tile)] = std::move(sink.splats);
                 rayCount.fetch_add(sink.rays, std::memory_order_relaxed);
@@ -127,7 +129,7 @@ const IntegratorKind& RenderJob::Impl::pickIntegrator(const std::atomic<bool>& c
             PassImage pass;
             // Sample indices far from any final render's, so the pilot never repeats its samples.
             const uint64_t sampleIndex = (uint64_t(1) << 62) + uint64_t(passes);
-            if (!renderPass(*candidate, width, height, settings.sampler, settings.seed, sampleIndex, {}, 0, arena, cancel, &rays, &pass))
+            if (!renderPass(*candidate, width, height, settings.sampler, settings.seed, sampleIndex, {}, 0, false, arena, cancel, &rays, &pass))
                 return *pilot.kind;  // cancelled: run() renders nothing
             const std::vector<glm::vec3> image = pass.combined();
             for (size_t i = 0; i < image.size(); ++i) {
@@ -237,7 +239,7 @@ void RenderJob::run(const std::atomic<bool>& cancel, const std::function<void(co
         const uint64_t sampleIndex = uint64_t(im.settings.firstSample) + uint64_t(im.film.passes());
         const size_t sampled = adaptive ? adaptive->activeCount() : pixels;
         if (!renderPass(*im.integrator, im.settings.width, im.settings.height, im.settings.sampler, im.settings.seed, sampleIndex,
-                        adaptive ? adaptive->active() : everyPixel, sampled, im.arena, cancel,
+                        adaptive ? adaptive->active() : everyPixel, sampled, im.settings.renderPasses, im.arena, cancel,
                         &progress.rays, &pass))
             return;  // the unfinished pass is dropped: the film holds whole passes only
         {

@@ -37,8 +37,9 @@ struct RenderSettings {
     bool filterWeave = false;
     std::optional<Camera> camera;  // overrides the scene's
     // false: the film keeps the radiance's sums alone, not the render passes' (first hits, squares),
-    // for a render that no denoiser, merge or frame file reads: woven fit's, which at 512 x 512
-    // spent a quarter of its time allocating, summing and copying them.
+    // and the integrators make no first-hit records, for a render that no denoiser reads: woven
+    // fit's, which at 512 x 512 spent a quarter of its time allocating, summing and copying them,
+    // and `woven render --no-passes`.
     bool renderPasses = true;
 };
 

@@ -1,9 +1,11 @@
 // The denoiser in the commands: `woven render` denoises its frame unless --no-denoise, the EXR
 // keeping the noisy beauty as noisy.R/G/B, and `woven merge` denoises the merged sums once, giving
-// the frame one render of all the samples gives.
+// the frame one render of all the samples gives. --no-passes leaves out the denoiser's guides,
+// and so the denoiser.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "../common/run_woven.h"
 #include "frame_io.h"
@@ -60,6 +62,28 @@ TEST_F(DenoiseCommand, MergeDenoisesTheMergedFrameAsOneRenderWould) {
     const ExrImage undenoised = readExr(file("plain.exr"));
     EXPECT_FALSE(undenoised.noisy.has_value());
     for (size_t i = 0; i < whole.image.pixels.size(); ++i) ASSERT_EQ(undenoised.image.pixels[i], whole.noisy->pixels[i]) << "pixel " << i;
+}
+
+TEST_F(DenoiseCommand, NoPassesKeepsTheBeautyAloneTheSameToTheBit) {
+    const ExrImage plain = render("plain.exr", "--spp 4 --no-denoise");
+    // --no-passes alone: the denoiser, which the passes guide, goes with them.
+    const ExrImage bare = render("bare.exr", "--spp 4 --no-passes");
+    ASSERT_FALSE(plain.passSums.empty());
+    EXPECT_TRUE(bare.passSums.empty());
+    EXPECT_FALSE(bare.noisy.has_value());
+    // The first hits' records take no random numbers: the samples, and so the sums, are the same.
+    ASSERT_EQ(bare.sampleSums.size(), plain.sampleSums.size());
+    for (size_t i = 0; i < plain.sampleSums.size(); ++i) ASSERT_EQ(bare.sampleSums[i], plain.sampleSums[i]) << "sum " << i;
+    for (size_t i = 0; i < plain.image.pixels.size(); ++i) ASSERT_EQ(bare.image.pixels[i], plain.image.pixels[i]) << "pixel " << i;
+
+    // Asked to denoise without the passes: an error that says which to drop, and no frame.
+    const std::string out = file("both.exr");
+    const test::RunResult r = test::runWovenCommand("render '" WOVEN_ASSETS_DIR "/default_scene.json' --width 48 --height 36 "
+                                                    "--spp 4 --no-passes --denoise -o '" + out + "'");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("--no-passes"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--no-denoise"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace
