@@ -23,6 +23,8 @@ public:
     bool mayPassThrough(const Mesh& mesh) const;
     bool passesThrough(const TexCoords& tc, float u) const;
     bool blends() const { return alphaMode_ == AlphaMode::Blend; }
+    // Whether eval() depends on the point through a texture (COLOR_0 aside, which TexCoords brings).
+    bool textured() const { return bool(texture_); }
 
 private:
     glm::vec4 factor_;

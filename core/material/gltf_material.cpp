@@ -62,6 +62,15 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
     // KHR_materials_ior: an IOR of 0 stands for an infinite one (a perfect mirror's F0 of 1).
     const float ior = material.ior;
     dielectricF0_ = ior == 0.0f ? 1.0f : ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
+    const TextureSampler* const lobeTextures[] = {
+        &metallicRoughnessTexture_, &specularTexture_, &specularColorTexture_, &sheenColorTexture_,
+        &sheenRoughnessTexture_, &anisotropyTexture_, &transmissionTexture_, &thicknessTexture_,
+        &diffuseTransmissionTexture_, &diffuseTransmissionColorTexture_, &iridescenceTexture_,
+        &iridescenceThicknessTexture_};
+    const bool textured = baseColor_.textured() ||
+                          std::any_of(std::begin(lobeTextures), std::end(lobeTextures), [](const TextureSampler* t) { return bool(*t); });
+    // The coat's lobe holds its normal in the hit's frame, so a coated surface builds it per hit.
+    if (!textured && !m_.unlit && !(m_.clearcoat.factor > 0.0f)) uniformBxdf_.emplace(inputs(TexCoords{}));
 }
 
 GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
@@ -127,6 +136,10 @@ std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& w
     const glm::vec3 ng = side * hit.ng;
     glm::vec3 n = side * shadingNormal(hit);
     if (normalTexture_) n = keepReflectionAbove(ng, wo, n);
+    if (uniformBxdf_ && hit.tex.color == glm::vec4(1.0f)) {
+        const Frame frame = m_.anisotropy.strength > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);
+        return std::optional<Bsdf>(std::in_place, frame, std::in_place, std::in_place_type<GltfBxdf>, *uniformBxdf_);
+    }
     GltfBxdfInputs in = inputs(hit.tex);
     // The lobe's x axis is the anisotropy direction (any axis when isotropic).
     const Frame frame = in.anisotropy > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);

@@ -142,6 +142,45 @@ TEST(GltfMaterial, AnisotropicHighlightStretchesAlongItsDirection) {
     EXPECT_GT(alongX, 100.0f * alongY);
 }
 
+TEST(GltfMaterial, AnUntexturedSurfaceShadesAsTheSameSurfaceTexturedInWhite) {
+    // An untextured material builds its lobes once; a white metallic-roughness texture (x 1 on
+    // every input) makes the same material build them at each hit. Both must agree to the bit,
+    // with and without a vertex colour, for lobes of every kind and an anisotropic frame.
+    const std::vector<TextureImage> white = {oneTexel({255, 255, 255, 255})};
+    Material m;
+    m.baseColor = glm::vec4(0.6f, 0.3f, 0.2f, 1.0f);
+    m.metallic = 0.3f;
+    m.roughness = 0.4f;
+    m.anisotropy.strength = 0.5f;
+    m.sheen.color = glm::vec3(0.2f, 0.4f, 0.1f);
+    m.sheen.roughness = 0.5f;
+    m.transmission.factor = 0.3f;
+    m.iridescence.factor = 0.5f;
+    Material textured = m;
+    textured.metallicRoughnessTexture.image = 0;
+    const GltfMaterial once(m, white), perHit(textured, white);
+    for (const glm::vec4 colour : {glm::vec4(1.0f), glm::vec4(0.5f, 0.8f, 1.0f, 1.0f)}) {
+        SurfaceHit hit = planeHit(1.0f);
+        hit.tex = point(colour);
+        const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f));
+        const auto a = once.bsdf(hit, wo), b = perHit.bsdf(hit, wo);
+        ASSERT_TRUE(a && b);
+        Rng rng(7);
+        for (int i = 0; i < 64; ++i) {
+            const glm::vec3 wi = sampleUniformSphere(rng.uniform2());
+            ASSERT_EQ(a->eval(wo, wi), b->eval(wo, wi)) << i;
+            ASSERT_EQ(a->pdf(wo, wi), b->pdf(wo, wi)) << i;
+            const glm::vec2 u = rng.uniform2();
+            const float uc = rng.uniform();
+            const auto sa = a->sample(wo, u, uc), sb = b->sample(wo, u, uc);
+            ASSERT_EQ(bool(sa), bool(sb)) << i;
+            if (sa) {
+                ASSERT_EQ(sa->wi, sb->wi) << i;
+            }
+        }
+    }
+}
+
 TEST(GltfMaterial, NormalMapNeverSendsTheMirrorDirectionBelowTheSurface) {
     const auto encode = [](glm::vec3 v) { return glm::u8vec4(glm::round((v + 1.0f) * 0.5f * 255.0f), 255); };
     Material m;

@@ -81,11 +81,12 @@ def seconds_of(match):
 
 
 def woven_render_options(woven):
-    """Options every woven render of the box takes beyond the table's: no denoiser where woven
-    has one (Cycles' is off), as the raw estimates are what is compared."""
+    """Options every woven render of the box takes beyond the table's, where woven has them: no
+    denoiser (Cycles' is off), as the raw estimates are what is compared, and no render passes
+    (Cycles renders its Combined pass alone here)."""
     help_text = subprocess.run([woven, "render", "--help"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                text=True).stdout
-    return ["--no-denoise"] if "--no-denoise" in help_text else []
+    return [option for option in ("--no-denoise", "--no-passes") if option in help_text]
 
 
 def render_woven(args, gltf, spp, seed, exr):
