@@ -33,7 +33,7 @@ inline glm::vec2 sampleTriangleBarycentrics(const glm::vec2& u) {
     return {b1, 1.0f - b0 - b1};
 }
 
-inline uint64_t mix64(uint64_t z) {  // SplitMix64 finaliser
+constexpr uint64_t mix64(uint64_t z) {  // SplitMix64 finaliser
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     return z ^ (z >> 31);

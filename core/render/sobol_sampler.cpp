@@ -69,7 +69,23 @@ SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel, uint64_t sampleIndex)
     : key_(mix64(seed ^ mix64(pixel * 0x9e3779b97f4a7c15ULL ^ mix64((sampleIndex >> 32) + 0x2545f4914f6cdd1dULL)))),
       reversedIndex_(reverseBits(uint32_t(sampleIndex))) {}
 
-uint64_t SobolSampler::dimensionKey(uint32_t dimension) const { return mix64(key_ ^ mix64(uint64_t(dimension) + 1)); }
+// mix64(dimension + 1) of the dimensions a path of up to about twenty bounces draws, tabulated:
+// the key of a dimension is then one hash of the sample's key, not two.
+constexpr uint32_t kTabulatedDimensions = 512;
+struct DimensionHashes {
+    uint64_t of[kTabulatedDimensions];
+};
+constexpr DimensionHashes dimensionHashes() {
+    DimensionHashes h{};
+    for (uint32_t d = 0; d < kTabulatedDimensions; ++d) h.of[d] = mix64(uint64_t(d) + 1);
+    return h;
+}
+constexpr DimensionHashes kDimensionHashes = dimensionHashes();
+
+uint64_t SobolSampler::dimensionKey(uint32_t dimension) const {
+    const uint64_t hash = dimension < kTabulatedDimensions ? kDimensionHashes.of[dimension] : mix64(uint64_t(dimension) + 1);
+    return mix64(key_ ^ hash);
+}
 
 // Every dimension shuffles the sample index its own way. Without that, the scrambled points'
 // coarsest bit would be the index's lowest bit flipped by a constant in every dimension: two
