@@ -38,9 +38,10 @@ private:
     TextureSampler diffuseTransmissionTexture_, diffuseTransmissionColorTexture_;
     TextureSampler iridescenceTexture_, iridescenceThicknessTexture_;
     float dielectricF0_;  // from the IOR
-    // The lobes where no texture, coat or normal map makes them vary over the surface, built once:
-    // a surface whose vertices carry no colour then copies them rather than building them at
-    // every hit, which in a room of plain walls is a twentieth of a path's time.
+    // The lobes where no texture or coat makes them vary over the surface, built once: a surface
+    // whose vertices carry no colour then copies them rather than building them at every hit,
+    // which in a room of plain walls is a twentieth of a path's time. (A normal map turns their
+    // frame alone, which is built per hit.)
     std::optional<GltfBxdf> uniformBxdf_;
 };
 
