@@ -70,7 +70,11 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
     const bool textured = baseColor_.textured() ||
                           std::any_of(std::begin(lobeTextures), std::end(lobeTextures), [](const TextureSampler* t) { return bool(*t); });
     // The coat's lobe holds its normal in the hit's frame, so a coated surface builds it per hit.
-    if (!textured && !m_.unlit && !(m_.clearcoat.factor > 0.0f)) uniformBxdf_.emplace(inputs(TexCoords{}));
+    if (!textured && !m_.unlit && !(m_.clearcoat.factor > 0.0f)) {
+        const GltfBxdfInputs uniform = inputs(TexCoords{});
+        uniformBxdf_.emplace(uniform);
+        uniformAnisotropy_ = uniform.anisotropy;
+    }
 }
 
 GltfBxdfInputs GltfMaterial::inputs(const TexCoords& tc) const {
@@ -130,19 +134,21 @@ glm::vec3 GltfMaterial::anisotropyDirection(const SurfaceHit& hit) const {
     return tbn->toWorld(glm::vec3(c * d.x - s * d.y, s * d.x + c * d.y, 0.0f));
 }
 
+Frame GltfMaterial::lobeFrame(const SurfaceHit& hit, const glm::vec3& n, float anisotropy) const {
+    return anisotropy > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);
+}
+
 std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& wo) const {
     if (m_.unlit) return std::nullopt;
     const float side = glm::dot(wo, hit.ng) < 0.0f ? -1.0f : 1.0f;
     const glm::vec3 ng = side * hit.ng;
     glm::vec3 n = side * shadingNormal(hit);
     if (normalTexture_) n = keepReflectionAbove(ng, wo, n);
-    if (uniformBxdf_ && hit.tex.color == glm::vec4(1.0f)) {
-        const Frame frame = m_.anisotropy.strength > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);
-        return std::optional<Bsdf>(std::in_place, frame, std::in_place, std::in_place_type<GltfBxdf>, *uniformBxdf_);
-    }
+    if (uniformBxdf_ && hit.tex.color == glm::vec4(1.0f))
+        return std::optional<Bsdf>(std::in_place, lobeFrame(hit, n, uniformAnisotropy_), std::in_place,
+                                   std::in_place_type<GltfBxdf>, *uniformBxdf_);
     GltfBxdfInputs in = inputs(hit.tex);
-    // The lobe's x axis is the anisotropy direction (any axis when isotropic).
-    const Frame frame = in.anisotropy > 0.0f ? Frame::fromNormalAndAxis(n, anisotropyDirection(hit)) : Frame::fromNormal(n);
+    const Frame frame = lobeFrame(hit, n, in.anisotropy);
     if (in.clearcoat > 0.0f) {
         // The coat follows the geometry's normal unless it has a normal map of its own.
         glm::vec3 coat = side * hit.ns;

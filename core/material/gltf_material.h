@@ -43,6 +43,11 @@ private:
     // which in a room of plain walls is a twentieth of a path's time. (A normal map turns their
     // frame alone, which is built per hit.)
     std::optional<GltfBxdf> uniformBxdf_;
+    float uniformAnisotropy_ = 0.0f;  // the strength its inputs had
+
+    // The lobe's frame about the shading normal n: its x axis is the anisotropy direction where
+    // `anisotropy` (the inputs' strength) is above 0, any axis otherwise.
+    Frame lobeFrame(const SurfaceHit& hit, const glm::vec3& n, float anisotropy) const;
 };
 
 }  // namespace woven
