@@ -71,9 +71,8 @@ GltfMaterial::GltfMaterial(const Material& material, const std::vector<TextureIm
                           std::any_of(std::begin(lobeTextures), std::end(lobeTextures), [](const TextureSampler* t) { return bool(*t); });
     // The coat's lobe holds its normal in the hit's frame, so a coated surface builds it per hit.
     if (!textured && !m_.unlit && !(m_.clearcoat.factor > 0.0f)) {
-        const GltfBxdfInputs uniform = inputs(TexCoords{});
-        uniformBxdf_.emplace(uniform);
-        uniformAnisotropy_ = uniform.anisotropy;
+        const GltfBxdfInputs in = inputs(TexCoords{});
+        uniform_.emplace(UniformLobes{GltfBxdf(in), in.anisotropy});
     }
 }
 
@@ -144,9 +143,9 @@ std::optional<Bsdf> GltfMaterial::bsdf(const SurfaceHit& hit, const glm::vec3& w
     const glm::vec3 ng = side * hit.ng;
     glm::vec3 n = side * shadingNormal(hit);
     if (normalTexture_) n = keepReflectionAbove(ng, wo, n);
-    if (uniformBxdf_ && hit.tex.color == glm::vec4(1.0f))
-        return std::optional<Bsdf>(std::in_place, lobeFrame(hit, n, uniformAnisotropy_), std::in_place,
-                                   std::in_place_type<GltfBxdf>, *uniformBxdf_);
+    if (uniform_ && hit.tex.color == glm::vec4(1.0f))
+        return std::optional<Bsdf>(std::in_place, lobeFrame(hit, n, uniform_->anisotropy), std::in_place,
+                                   std::in_place_type<GltfBxdf>, uniform_->bxdf);
     GltfBxdfInputs in = inputs(hit.tex);
     const Frame frame = lobeFrame(hit, n, in.anisotropy);
     if (in.clearcoat > 0.0f) {

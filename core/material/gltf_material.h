@@ -42,8 +42,11 @@ private:
     // whose vertices carry no colour then copies them rather than building them at every hit,
     // which in a room of plain walls is a twentieth of a path's time. (A normal map turns their
     // frame alone, which is built per hit.)
-    std::optional<GltfBxdf> uniformBxdf_;
-    float uniformAnisotropy_ = 0.0f;  // the strength its inputs had
+    struct UniformLobes {
+        GltfBxdf bxdf;
+        float anisotropy;  // the strength its inputs had, which picks its frame
+    };
+    std::optional<UniformLobes> uniform_;
 
     // The lobe's frame about the shading normal n: its x axis is the anisotropy direction where
     // `anisotropy` (the inputs' strength) is above 0, any axis otherwise.
