@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "image_stats.h"
 #include "linear_colours.h"
@@ -14,8 +15,10 @@
 #include "power_spectrum.h"
 #include "thread_frequencies.h"
 #include "tile_fold.h"
+#include "transmitted_colours.h"
 #include "weave_candidates.h"
 #include "weave_lattice.h"
+#include "yarn_transmission.h"
 
 namespace woven {
 
@@ -51,6 +54,8 @@ constexpr double kRestartGain = 1e-3;
 // Closed-form colour solves at each point of stage 4: the fold's phase and shift come from the
 // colours before the solve, so a second solve from the first's colours lays the folds right.
 constexpr int kColourSolves = 2;
+// A photo's pixel clips where a channel reaches this share of its saturation (8 bits: 255).
+constexpr float kClipped = 0.999f;
 
 double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
     // Peaks are defined up to sign (the spectrum of a real image is symmetric).
@@ -111,10 +116,8 @@ WovenParams decode(const std::vector<double>& x, WovenParams p) {
     return p;
 }
 
-// `best` (a FitResult, or one weave's best in stage 2: each holds params, exposure, loss and
-// shots) made p's fit: its loss, and each shot's terms and render.
-template <class Best>
-void keepFit(Best& best, const WovenParams& p, double exposure, double loss, const std::vector<LossTerms>& terms,
+// p made the best fit so far: its loss, and each shot's terms and render.
+void keepFit(FitResult& best, const WovenParams& p, double exposure, double loss, const std::vector<LossTerms>& terms,
              std::vector<Image> images) {
     best.params = p;
     best.exposure = exposure;
@@ -163,7 +166,6 @@ public:
         stage_ = "thread counts";
         p.repeat = measurePhotos(p.repeat);
         p = initialColours(p);
-        if (transmitted_) p = initialTransmission(p);
         const bool weaveDone = chooseWeave(p);
         bool calibrated = false;
         if (weaveDone && !stop()) {
@@ -225,7 +227,7 @@ private:
     std::vector<Image> render(const WovenParams& p, const std::vector<bool>& which = {}) {
         std::vector<Image> images(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) {
-            if (!which.empty() && !which[i]) continue;
+            if ((!which.empty() && !which[i]) || (backlitLeftOut_ && !reflected_[i])) continue;
             images[i] = renderShot(renderShots_[i], p, options_.render, cancel_);
             applyVignette(images[i], shots_[i].photo.vignetteSigmaPx);
         }
@@ -273,7 +275,8 @@ private:
     }
 
     // The loss of renders (vignetted, before exposure); with `record`, kept if the best so far. A
-    // shot whose image is empty is left out (only a loss that is not recorded may leave one out).
+    // shot whose image is empty is left out (only a loss that is not recorded may leave one out,
+    // and stage 2's, which all leave the backlit shots out).
     double evaluate(const WovenParams& p, std::vector<Image> images, bool record) {
         const double free = freeExposure(images);
         double total = 0.0;
@@ -288,7 +291,6 @@ private:
         }
 
         if (record) {
-            if (weaveBest_ && total < weaveBest_->loss) keepFit(*weaveBest_, p, free, total, terms, images);
             if (total < result_.loss) keepFit(result_, p, free, total, terms, std::move(images));
             result_.history.emplace_back(elapsed(), result_.loss);
             progress();
@@ -379,90 +381,151 @@ private:
         return p;
     }
 
-    // The transmission solved for p's shape and colours (withTransmission()), where the backlit
-    // shots' photos are still compared with opaque yarns: the start the later stages keep.
-    WovenParams initialTransmission(WovenParams p) {
-        std::vector<Image> images = render(p, reflected_);
-        const double free = freeExposure(images);
-        const std::vector<Image> transmitted = withTransmission(p, free);
-        for (size_t i = 0; i < shots_.size(); ++i)
-            if (!reflected_[i]) images[i] = transmitted[i];
-        evaluate(p, std::move(images), true);
-        return p;
-    }
 
-    // The backlit shots' renders are linear in T_d = t (1 - g) and T_g = t g, the transmission's
-    // diffuse and glossy parts (MODEL_TRANSMISSION.md section 2), once the colours and shape are
-    // set: two renders, one at t = 1, g = 0 and one at t = 1, g = 1, and the photos' block means
-    // (relative to each channel's mean, as the loss weighs them) give both by least squares with
-    // neither below 0. Sets p's transmission and transmission_gloss and returns the backlit
-    // shots' renders (vignetted, before exposure) at them; the other shots' are empty.
-    // `exposure`: the free shots' exposure.
-    std::vector<Image> withTransmission(WovenParams& p, double exposure) {
+    // Each backlit shot's six parts (TransmissionStats' order) at p's shape, t = 1, vignetted:
+    // each region's render at a transmittance of 1 (transmitted_colours.h), from which a backlit
+    // render at any colours, t and g is a sum (backlitRender()). Under white light one render
+    // per part holds the three regions, a channel each: a weft (0.5, 1, 0.5) and a warp
+    // (1, 0.5, 0.5) pass T = (1/8, 0, 1/8) and (0, 1/8, 1/8) (a channel at R_d = 1 passes
+    // nothing), so red is the weft alone, green the warp alone and blue all three. Otherwise
+    // three per part: one yarn grey (T = 1/2) and the other white, then both grey.
+    using TransmissionParts = std::vector<std::array<Image, 2 * kTransmittedRegionCount>>;
+    TransmissionParts transmissionParts(WovenParams p) {
         std::vector<bool> backlit(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) backlit[i] = !reflected_[i];
-        WovenParams q = p;
-        q.transmission = 1.0f;
-        q.transmission_gloss = 0.0f;
-        const std::vector<Image> diffuse = render(q, backlit);
-        q.transmission_gloss = 1.0f;
-        const std::vector<Image> glossy = render(q, backlit);
-        // Normal equations of sum w (photo - e (a D + b G))^2 over the backlit shots' block means.
-        glm::dmat2 A(0.0);
-        glm::dvec2 y(0.0);
-        for (size_t i = 0; i < shots_.size(); ++i) {
-            if (!backlit[i]) continue;
-            const double e = shots_[i].photo.exposure.value_or(float(exposure));
-            const std::vector<float>& photo = photoStats_[i].values[kStatBlockMeans];
-            const std::vector<float> d = blockMeans(diffuse[i]), g = blockMeans(glossy[i]);
-            const glm::dvec3 scale = channelMeans(photo, 1);
-            for (size_t k = 0; k < photo.size(); ++k) {
-                const double w = 1.0 / (scale[int(k % 3)] * scale[int(k % 3)]);
-                const glm::dvec2 x(e * d[k], e * g[k]);
-                A += w * glm::outerProduct(x, x);
-                y += w * x * double(photo[k]);
+        p.transmission = 1.0f;
+        TransmissionParts parts(shots_.size());
+        for (int part = 0; part < 2; ++part) {
+            p.transmission_gloss = float(part);
+            // Per shot: the weft alone, the warp alone and all three regions, at transmittance tau.
+            std::vector<std::array<Image, 3>> regions(shots_.size());
+            double tau = 0.0;
+            if (whiteLight_) {
+                p.weft_color = {0.5f, 1.0f, 0.5f};
+                p.warp_color = {1.0f, 0.5f, 0.5f};
+                tau = double(yarnTransmittance(p.weft_color, 1.0f).r);
+                const std::vector<Image> images = render(p, backlit);
+                for (size_t s = 0; s < shots_.size(); ++s)
+                    for (int r = 0; r < 3; ++r) {
+                        regions[s][size_t(r)] = images[s];
+                        for (glm::vec3& v : regions[s][size_t(r)].pixels) v = glm::vec3(v[r]);
+                    }
+            } else {
+                const glm::vec3 grey(0.5f), white(1.0f);
+                tau = double(yarnTransmittance(grey, 1.0f).r);
+                const std::array<std::pair<glm::vec3, glm::vec3>, 3> colourings{
+                    {{grey, white}, {white, grey}, {grey, grey}}};
+                for (int r = 0; r < 3; ++r) {
+                    std::tie(p.weft_color, p.warp_color) = colourings[size_t(r)];
+                    const std::vector<Image> images = render(p, backlit);
+                    for (size_t s = 0; s < shots_.size(); ++s) regions[s][size_t(r)] = images[s];
+                }
+            }
+            for (size_t s = 0; s < shots_.size(); ++s) {
+                if (!backlit[s]) continue;
+                std::array<Image, 3>& r = regions[s];
+                for (size_t i = 0; i < r[2].pixels.size(); ++i) {
+                    r[0].pixels[i] /= float(tau);
+                    r[1].pixels[i] /= float(tau);
+                    r[2].pixels[i] = r[2].pixels[i] / float(tau) - r[0].pixels[i] - r[1].pixels[i];
+                }
+                for (int k = 0; k < kTransmittedRegionCount; ++k)
+                    parts[s][size_t(part * kTransmittedRegionCount + k)] = std::move(r[size_t(k)]);
             }
         }
-        // The unconstrained minimum, else the better of the two edges (one part alone).
-        glm::dvec2 ab(0.0);
-        if (std::abs(glm::determinant(A)) > 1e-12 * (A[0][0] * A[1][1] + 1e-300)) ab = glm::inverse(A) * y;
-        if (!(ab.x >= 0.0 && ab.y >= 0.0)) {
-            const glm::dvec2 onlyD(A[0][0] > 0.0 ? std::max(0.0, y.x / A[0][0]) : 0.0, 0.0);
-            const glm::dvec2 onlyG(0.0, A[1][1] > 0.0 ? std::max(0.0, y.y / A[1][1]) : 0.0);
-            const auto cost = [&](const glm::dvec2& v) { return glm::dot(v, A * v) - 2.0 * glm::dot(v, y); };
-            ab = cost(onlyD) <= cost(onlyG) ? onlyD : onlyG;
-        }
-        const double t = ab.x + ab.y;
-        if (t > 0.0) {
-            p.transmission = float(std::min(t, 1.0));
-            p.transmission_gloss = float(std::clamp(ab.y / t, 0.0, 1.0));
-        } else {
-            p.transmission = 0.0f;
-        }
+        return parts;
+    }
+
+    // The backlit shots' renders (vignetted, before exposure) at p's colours and transmission;
+    // the other shots' are empty.
+    std::vector<Image> backlitRenders(const TransmissionParts& parts, const WovenParams& p) const {
+        const std::array<glm::dvec3, kTransmittedRegionCount> tau =
+            regionTransmittances(glm::dvec3(p.weft_color), glm::dvec3(p.warp_color));
         const float kd = p.transmission * (1.0f - p.transmission_gloss), kg = p.transmission * p.transmission_gloss;
         std::vector<Image> images(shots_.size());
-        for (size_t i = 0; i < shots_.size(); ++i) {
-            if (!backlit[i]) continue;
-            images[i] = diffuse[i];
-            for (size_t k = 0; k < images[i].pixels.size(); ++k)
-                images[i].pixels[k] = kd * diffuse[i].pixels[k] + kg * glossy[i].pixels[k];
+        for (size_t s = 0; s < shots_.size(); ++s) {
+            if (reflected_[s]) continue;
+            images[s] = parts[s][0];
+            for (size_t i = 0; i < images[s].pixels.size(); ++i) {
+                glm::vec3 v(0.0f);
+                for (int r = 0; r < kTransmittedRegionCount; ++r)
+                    v += glm::vec3(tau[size_t(r)]) * (kd * parts[s][size_t(r)].pixels[i] +
+                                                      kg * parts[s][size_t(kTransmittedRegionCount + r)].pixels[i]);
+                images[s].pixels[i] = v;
+            }
         }
         return images;
     }
 
+    // What the transmission's solves compare (transmitted_colours.h), in the order of the backlit
+    // shots: their photos' statistics and their parts', each image with the pixels its photo
+    // clips set to 0 (a render summed from parts cannot clip as the photo did: a lamp behind
+    // the cloth often clips where it shines through). With p (its transmission set), the tile
+    // folds too, laid on the photo's at the phase of p's render.
+    struct BacklitStats {
+        std::vector<ImageStats> photos;
+        std::vector<TransmissionStats> parts;
+        std::vector<const ImageStats*> photoPointers() const {
+            std::vector<const ImageStats*> out;
+            for (const ImageStats& s : photos) out.push_back(&s);
+            return out;
+        }
+    };
+    BacklitStats backlitStats(const TransmissionParts& parts, const WovenParams* p) const {
+        BacklitStats stats;
+        const std::vector<Image> reference = p ? backlitRenders(parts, *p) : std::vector<Image>{};
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (reflected_[i]) continue;
+            const float saturation = photoSaturation(shots_[i].photo);
+            const Image& photo = shots_[i].image;
+            const auto unclipped = [&](Image image) {
+                for (size_t k = 0; k < image.pixels.size(); ++k) {
+                    const glm::vec3& v = photo.pixels[k];
+                    if (std::max({v.r, v.g, v.b}) >= kClipped * saturation) image.pixels[k] = glm::vec3(0.0f);
+                }
+                return image;
+            };
+            const Image photoUnclipped = unclipped(photo);
+            std::array<Image, 2 * kTransmittedRegionCount> partsUnclipped;
+            for (size_t k = 0; k < partsUnclipped.size(); ++k) partsUnclipped[k] = unclipped(parts[i][k]);
+            ImageStats& ps = stats.photos.emplace_back();
+            ps.values[kStatBlockMeans] = blockMeans(photoUnclipped);
+            TransmissionStats& t = stats.parts.emplace_back();
+            for (size_t k = 0; k < partsUnclipped.size(); ++k) t.blockMeans[k] = blockMeans(partsUnclipped[k]);
+            const std::optional<ThreadGrid> grid = p ? renderGrid(*p, i) : std::nullopt;
+            if (!grid) continue;
+            ThreadGrid photoGrid = *photoGrids_[i];
+            photoGrid.period = grid->period;
+            ps.fold = foldTile(photoUnclipped, photoGrid);
+            std::vector<const Image*> images;
+            for (const Image& part : partsUnclipped) images.push_back(&part);
+            const std::vector<TileFold> folds = foldsLaidOn(ps.fold, unclipped(reference[i]), images, *grid);
+            std::copy(folds.begin(), folds.end(), t.folds.begin());
+        }
+        return stats;
+    }
+
+    // The backlit shots' exposures, in the order backlitStats() keeps: each given one, else
+    // `shared` (none: the free one).
+    std::vector<std::optional<double>> backlitExposures(std::optional<double> shared) const {
+        std::vector<std::optional<double>> exposures;
+        for (size_t i = 0; i < shots_.size(); ++i)
+            if (!reflected_[i])
+                exposures.push_back(shots_[i].photo.exposure ? std::optional<double>(*shots_[i].photo.exposure) : shared);
+        return exposures;
+    }
+
     // Stage 2: the weaves the photo's spectrum shortlists (weave_lattice.h), each with its
     // colours fitted, the best kept. False when the budget ran out first.
-    // Where backlit shots join reflected ones, each weave is refined on every shot's loss but the
-    // reflected shots' loss chooses among them: the face's weave is what reflection shows, light
-    // through the cloth shows the gaps between its yarns, which a weave and its complement share,
-    // and the backlit shots' loss, 10 to 100 times the flash's before stage 4 fits the
-    // transmission's shape, chose the rig's 3/1 twill's and 5-end satin's complements
-    // (docs/FIT.md).
+    // Where backlit shots join reflected ones, the weaves are fitted to the reflected shots
+    // alone: the face's weave is what reflection shows, light through the cloth shows the gaps
+    // between its yarns, which a weave and its complement share, and until the transmission is
+    // solved at the weave's colours and shape (stage 4) the backlit shots' loss is 10 to 100
+    // times the flash's: counted, it chose the rig's 3/1 twill's and 5-end satin's complements,
+    // and its refinement drove the yarns' widths and gloss away from the flash's (docs/FIT.md).
     bool chooseWeave(const WovenParams& start) {
         const std::vector<glm::ivec3> candidates = shortlist();
-        const bool byReflection = transmitted_ && candidates.size() > 1;
-        std::optional<WeaveBest> chosen;  // byReflection: the weave the reflected shots rank first
-        double chosenLoss = INFINITY;
+        if (transmitted_) countBacklitShots(false);
         bool done = true;
         for (size_t c = 0; c < candidates.size(); ++c) {
             if (stop()) {
@@ -475,31 +538,20 @@ private:
             WovenParams p = start;
             p.pattern = candidates[c];
             fitColours(p);
-            if (candidates.size() == 1) {
+            // A lone weave is refined too where backlit shots join: each point of stage 4 then
+            // costs three renders, and from the shot material's widths and gloss it ended where
+            // the flash's loss was 7 times its truth's (the rig's plain weave, its weft 0.97
+            // wide for 0.85).
+            if (candidates.size() == 1 && !transmitted_) {
                 evaluate(p);
                 continue;
             }
-            if (byReflection) weaveBest_.emplace();
             p = rescaled(p);
             std::vector<double> x = encode(p);
             const Objective objective = [&](const std::vector<double>& v) { return evaluate(decode(v, p)); };
             minimise(x, objective, kShortlistRefineRenders);
-            if (!weaveBest_ || !std::isfinite(weaveBest_->loss)) continue;
-            double reflectedLoss = 0.0;
-            for (size_t i = 0; i < shots_.size(); ++i)
-                if (reflected_[i]) reflectedLoss += weaveBest_->shots[i].terms.total;
-            if (reflectedLoss < chosenLoss) {
-                chosenLoss = reflectedLoss;
-                chosen = std::move(weaveBest_);
-            }
         }
-        weaveBest_.reset();
-        if (chosen) {
-            result_.params = chosen->params;
-            result_.exposure = chosen->exposure;
-            result_.loss = chosen->loss;
-            result_.shots = std::move(chosen->shots);
-        }
+        if (transmitted_) countBacklitShots(true);
         return done;
     }
 
@@ -675,8 +727,9 @@ private:
     // means and tile folds best (linear_colours.h); kept if the best so far. One colour basis,
     // kColourSolves solves, each folding the basis at the phase and shift of the last colours'
     // mixture.
-    // The colours are solved from the reflected shots alone; the backlit shots then take the
-    // transmission solved at those colours (withTransmission()).
+    // Where backlit shots join reflected ones, the colours, the exposure and the transmission are
+    // then solved against both together (transmitted_colours.h), from the reflected shots'
+    // colours: the light through the yarns holds their hue without the gloss.
     double evaluateSolvingColours(WovenParams p) {
         const ColourBasis basis = colourBasis(p);
         if (cancel_.load()) return INFINITY;
@@ -696,9 +749,21 @@ private:
             photos.push_back(&photoStats_[i]);
             solved.push_back(i);
         }
+        LinearColours colours;  // the last solve's
+        colours.weft = glm::dvec3(p.weft_color);
+        colours.warp = glm::dvec3(p.warp_color);
+        colours.exposure = result_.exposure;
+        // The solve with the backlit shots starts from the last solve's colours and from p's as it
+        // came (the best fit's in stage 4), and lays every fold at p's colours as it came: the
+        // reflected shots' solve is ill-conditioned where the gloss's pattern nears the yarns'
+        // (the rig's satin at ey = 4 gave every colour above 1 and an exposure a third of its
+        // neighbours'), and folds laid at such colours pair the wrong places.
+        const WovenParams entry = p;
+        LinearColours entryColours = colours;
+        std::vector<LinearStats> entryStats;
+        std::vector<LinearStats> stats(solved.size());
         for (int solve = 0; solve < kColourSolves; ++solve) {
             const std::vector<Image> reference = mixture(basis, p);
-            std::vector<LinearStats> stats(solved.size());
             for (size_t j = 0; j < solved.size(); ++j) {
                 const size_t i = solved[j];
                 for (size_t k = 0; k < 3; ++k) stats[j].blockMeans[k] = blockMeans(basis[i][k]);
@@ -709,16 +774,40 @@ private:
                     foldsLaidOn(photoStats_[i].fold, reference[i], {&basis[i][0], &basis[i][1], &basis[i][2]}, *grid);
                 std::copy(folds.begin(), folds.end(), stats[j].folds.begin());
             }
+            if (solve == 0) entryStats = stats;
             const LinearColours c = solveColours(photos, stats, exposures);
             if (!c.valid) break;
+            colours = c;
             const Axis& axis = fullAxes()[0];
             p.weft_color = glm::vec3(glm::clamp(c.weft, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
             p.warp_color = glm::vec3(glm::clamp(c.warp, glm::dvec3(axis.lo), glm::dvec3(axis.hi)));
         }
         std::vector<Image> images = mixture(basis, p);
-        if (transmitted_) {
-            const std::vector<Image> transmitted = withTransmission(p, freeExposure(images));
+        if (transmitted_ && !backlitLeftOut_) {
+            const TransmissionParts parts = transmissionParts(p);
             if (cancel_.load()) return INFINITY;
+            // The backlit folds' reference: p as it came, with the transmission solved at its colours.
+            const std::optional<double> shared = allFree ? std::nullopt : std::optional<double>(result_.exposure);
+            std::vector<double> exposuresNow;
+            for (const std::optional<double>& e : backlitExposures(shared))
+                exposuresNow.push_back(e.value_or(entryColours.exposure));
+            const BacklitStats blockStats = backlitStats(parts, nullptr);
+            const TransmissionSplit first = solveTransmission(blockStats.photoPointers(), blockStats.parts, exposuresNow,
+                                                              entryColours.weft, entryColours.warp);
+            WovenParams reference = entry;
+            reference.transmission = float(first.transmission());
+            reference.transmission_gloss = float(first.gloss());
+            const BacklitStats foldStats = backlitStats(parts, &reference);
+            if (!allFree) entryColours.exposure = 1.0;
+            const TransmittedColours joint =
+                solveColoursWithTransmission(photos, entryStats, exposures, foldStats.photoPointers(), foldStats.parts,
+                                             backlitExposures(shared), {colours, entryColours});
+            p.weft_color = glm::vec3(joint.colours.weft);
+            p.warp_color = glm::vec3(joint.colours.warp);
+            p.transmission = float(joint.split.transmission());
+            p.transmission_gloss = float(joint.split.gloss());
+            images = mixture(basis, p);
+            const std::vector<Image> transmitted = backlitRenders(parts, p);
             for (size_t i = 0; i < shots_.size(); ++i)
                 if (!reflected_[i]) images[i] = transmitted[i];
         }
@@ -749,6 +838,17 @@ private:
             points += minimise(x, objective, 0);
         }
         return points;
+    }
+
+    // Stage 2 fits to the reflected shots alone (backlitLeftOut_), the best so far then compared
+    // by their loss alone. Switching re-evaluates it under the loss that follows, the colours
+    // (and where the backlit shots count, the transmission) solved as stage 4 solves them.
+    void countBacklitShots(bool counted) {
+        backlitLeftOut_ = !counted;
+        if (!std::isfinite(result_.loss) || cancel_.load()) return;
+        const WovenParams best = result_.params;
+        result_.loss = INFINITY;
+        evaluateSolvingColours(best);
     }
 
     void compareWithLambertianPlanes() {
@@ -801,15 +901,8 @@ private:
     // Per shot: the colours are fitted to it (not backlit, or every shot is).
     std::vector<bool> reflected_;
     bool transmitted_ = false;  // backlit shots beside reflected ones: the transmission is solved
-    // The best of one weave in stage 2, where the reflected shots choose the weave (chooseWeave()):
-    // the best so far (result_) stays every evaluation's, as the progress line shows it.
-    struct WeaveBest {
-        WovenParams params;
-        double exposure = 1.0;
-        double loss = INFINITY;
-        std::vector<ShotFit> shots;
-    };
-    std::optional<WeaveBest> weaveBest_;
+    // Renders leave the backlit shots out (stage 2).
+    bool backlitLeftOut_ = false;
 };
 
 }  // namespace

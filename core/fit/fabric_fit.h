@@ -6,14 +6,17 @@
 //   2. the weave: each of weaveCandidates() with its yarn colours fitted (by NLopt, on mixtures
 //      of renders whose mixtures are exact for any colours under direct light from point lights:
 //      one render with the weft red and the warp green under white light, else three), the best
-//      kept: by the reflected shots' loss where backlit shots join them (fabric_fit.cpp says why);
+//      kept; where backlit shots join reflected ones, on the reflected shots alone (fabric_fit.cpp
+//      says why);
 //   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
 //   4. gloss (ex, ey, and rs where no exposure is free), yarn widths and bump (cy) by NLopt's
 //      BOBYQA, the colours and a free exposure solved in closed form at each point from the same
 //      mixtures (linear_colours.h), until the time budget is spent.
-// Where some shots are lit from behind (Shot::backlit) and others not, the colours are fitted to
-// the others, and the backlit shots' transmission (transmission, transmission_gloss) is solved in
-// closed form from two renders of them, after the first colours and at each point of stage 4.
+// Where some shots are lit from behind (Shot::backlit) and others not, each point of stage 4
+// also renders the backlit shots' six parts (transmitted_colours.h: the weft alone, the warp
+// alone and their crossings, each with the transmission's diffuse and glossy part, in two
+// renders under white light), and the colours, the exposure and the transmission
+// (transmission, transmission_gloss) are solved against every shot together.
 // The best parameters met are kept throughout: a cancelled or timed-out fit returns them.
 #include <atomic>
 #include <functional>

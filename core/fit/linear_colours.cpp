@@ -48,16 +48,15 @@ struct NormalEquations {
     }
 };
 
-}  // namespace
-
-LinearColours solveColours(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
-                           const std::vector<std::optional<double>>& exposures) {
+// Each residual of the problem solveColours() solves, as (row, rhs, weight): row . x - rhs, x the
+// unknowns (e x weft, e x warp and e where the exposure is free; else weft and warp), relative to
+// the photo's scale of that channel.
+template <class Residual>
+void forEachResidual(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
+                     const std::vector<std::optional<double>>& exposures, const Residual& residual) {
     const bool free = !exposures.empty() && !exposures[0];
-    NormalEquations eq;
-    eq.n = free ? 7 : 6;
-    // One residual: channel c of a statistic whose parts are k = (K_weft, K_warp, R), relative
-    // to the photo's scale of that channel. Free: the unknowns are e x weft, e x warp and e, so
-    // R's term is e R; given: the colours, each term times the shot's exposure, R's on the right.
+    // Channel c of a statistic whose parts are k = (K_weft, K_warp, R). Free: R's term is e R;
+    // given: each term times the shot's exposure, R's on the right.
     auto add = [&](int c, const glm::dvec3& k, double photo, double scale, double weight, std::optional<double> exposure) {
         std::array<double, kMaxUnknowns> row{};
         const double e = exposure.value_or(1.0);
@@ -68,7 +67,7 @@ LinearColours solveColours(const std::vector<const ImageStats*>& photos, const s
             row[6] = k[2] / scale;
         else
             rhs -= e * k[2] / scale;
-        eq.add(row, rhs, weight);
+        residual(row, rhs, weight);
     };
     const double blockWeight = lossWeights()[kStatBlockMeans], foldWeight = lossWeights()[kStatTileFold];
     for (size_t s = 0; s < photos.size(); ++s) {
@@ -81,17 +80,25 @@ LinearColours solveColours(const std::vector<const ImageStats*>& photos, const s
                 blockWeight / double(pm.size()), exposures[s]);
         }
         const TileFold& pf = photos[s]->fold;
-        if (pf.side == 0 || r.folds[0].side != pf.side) continue;
+        const std::vector<size_t> bins = sharedBins(pf, r.folds[0]);
+        if (bins.empty()) continue;
         const glm::dvec3 foldScale = foldChannelMeans(pf);
-        int count = 0;
-        for (size_t b = 0; b < pf.mean.size(); ++b) count += pf.weight[b] > 0.0f && r.folds[0].weight[b] > 0.0f ? 3 : 0;
-        for (size_t b = 0; b < pf.mean.size(); ++b) {
-            if (!(pf.weight[b] > 0.0f && r.folds[0].weight[b] > 0.0f)) continue;
+        for (size_t b : bins)
             for (int c = 0; c < 3; ++c)
                 add(c, {r.folds[0].mean[b][c], r.folds[1].mean[b][c], r.folds[2].mean[b][c]}, pf.mean[b][c], foldScale[c],
-                    foldWeight / double(count), exposures[s]);
-        }
+                    foldWeight / double(3 * bins.size()), exposures[s]);
     }
+}
+
+}  // namespace
+
+LinearColours solveColours(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
+                           const std::vector<std::optional<double>>& exposures) {
+    const bool free = !exposures.empty() && !exposures[0];
+    NormalEquations eq;
+    eq.n = free ? 7 : 6;
+    forEachResidual(photos, renders, exposures,
+                    [&](const std::array<double, kMaxUnknowns>& row, double rhs, double weight) { eq.add(row, rhs, weight); });
     LinearColours out;
     const auto x = eq.solve();
     if (!x) return out;
@@ -101,6 +108,21 @@ LinearColours solveColours(const std::vector<const ImageStats*>& photos, const s
     out.warp = glm::dvec3((*x)[3], (*x)[4], (*x)[5]) / out.exposure;
     out.valid = true;
     return out;
+}
+
+double colourResidual(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
+                      const std::vector<std::optional<double>>& exposures, const glm::dvec3& weft, const glm::dvec3& warp,
+                      double exposure) {
+    const bool free = !exposures.empty() && !exposures[0];
+    const double e = free ? exposure : 1.0;
+    const std::array<double, kMaxUnknowns> x{e * weft.r, e * weft.g, e * weft.b, e * warp.r, e * warp.g, e * warp.b, e};
+    double sum = 0.0;
+    forEachResidual(photos, renders, exposures, [&](const std::array<double, kMaxUnknowns>& row, double rhs, double weight) {
+        double d = -rhs;
+        for (size_t i = 0; i < x.size(); ++i) d += row[i] * x[i];
+        sum += weight * d * d;
+    });
+    return sum;
 }
 
 }  // namespace woven

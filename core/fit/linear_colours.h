@@ -35,4 +35,10 @@ struct LinearColours {
 LinearColours solveColours(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
                            const std::vector<std::optional<double>>& exposures);
 
+// The weighted sum of squares solveColours() minimises, at the given colours and free exposure
+// (ignored where every exposure is given).
+double colourResidual(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
+                      const std::vector<std::optional<double>>& exposures, const glm::dvec3& weft, const glm::dvec3& warp,
+                      double exposure);
+
 }  // namespace woven

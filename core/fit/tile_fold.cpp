@@ -242,6 +242,14 @@ std::vector<TileFold> foldsLaidOn(const TileFold& photo, const Image& reference,
     return folds;
 }
 
+std::vector<size_t> sharedBins(const TileFold& photo, const TileFold& laid) {
+    std::vector<size_t> bins;
+    if (photo.side == 0 || laid.side != photo.side) return bins;
+    for (size_t b = 0; b < photo.mean.size(); ++b)
+        if (photo.weight[b] > 0.0f && laid.weight[b] > 0.0f) bins.push_back(b);
+    return bins;
+}
+
 double foldError(const TileFold& photo, const TileFold& render) {
     if (photo.side == 0 || photo.side != render.side) return 0.0;
     const int n = photo.side;

@@ -34,6 +34,9 @@ TileFold foldTile(const Image& image, const ThreadGrid& grid);
 std::vector<TileFold> foldsLaidOn(const TileFold& photo, const Image& reference, const std::vector<const Image*>& images,
                                   const ThreadGrid& grid);
 
+// The bins that both folds fill, laid bin by bin (foldsLaidOn()): those a linear solve compares.
+std::vector<size_t> sharedBins(const TileFold& photo, const TileFold& laid);
+
 // The mean of each channel over the bins a fold fills: the scale of foldError()'s differences.
 glm::dvec3 foldChannelMeans(const TileFold& photo);
 
