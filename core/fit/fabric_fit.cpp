@@ -759,7 +759,7 @@ private:
         // (the rig's satin at ey = 4 gave every colour above 1 and an exposure a third of its
         // neighbours'), and folds laid at such colours pair the wrong places.
         const WovenParams entry = p;
-        LinearColours entryColours = colours;
+        const LinearColours entryColours = colours;
         std::vector<LinearStats> entryStats;
         std::vector<LinearStats> stats(solved.size());
         for (int solve = 0; solve < kColourSolves; ++solve) {
@@ -786,32 +786,52 @@ private:
         if (transmitted_ && !backlitLeftOut_) {
             const TransmissionParts parts = transmissionParts(p);
             if (cancel_.load()) return INFINITY;
-            // The backlit folds' reference: p as it came, with the transmission solved at its colours.
-            const std::optional<double> shared = allFree ? std::nullopt : std::optional<double>(result_.exposure);
-            std::vector<double> exposuresNow;
-            for (const std::optional<double>& e : backlitExposures(shared))
-                exposuresNow.push_back(e.value_or(entryColours.exposure));
-            const BacklitStats blockStats = backlitStats(parts, nullptr);
-            const TransmissionSplit first = solveTransmission(blockStats.photoPointers(), blockStats.parts, exposuresNow,
-                                                              entryColours.weft, entryColours.warp);
-            WovenParams reference = entry;
-            reference.transmission = float(first.transmission());
-            reference.transmission_gloss = float(first.gloss());
-            const BacklitStats foldStats = backlitStats(parts, &reference);
-            if (!allFree) entryColours.exposure = 1.0;
-            const TransmittedColours joint =
-                solveColoursWithTransmission(photos, entryStats, exposures, foldStats.photoPointers(), foldStats.parts,
-                                             backlitExposures(shared), {colours, entryColours});
-            p.weft_color = glm::vec3(joint.colours.weft);
-            p.warp_color = glm::vec3(joint.colours.warp);
-            p.transmission = float(joint.split.transmission());
-            p.transmission_gloss = float(joint.split.gloss());
+            const ReflectedSolve reflected{photos, exposures, entryStats, colours, entryColours, allFree};
+            solveWithBacklitShots(p, entry, reflected, parts);
             images = mixture(basis, p);
             const std::vector<Image> transmitted = backlitRenders(parts, p);
             for (size_t i = 0; i < shots_.size(); ++i)
                 if (!reflected_[i]) images[i] = transmitted[i];
         }
         return evaluate(p, std::move(images), true);
+    }
+
+    // What evaluateSolvingColours() solved the colours from: the reflected shots' photos and
+    // exposures, their statistics with the folds laid at the entry's colours, the last solve's
+    // colours and the entry's.
+    struct ReflectedSolve {
+        std::vector<const ImageStats*> photos;
+        std::vector<std::optional<double>> exposures;
+        std::vector<LinearStats> entryStats;
+        LinearColours last, entry;
+        bool allFree = true;
+    };
+
+    // p's colours, free exposure and transmission solved against the reflected and the backlit
+    // shots together (transmitted_colours.h), from the reflected solve's colours and from
+    // `entry`'s (p as evaluateSolvingColours() was given it), every fold laid at `entry`'s.
+    void solveWithBacklitShots(WovenParams& p, const WovenParams& entry, const ReflectedSolve& reflected,
+                               const TransmissionParts& parts) {
+        // The backlit folds' reference: the entry, with the transmission solved at its colours.
+        const std::optional<double> shared = reflected.allFree ? std::nullopt : std::optional<double>(result_.exposure);
+        std::vector<double> exposures;
+        for (const std::optional<double>& e : backlitExposures(shared)) exposures.push_back(e.value_or(reflected.entry.exposure));
+        const BacklitStats blockStats = backlitStats(parts, nullptr);
+        const TransmissionSplit first = solveTransmission(blockStats.photoPointers(), blockStats.parts, exposures,
+                                                          reflected.entry.weft, reflected.entry.warp);
+        WovenParams reference = entry;
+        reference.transmission = float(first.transmission());
+        reference.transmission_gloss = float(first.gloss());
+        const BacklitStats foldStats = backlitStats(parts, &reference);
+        LinearColours entryStart = reflected.entry;
+        if (!reflected.allFree) entryStart.exposure = 1.0;
+        const TransmittedColours joint =
+            solveColoursWithTransmission(reflected.photos, reflected.entryStats, reflected.exposures, foldStats.photoPointers(),
+                                         foldStats.parts, backlitExposures(shared), {reflected.last, entryStart});
+        p.weft_color = glm::vec3(joint.colours.weft);
+        p.warp_color = glm::vec3(joint.colours.warp);
+        p.transmission = float(joint.split.transmission());
+        p.transmission_gloss = float(joint.split.gloss());
     }
 
     // Stage 4: BOBYQA over the shape from the best so far, the colours (and the transmission,
