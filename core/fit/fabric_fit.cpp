@@ -54,6 +54,10 @@ constexpr double kRestartGain = 1e-3;
 // Closed-form colour solves at each point of stage 4: the fold's phase and shift come from the
 // colours before the solve, so a second solve from the first's colours lays the folds right.
 constexpr int kColourSolves = 2;
+// Stage 5's samples a pixel, as a multiple of the fit's (polishColours()): its renders (five for
+// a flash and a backlit shot) at 4 times the samples cost about 20 of stage 4's, 8 % of the
+// round trips' 250.
+constexpr int kPolishSamples = 4;
 // A photo's pixel clips where a channel reaches this share of its saturation (8 bits: 255).
 constexpr float kClipped = 0.999f;
 
@@ -175,6 +179,7 @@ public:
         }
         int refined = 0;
         if (calibrated && !stop()) refined = refine(shotRs);
+        polishColours();
         measureThreads();
         compareWithLambertianPlanes();
         result_.complete = weaveDone && calibrated && refined >= 2 * int(shapeAxes().size()) + 1 && !cancel_;
@@ -203,12 +208,17 @@ private:
             const double turn = threadTurn(photoPeaks_[i], shots_[i].uvPerPixel);
             renderShots_.push_back(turnedShot(shots_[i], std::abs(turn) >= kLeastTurn ? turn : 0.0));
         }
+        measureBacklitPhotos();
         return repeat;
     }
 
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    // The time budget is spent when what is left would only pay for polishColours(): its renders
+    // at kPolishSamples times the samples, at the mean time a render has taken so far.
     bool stop() const {
-        return cancel_.load() || elapsed() >= options_.seconds ||
+        const double t = elapsed();
+        const double polish = result_.evaluations > 0 ? t / result_.evaluations * kPolishSamples * polishRenders() : 0.0;
+        return cancel_.load() || t + polish >= options_.seconds ||
                (options_.renders > 0 && result_.evaluations >= options_.renders);
     }
 
@@ -457,55 +467,86 @@ private:
         return images;
     }
 
-    // What the transmission's solves compare (transmitted_colours.h), in the order of the backlit
-    // shots: their photos' statistics and their parts', each image with the pixels its photo
-    // clips set to 0 (a render summed from parts cannot clip as the photo did: a lamp behind
-    // the cloth often clips where it shines through). With p (its transmission set), the tile
-    // folds too, laid on the photo's at the phase of p's render.
-    struct BacklitStats {
-        std::vector<ImageStats> photos;
-        std::vector<TransmissionStats> parts;
-        std::vector<const ImageStats*> photoPointers() const {
-            std::vector<const ImageStats*> out;
-            for (const ImageStats& s : photos) out.push_back(&s);
-            return out;
+    // Where a backlit photo clips (its pixels a summed render is not compared at: a render summed
+    // from parts cannot clip as the photo did, and a lamp behind the cloth often clips where it
+    // shines through), `image` with those pixels set to 0.
+    Image withoutClipped(size_t shot, Image image) const {
+        const float saturation = photoSaturation(shots_[shot].photo);
+        const Image& photo = shots_[shot].image;
+        for (size_t k = 0; k < image.pixels.size(); ++k) {
+            const glm::vec3& v = photo.pixels[k];
+            if (std::max({v.r, v.g, v.b}) >= kClipped * saturation) image.pixels[k] = glm::vec3(0.0f);
         }
-    };
-    BacklitStats backlitStats(const TransmissionParts& parts, const WovenParams* p) const {
-        BacklitStats stats;
-        const std::vector<Image> reference = p ? backlitRenders(parts, *p) : std::vector<Image>{};
-        for (size_t i = 0; i < shots_.size(); ++i) {
-            if (reflected_[i]) continue;
-            const float saturation = photoSaturation(shots_[i].photo);
-            const Image& photo = shots_[i].image;
-            const auto unclipped = [&](Image image) {
-                for (size_t k = 0; k < image.pixels.size(); ++k) {
-                    const glm::vec3& v = photo.pixels[k];
-                    if (std::max({v.r, v.g, v.b}) >= kClipped * saturation) image.pixels[k] = glm::vec3(0.0f);
-                }
-                return image;
-            };
-            const Image photoUnclipped = unclipped(photo);
-            std::array<Image, 2 * kTransmittedRegionCount> partsUnclipped;
-            for (size_t k = 0; k < partsUnclipped.size(); ++k) partsUnclipped[k] = unclipped(parts[i][k]);
-            ImageStats& ps = stats.photos.emplace_back();
-            ps.values[kStatBlockMeans] = blockMeans(photoUnclipped);
-            TransmissionStats& t = stats.parts.emplace_back();
-            for (size_t k = 0; k < partsUnclipped.size(); ++k) t.blockMeans[k] = blockMeans(partsUnclipped[k]);
-            const std::optional<ThreadGrid> grid = p ? renderGrid(*p, i) : std::nullopt;
-            if (!grid) continue;
-            ThreadGrid photoGrid = *photoGrids_[i];
-            photoGrid.period = grid->period;
-            ps.fold = foldTile(photoUnclipped, photoGrid);
-            std::vector<const Image*> images;
-            for (const Image& part : partsUnclipped) images.push_back(&part);
-            const std::vector<TileFold> folds = foldsLaidOn(ps.fold, unclipped(reference[i]), images, *grid);
-            std::copy(folds.begin(), folds.end(), t.folds.begin());
-        }
-        return stats;
+        return image;
     }
 
-    // The backlit shots' exposures, in the order backlitStats() keeps: each given one, else
+    // Each backlit shot's photo without its clipped pixels (withoutClipped()) and its statistics
+    // the transmission's solves compare (transmitted_colours.h): the block means, and the tile fold
+    // on the weave last tried (foldBacklitPhoto()).
+    struct BacklitPhoto {
+        size_t shot = 0;
+        Image image;
+        ImageStats stats;
+        int foldPeriod = 0;  // the weave's period stats.fold is folded on
+    };
+    void measureBacklitPhotos() {
+        for (size_t i = 0; i < shots_.size(); ++i) {
+            if (reflected_[i]) continue;
+            BacklitPhoto& b = backlitPhotos_.emplace_back();
+            b.shot = i;
+            b.image = withoutClipped(i, shots_[i].image);
+            b.stats.values[kStatBlockMeans] = blockMeans(b.image);
+        }
+    }
+    void foldBacklitPhoto(BacklitPhoto& b, int period) {
+        if (b.foldPeriod == period) return;
+        ThreadGrid grid = *photoGrids_[b.shot];
+        grid.period = period;
+        b.stats.fold = foldTile(b.image, grid);
+        b.foldPeriod = period;
+    }
+    std::vector<const ImageStats*> backlitPhotoStats() const {
+        std::vector<const ImageStats*> out;
+        for (const BacklitPhoto& b : backlitPhotos_) out.push_back(&b.stats);
+        return out;
+    }
+
+    // The backlit shots' parts, in backlitPhotos_'s order, without their photos' clipped pixels,
+    // and their statistics: the block means, and with foldBacklitParts() the tile folds.
+    struct BacklitParts {
+        std::vector<std::array<Image, 2 * kTransmittedRegionCount>> images;
+        std::vector<TransmissionStats> stats;
+    };
+    BacklitParts backlitParts(const TransmissionParts& parts) const {
+        BacklitParts out;
+        for (const BacklitPhoto& b : backlitPhotos_) {
+            std::array<Image, 2 * kTransmittedRegionCount>& images = out.images.emplace_back();
+            TransmissionStats& t = out.stats.emplace_back();
+            for (size_t k = 0; k < images.size(); ++k) {
+                images[k] = withoutClipped(b.shot, parts[b.shot][k]);
+                t.blockMeans[k] = blockMeans(images[k]);
+            }
+        }
+        return out;
+    }
+    // The parts' tile folds, laid on their photos' at the phase of p's backlit render (its
+    // transmission set), summed from `parts`.
+    void foldBacklitParts(BacklitParts& out, const TransmissionParts& parts, const WovenParams& p) {
+        const std::vector<Image> reference = backlitRenders(parts, p);
+        for (size_t j = 0; j < backlitPhotos_.size(); ++j) {
+            BacklitPhoto& b = backlitPhotos_[j];
+            const std::optional<ThreadGrid> grid = renderGrid(p, b.shot);
+            if (!grid) continue;
+            foldBacklitPhoto(b, grid->period);
+            std::vector<const Image*> images;
+            for (const Image& part : out.images[j]) images.push_back(&part);
+            const std::vector<TileFold> folds =
+                foldsLaidOn(b.stats.fold, withoutClipped(b.shot, reference[b.shot]), images, *grid);
+            std::copy(folds.begin(), folds.end(), out.stats[j].folds.begin());
+        }
+    }
+
+    // The backlit shots' exposures, in backlitPhotos_'s order: each given one, else
     // `shared` (none: the free one).
     std::vector<std::optional<double>> backlitExposures(std::optional<double> shared) const {
         std::vector<std::optional<double>> exposures;
@@ -608,12 +649,12 @@ private:
     }
 
     // The renders of p's colours at the basis's shape.
-    static std::vector<Image> mixture(const ColourBasis& basis, const WovenParams& p) {
+    static std::vector<Image> mixture(const ColourBasis& basis, const WovenParams& p, float rsScale = 1.0f) {
         std::vector<Image> images;
         for (const std::array<Image, 3>& b : basis) {
             images.push_back(b[2]);
             for (size_t i = 0; i < b[2].pixels.size(); ++i)
-                images.back().pixels[i] += p.weft_color * b[0].pixels[i] + p.warp_color * b[1].pixels[i];
+                images.back().pixels[i] = rsScale * b[2].pixels[i] + (p.weft_color * b[0].pixels[i] + p.warp_color * b[1].pixels[i]);
         }
         return images;
     }
@@ -716,7 +757,8 @@ private:
 
     // Stage 4's axes of fullAxes(), searched by BOBYQA: the shape, as the colours are solved at
     // each point. rs too where no exposure is free; a free exposure scales the gloss as it does
-    // the colours (a photo shows only exposure x rs), so rs is held there.
+    // the colours (a photo shows only exposure x rs), so rs is held there, or where backlit shots
+    // join, solved with the colours (solveWithBacklitShots()).
     std::vector<size_t> shapeAxes() const {
         std::vector<size_t> axes;
         for (size_t a = anyFree_ ? kRsAxis + 1 : kRsAxis; a < fullAxes().size(); ++a) axes.push_back(a);
@@ -787,11 +829,12 @@ private:
             const TransmissionParts parts = transmissionParts(p);
             if (cancel_.load()) return INFINITY;
             const ReflectedSolve reflected{photos, exposures, entryStats, colours, entryColours, allFree};
-            solveWithBacklitShots(p, entry, reflected, parts);
-            images = mixture(basis, p);
+            const float rsScale = float(solveWithBacklitShots(p, entry, reflected, parts));
+            images = mixture(basis, p, rsScale);
             const std::vector<Image> transmitted = backlitRenders(parts, p);
             for (size_t i = 0; i < shots_.size(); ++i)
                 if (!reflected_[i]) images[i] = transmitted[i];
+            p = withRsScaled(p, rsScale);
         }
         return evaluate(p, std::move(images), true);
     }
@@ -810,35 +853,52 @@ private:
     // p's colours, free exposure and transmission solved against the reflected and the backlit
     // shots together (transmitted_colours.h), from the reflected solve's colours and from
     // `entry`'s (p as evaluateSolvingColours() was given it), every fold laid at `entry`'s.
-    void solveWithBacklitShots(WovenParams& p, const WovenParams& entry, const ReflectedSolve& reflected,
+    // Returns the factor on rs solved with them (1 where the exposure is given).
+    double solveWithBacklitShots(WovenParams& p, const WovenParams& entry, const ReflectedSolve& reflected,
                                const TransmissionParts& parts) {
         // The backlit folds' reference: the entry, with the transmission solved at its colours.
         const std::optional<double> shared = reflected.allFree ? std::nullopt : std::optional<double>(result_.exposure);
         std::vector<double> exposures;
         for (const std::optional<double>& e : backlitExposures(shared)) exposures.push_back(e.value_or(reflected.entry.exposure));
-        const BacklitStats blockStats = backlitStats(parts, nullptr);
-        const TransmissionSplit first = solveTransmission(blockStats.photoPointers(), blockStats.parts, exposures,
+        BacklitParts backlit = backlitParts(parts);
+        const TransmissionSplit first = solveTransmission(backlitPhotoStats(), backlit.stats, exposures,
                                                           reflected.entry.weft, reflected.entry.warp);
         WovenParams reference = entry;
         reference.transmission = float(first.transmission());
         reference.transmission_gloss = float(first.gloss());
-        const BacklitStats foldStats = backlitStats(parts, &reference);
+        foldBacklitParts(backlit, parts, reference);
         LinearColours entryStart = reflected.entry;
         if (!reflected.allFree) entryStart.exposure = 1.0;
         const TransmittedColours joint =
-            solveColoursWithTransmission(reflected.photos, reflected.entryStats, reflected.exposures, foldStats.photoPointers(),
-                                         foldStats.parts, backlitExposures(shared), {reflected.last, entryStart});
+            solveColoursWithTransmission(reflected.photos, reflected.entryStats, reflected.exposures, backlitPhotoStats(),
+                                         backlit.stats, backlitExposures(shared), {reflected.last, entryStart});
         p.weft_color = glm::vec3(joint.colours.weft);
         p.warp_color = glm::vec3(joint.colours.warp);
         p.transmission = float(joint.split.transmission());
         p.transmission_gloss = float(joint.split.gloss());
+        return joint.rsScale;
+    }
+
+    // p, its colours and transmission solved at its rs, with rs scaled by `k` and the colours and
+    // the transmission rescaled so that p renders as it did with its R scaled by k: the diffuse
+    // reflection carries a factor 1 - rs (../shared/MODEL.md 4), exactly kept, and so does the
+    // light through the yarns (docs/MODEL_TRANSMISSION.md), kept but for its factor 1 - R_d
+    // (1 to 2 % at the factors of 1.1 to 1.3 the round trips solve).
+    static WovenParams withRsScaled(WovenParams p, float k) {
+        if (k == 1.0f) return p;
+        const float rs = std::clamp(p.rs * k, 0.0f, 1.0f), keep = (1.0f - p.rs) / (1.0f - rs);
+        p.weft_color = glm::min(p.weft_color * keep, glm::vec3(1.0f));
+        p.warp_color = glm::min(p.warp_color * keep, glm::vec3(1.0f));
+        p.transmission = std::min(p.transmission * keep, 1.0f);
+        p.rs = rs;
+        return p;
     }
 
     // Stage 4: BOBYQA over the shape from the best so far, the colours (and the transmission,
     // where backlit shots join reflected ones) solved at each point, again from where it stopped
     // while that gains (it stops where its trust region shrinks, often short of the minimum),
     // until the budget is spent. `shotRs`: the shot material's rs, held where an exposure is
-    // free. Returns the points it tried.
+    // free and no backlit shot joins. Returns the points it tried.
     int refine(float shotRs) {
         stage_ = transmitted_ ? "gloss, widths, bump, transmission" : "gloss, widths, bump";
         const std::vector<size_t> axes = shapeAxes();
@@ -846,7 +906,7 @@ private:
         for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
             before = result_.loss;
             WovenParams base = result_.params;
-            if (anyFree_) base.rs = shotRs;
+            if (anyFree_ && !transmitted_) base.rs = shotRs;
             const std::vector<double> full = encode(base);
             std::vector<double> x;
             for (size_t a : axes) x.push_back(full[a]);
@@ -858,6 +918,32 @@ private:
             points += minimise(x, objective, 0);
         }
         return points;
+    }
+
+    // Stage 5: the best fit rendered again at kPolishSamples times the samples, and with its
+    // colours (and transmission) solved once more from renders at those samples, the better of
+    // the two kept. Stage 4's best point is the one whose renders' noise lowered its loss the
+    // most, and its colours were solved from that noise (docs/FIT.md: over the pair at
+    // five render seeds it took the mean of the worst colour channel from 4.4 to 4.1 %, and from
+    // 7.4 to 6.6 % with rs held). Both are compared at the new samples, as a render's noise
+    // counts in the spectrum; the loss that stands is theirs.
+    void polishColours() {
+        if (!std::isfinite(result_.loss) || cancel_.load()) return;
+        FitResult before = result_;
+        const int samples = options_.render.spp;
+        options_.render.spp = samples * kPolishSamples;
+        result_.loss = INFINITY;
+        stage_ = "colours";
+        evaluate(before.params);
+        if (!cancel_.load()) evaluateSolvingColours(before.params);
+        options_.render.spp = samples;
+        if (cancel_.load() || !std::isfinite(result_.loss)) result_ = std::move(before);
+    }
+    // The renders polishColours() makes: the best fit's, then stage 4's at one point (the colour
+    // basis and the transmission's parts).
+    int polishRenders() const {
+        const int basis = whiteLight_ ? 1 : 3;
+        return 1 + basis + (transmitted_ ? (whiteLight_ ? 2 : 6) : 0);
     }
 
     // Stage 2 fits to the reflected shots alone (backlitLeftOut_), the best so far then compared
@@ -923,6 +1009,7 @@ private:
     bool transmitted_ = false;  // backlit shots beside reflected ones: the transmission is solved
     // Renders leave the backlit shots out (stage 2).
     bool backlitLeftOut_ = false;
+    std::vector<BacklitPhoto> backlitPhotos_;  // where transmitted_
 };
 
 }  // namespace

@@ -11,12 +11,14 @@
 //   3. the thread counts once more, the chosen weave's render's peaks against the photo's;
 //   4. gloss (ex, ey, and rs where no exposure is free), yarn widths and bump (cy) by NLopt's
 //      BOBYQA, the colours and a free exposure solved in closed form at each point from the same
-//      mixtures (linear_colours.h), until the time budget is spent.
+//      mixtures (linear_colours.h), until the time budget is spent (less what stage 5 costs);
+//   5. the colours solved once more at the best shape from renders at 4 times the samples.
 // Where some shots are lit from behind (Shot::backlit) and others not, each point of stage 4
 // also renders the backlit shots' six parts (transmitted_colours.h: the weft alone, the warp
 // alone and their crossings, each with the transmission's diffuse and glossy part, in two
 // renders under white light), and the colours, the exposure and the transmission
-// (transmission, transmission_gloss) are solved against every shot together.
+// (transmission, transmission_gloss) are solved against every shot together, with rs where the
+// exposure is free.
 // The best parameters met are kept throughout: a cancelled or timed-out fit returns them.
 #include <atomic>
 #include <functional>

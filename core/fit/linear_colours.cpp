@@ -112,10 +112,10 @@ LinearColours solveColours(const std::vector<const ImageStats*>& photos, const s
 
 double colourResidual(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
                       const std::vector<std::optional<double>>& exposures, const glm::dvec3& weft, const glm::dvec3& warp,
-                      double exposure) {
+                      double exposure, double gloss) {
     const bool free = !exposures.empty() && !exposures[0];
     const double e = free ? exposure : 1.0;
-    const std::array<double, kMaxUnknowns> x{e * weft.r, e * weft.g, e * weft.b, e * warp.r, e * warp.g, e * warp.b, e};
+    const std::array<double, kMaxUnknowns> x{e * weft.r, e * weft.g, e * weft.b, e * warp.r, e * warp.g, e * warp.b, e * gloss};
     double sum = 0.0;
     forEachResidual(photos, renders, exposures, [&](const std::array<double, kMaxUnknowns>& row, double rhs, double weight) {
         double d = -rhs;

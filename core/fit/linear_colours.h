@@ -36,9 +36,9 @@ LinearColours solveColours(const std::vector<const ImageStats*>& photos, const s
                            const std::vector<std::optional<double>>& exposures);
 
 // The weighted sum of squares solveColours() minimises, at the given colours and free exposure
-// (ignored where every exposure is given).
+// (ignored where every exposure is given), R scaled by `gloss` where the exposure is free.
 double colourResidual(const std::vector<const ImageStats*>& photos, const std::vector<LinearStats>& renders,
                       const std::vector<std::optional<double>>& exposures, const glm::dvec3& weft, const glm::dvec3& warp,
-                      double exposure);
+                      double exposure, double gloss = 1.0);
 
 }  // namespace woven

@@ -15,11 +15,14 @@ namespace {
 
 // The colours' range, as stage 4's axes have it (fabric_fit.cpp).
 constexpr double kLeastColour = 0.002, kMostColour = 1.0;
-// BOBYQA's evaluations: each costs some hundred multiplications, no render; enough for 7 unknowns
-// to converge (2n + 1 = 15 set up its model).
+// BOBYQA's evaluations: each costs some hundred multiplications, no render; enough for 8 unknowns
+// to converge (2n + 1 = 17 set up its model).
 constexpr int kEvaluations = 800;
 // How far from the reflected solve's a free exposure is searched, as a factor either way.
 constexpr double kExposureRange = 4.0;
+// How far rs's factor is searched, either way, as the exposure: the reflected shots' renders are
+// at the shot material's rs (0.04 by default) or at the best fit's.
+constexpr double kRsRange = 4.0;
 
 // Each backlit residual at the colours, as (d, g, rhs, weight): the render's statistic over the
 // photo's scale of its channel is T_d d + T_g g, the photo's rhs.
@@ -120,29 +123,32 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
         for (const std::optional<double>& b : backlitExposures) e.push_back(b.value_or(free ? exposure : 1.0));
         return e;
     };
-    const auto objective = [&](const glm::dvec3& weft, const glm::dvec3& warp, double exposure) {
+    const auto objective = [&](const glm::dvec3& weft, const glm::dvec3& warp, double exposure, double rsScale) {
         const std::vector<double> e = backlitExposuresAt(exposure);
         const TransmissionSplit split = solveTransmission(backlitPhotos, backlit, e, weft, warp);
-        return colourResidual(reflectedPhotos, reflected, reflectedExposures, weft, warp, exposure) +
+        return colourResidual(reflectedPhotos, reflected, reflectedExposures, weft, warp, exposure, rsScale) +
                backlitResidual(backlitPhotos, backlit, e, weft, warp, split);
     };
     TransmittedColours best;
     double bestValue = INFINITY;
     for (const LinearColours& start : starts) {
-        // x: the six colours on [kLeastColour, kMostColour], then a free exposure in log10 about
-        // the start's.
+        // x: the six colours on [kLeastColour, kMostColour], then a free exposure and rs's factor,
+        // each in log10 about the start's.
         const auto colour = [](double u) { return kLeastColour + std::clamp(u, 0.0, 1.0) * (kMostColour - kLeastColour); };
         const auto unit = [](double c) { return std::clamp((c - kLeastColour) / (kMostColour - kLeastColour), 0.0, 1.0); };
         const auto exposure = [&](const std::vector<double>& x) {
             return free ? start.exposure * std::pow(kExposureRange, 2.0 * std::clamp(x[6], 0.0, 1.0) - 1.0) : start.exposure;
         };
+        const auto rsScale = [&](const std::vector<double>& x) {
+            return free ? std::pow(kRsRange, 2.0 * std::clamp(x[7], 0.0, 1.0) - 1.0) : 1.0;
+        };
         const std::function<double(const std::vector<double>&)> f = [&](const std::vector<double>& x) {
             return objective({colour(x[0]), colour(x[1]), colour(x[2])}, {colour(x[3]), colour(x[4]), colour(x[5])},
-                             exposure(x));
+                             exposure(x), rsScale(x));
         };
         std::vector<double> x{unit(start.weft.r), unit(start.weft.g), unit(start.weft.b),
                               unit(start.warp.r), unit(start.warp.g), unit(start.warp.b)};
-        if (free) x.push_back(0.5);
+        if (free) x.insert(x.end(), {0.5, 0.5});
         nlopt::opt opt(nlopt::LN_BOBYQA, unsigned(x.size()));
         opt.set_lower_bounds(std::vector<double>(x.size(), 0.0));
         opt.set_upper_bounds(std::vector<double>(x.size(), 1.0));
@@ -162,6 +168,7 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
         best.colours.weft = {colour(x[0]), colour(x[1]), colour(x[2])};
         best.colours.warp = {colour(x[3]), colour(x[4]), colour(x[5])};
         best.colours.exposure = exposure(x);
+        best.rsScale = rsScale(x);
         best.colours.valid = true;
         best.split = solveTransmission(backlitPhotos, backlit, backlitExposuresAt(best.colours.exposure), best.colours.weft,
                                        best.colours.warp);

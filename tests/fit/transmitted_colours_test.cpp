@@ -105,6 +105,83 @@ TEST(TransmittedColours, TheBacklitShotTellsTheColoursFromTheGloss) {
     EXPECT_NEAR(fit.colours.exposure / truth.exposure, 1.0, 0.01);
     EXPECT_NEAR(fit.split.transmission(), 0.5, 0.01);
     EXPECT_NEAR(fit.split.gloss(), 0.3, 0.01);
+    EXPECT_NEAR(fit.rsScale, 1.0, 0.01);
+}
+
+// The reflected renders made at an rs 0.8 times the truth's (the shot material's 0.04 for cloth's
+// 0.05): the reflected shot alone is met exactly by the colours 0.8 times the truth's at an
+// exposure 1.25 times, with R unscaled, and by the truth with R scaled 1.25 times. The backlit shot
+// tells them apart.
+TEST(TransmittedColours, TheBacklitShotTellsRsFromTheExposure) {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> share(0.1f, 1.0f);
+    const Truth truth;
+    constexpr double kRsScale = 1.25;
+    LinearStats reflected;
+    ImageStats reflectedPhoto;
+    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
+    reflectedPhoto.values[kStatBlockMeans].resize(kEntries);
+    for (size_t b = 0; b < kEntries; b += 3) {
+        const float weft = share(rng), warp = share(rng), gloss = 0.2f * share(rng);
+        for (size_t c = 0; c < 3; ++c) {
+            reflected.blockMeans[0][b + c] = weft;
+            reflected.blockMeans[1][b + c] = warp;
+            reflected.blockMeans[2][b + c] = gloss;
+            reflectedPhoto.values[kStatBlockMeans][b + c] =
+                float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + kRsScale * gloss));
+        }
+    }
+    TransmissionStats parts;
+    ImageStats backlitPhoto;
+    backlitShot(truth, rng, parts, backlitPhoto);
+
+    LinearColours start;
+    start.exposure = kRsScale * truth.exposure;
+    start.weft = truth.weft / kRsScale;
+    start.warp = truth.warp / kRsScale;
+    const std::vector<std::optional<double>> free{std::nullopt};
+    const TransmittedColours fit =
+        solveColoursWithTransmission({&reflectedPhoto}, {reflected}, free, {&backlitPhoto}, {parts}, free, {start});
+    ASSERT_TRUE(fit.colours.valid);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(fit.colours.weft[c] / truth.weft[c], 1.0, 0.01) << "weft channel " << c;
+        EXPECT_NEAR(fit.colours.warp[c] / truth.warp[c], 1.0, 0.01) << "warp channel " << c;
+    }
+    EXPECT_NEAR(fit.colours.exposure / truth.exposure, 1.0, 0.01);
+    EXPECT_NEAR(fit.rsScale / kRsScale, 1.0, 0.01);
+    EXPECT_NEAR(fit.split.transmission(), 0.5, 0.01);
+}
+
+// With every exposure given, R is the renders' own: rs is then one of stage 4's axes.
+TEST(TransmittedColours, TheRsScaleIsOneWhereTheExposureIsGiven) {
+    std::mt19937 rng(13);
+    const Truth truth;
+    LinearStats reflected;
+    ImageStats reflectedPhoto;
+    std::uniform_real_distribution<float> share(0.1f, 1.0f);
+    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
+    reflectedPhoto.values[kStatBlockMeans].resize(kEntries);
+    for (size_t b = 0; b < kEntries; b += 3) {
+        const float weft = share(rng), warp = share(rng), gloss = 0.2f * share(rng);
+        for (size_t c = 0; c < 3; ++c) {
+            reflected.blockMeans[0][b + c] = weft;
+            reflected.blockMeans[1][b + c] = warp;
+            reflected.blockMeans[2][b + c] = gloss;
+            reflectedPhoto.values[kStatBlockMeans][b + c] =
+                float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + 1.5 * gloss));
+        }
+    }
+    TransmissionStats parts;
+    ImageStats backlitPhoto;
+    backlitShot(truth, rng, parts, backlitPhoto);
+    LinearColours start;
+    start.weft = truth.weft;
+    start.warp = truth.warp;
+    const std::vector<std::optional<double>> given{truth.exposure};
+    const TransmittedColours fit =
+        solveColoursWithTransmission({&reflectedPhoto}, {reflected}, given, {&backlitPhoto}, {parts}, given, {start});
+    ASSERT_TRUE(fit.colours.valid);
+    EXPECT_EQ(fit.rsScale, 1.0);
 }
 
 }  // namespace
