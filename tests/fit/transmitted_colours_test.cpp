@@ -2,6 +2,7 @@
 // statistics made from known colours, so that the answer is known exactly.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 #include "transmitted_colours.h"
@@ -33,6 +34,44 @@ void backlitShot(const Truth& truth, std::mt19937& rng, TransmissionStats& parts
             p[i] += float(truth.exposure * tau[size_t(r)][int(i % 3)] *
                           (truth.diffuse * parts.blockMeans[size_t(r)][i] +
                            truth.glossy * parts.blockMeans[size_t(kTransmittedRegionCount + r)][i]));
+}
+
+// A reflected shot's K_weft, K_warp and R, each block's drawn at random (fixed seed), R grey as
+// `gloss` makes it from the weft's and the warp's draws and one more, and the photo they make at
+// the truth with R scaled by `rsScale`.
+void reflectedShot(const Truth& truth, std::mt19937& rng, const std::function<float(float, float, float)>& gloss,
+                   double rsScale, LinearStats& reflected, ImageStats& photo) {
+    std::uniform_real_distribution<float> share(0.1f, 1.0f);
+    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
+    std::vector<float>& p = photo.values[kStatBlockMeans];
+    p.resize(kEntries);
+    for (size_t b = 0; b < kEntries; b += 3) {
+        const float weft = share(rng), warp = share(rng), r = gloss(weft, warp, share(rng));
+        for (size_t c = 0; c < 3; ++c) {
+            reflected.blockMeans[0][b + c] = weft;
+            reflected.blockMeans[1][b + c] = warp;
+            reflected.blockMeans[2][b + c] = r;
+            p[b + c] = float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + rsScale * r));
+        }
+    }
+}
+
+// The joint solve of one reflected and one backlit shot, the exposure free, from `start`.
+TransmittedColours solveFree(const LinearStats& reflected, const ImageStats& reflectedPhoto,
+                             const TransmissionStats& parts, const ImageStats& backlitPhoto, const LinearColours& start) {
+    const std::vector<std::optional<double>> free{std::nullopt};
+    return solveColoursWithTransmission({&reflectedPhoto}, {reflected}, free, {&backlitPhoto}, {parts}, free, {start});
+}
+
+// The colours, the exposure and t within 1 % of the truth's.
+void expectTruth(const TransmittedColours& fit, const Truth& truth) {
+    ASSERT_TRUE(fit.colours.valid);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(fit.colours.weft[c] / truth.weft[c], 1.0, 0.01) << "weft channel " << c;
+        EXPECT_NEAR(fit.colours.warp[c] / truth.warp[c], 1.0, 0.01) << "warp channel " << c;
+    }
+    EXPECT_NEAR(fit.colours.exposure / truth.exposure, 1.0, 0.01);
+    EXPECT_NEAR(fit.split.transmission(), 0.5, 0.01);
 }
 
 TEST(TransmittedColours, TheCrossingPassesTheSmallerOfTheTwoYarnsPerChannel) {
@@ -68,22 +107,11 @@ TEST(TransmittedColours, TheTransmissionOfKnownColoursIsSolvedExactly) {
 // unique answer; the backlit shot's hue, (R_d / max R_d)^2, tells the points of that line apart.
 TEST(TransmittedColours, TheBacklitShotTellsTheColoursFromTheGloss) {
     std::mt19937 rng(11);
-    std::uniform_real_distribution<float> share(0.1f, 1.0f);
     const Truth truth;
     LinearStats reflected;
     ImageStats reflectedPhoto;
-    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
-    reflectedPhoto.values[kStatBlockMeans].resize(kEntries);
-    for (size_t b = 0; b < kEntries; b += 3) {
-        const float weft = share(rng), warp = share(rng);
-        for (size_t c = 0; c < 3; ++c) {
-            reflected.blockMeans[0][b + c] = weft;
-            reflected.blockMeans[1][b + c] = warp;
-            reflected.blockMeans[2][b + c] = 0.2f * (weft + warp);
-            reflectedPhoto.values[kStatBlockMeans][b + c] =
-                float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + 0.2 * (weft + warp)));
-        }
-    }
+    reflectedShot(truth, rng, [](float weft, float warp, float) { return 0.2f * (weft + warp); }, 1.0, reflected,
+                  reflectedPhoto);
     TransmissionStats parts;
     ImageStats backlitPhoto;
     backlitShot(truth, rng, parts, backlitPhoto);
@@ -94,16 +122,8 @@ TEST(TransmittedColours, TheBacklitShotTellsTheColoursFromTheGloss) {
     start.exposure = 1.3 * truth.exposure;
     start.weft = (truth.weft + 0.2) / 1.3 - 0.2;
     start.warp = glm::max((truth.warp + 0.2) / 1.3 - 0.2, glm::dvec3(0.002));
-    const std::vector<std::optional<double>> free{std::nullopt};
-    const TransmittedColours fit =
-        solveColoursWithTransmission({&reflectedPhoto}, {reflected}, free, {&backlitPhoto}, {parts}, free, {start});
-    ASSERT_TRUE(fit.colours.valid);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(fit.colours.weft[c] / truth.weft[c], 1.0, 0.01) << "weft channel " << c;
-        EXPECT_NEAR(fit.colours.warp[c] / truth.warp[c], 1.0, 0.01) << "warp channel " << c;
-    }
-    EXPECT_NEAR(fit.colours.exposure / truth.exposure, 1.0, 0.01);
-    EXPECT_NEAR(fit.split.transmission(), 0.5, 0.01);
+    const TransmittedColours fit = solveFree(reflected, reflectedPhoto, parts, backlitPhoto, start);
+    expectTruth(fit, truth);
     EXPECT_NEAR(fit.split.gloss(), 0.3, 0.01);
     EXPECT_NEAR(fit.rsScale, 1.0, 0.01);
 }
@@ -114,23 +134,11 @@ TEST(TransmittedColours, TheBacklitShotTellsTheColoursFromTheGloss) {
 // tells them apart.
 TEST(TransmittedColours, TheBacklitShotTellsRsFromTheExposure) {
     std::mt19937 rng(12);
-    std::uniform_real_distribution<float> share(0.1f, 1.0f);
     const Truth truth;
     constexpr double kRsScale = 1.25;
     LinearStats reflected;
     ImageStats reflectedPhoto;
-    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
-    reflectedPhoto.values[kStatBlockMeans].resize(kEntries);
-    for (size_t b = 0; b < kEntries; b += 3) {
-        const float weft = share(rng), warp = share(rng), gloss = 0.2f * share(rng);
-        for (size_t c = 0; c < 3; ++c) {
-            reflected.blockMeans[0][b + c] = weft;
-            reflected.blockMeans[1][b + c] = warp;
-            reflected.blockMeans[2][b + c] = gloss;
-            reflectedPhoto.values[kStatBlockMeans][b + c] =
-                float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + kRsScale * gloss));
-        }
-    }
+    reflectedShot(truth, rng, [](float, float, float r) { return 0.2f * r; }, kRsScale, reflected, reflectedPhoto);
     TransmissionStats parts;
     ImageStats backlitPhoto;
     backlitShot(truth, rng, parts, backlitPhoto);
@@ -139,17 +147,9 @@ TEST(TransmittedColours, TheBacklitShotTellsRsFromTheExposure) {
     start.exposure = kRsScale * truth.exposure;
     start.weft = truth.weft / kRsScale;
     start.warp = truth.warp / kRsScale;
-    const std::vector<std::optional<double>> free{std::nullopt};
-    const TransmittedColours fit =
-        solveColoursWithTransmission({&reflectedPhoto}, {reflected}, free, {&backlitPhoto}, {parts}, free, {start});
-    ASSERT_TRUE(fit.colours.valid);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(fit.colours.weft[c] / truth.weft[c], 1.0, 0.01) << "weft channel " << c;
-        EXPECT_NEAR(fit.colours.warp[c] / truth.warp[c], 1.0, 0.01) << "warp channel " << c;
-    }
-    EXPECT_NEAR(fit.colours.exposure / truth.exposure, 1.0, 0.01);
+    const TransmittedColours fit = solveFree(reflected, reflectedPhoto, parts, backlitPhoto, start);
+    expectTruth(fit, truth);
     EXPECT_NEAR(fit.rsScale / kRsScale, 1.0, 0.01);
-    EXPECT_NEAR(fit.split.transmission(), 0.5, 0.01);
 }
 
 // With every exposure given, R is the renders' own: rs is then one of stage 4's axes.
@@ -158,19 +158,7 @@ TEST(TransmittedColours, TheRsScaleIsOneWhereTheExposureIsGiven) {
     const Truth truth;
     LinearStats reflected;
     ImageStats reflectedPhoto;
-    std::uniform_real_distribution<float> share(0.1f, 1.0f);
-    for (std::vector<float>& k : reflected.blockMeans) k.resize(kEntries);
-    reflectedPhoto.values[kStatBlockMeans].resize(kEntries);
-    for (size_t b = 0; b < kEntries; b += 3) {
-        const float weft = share(rng), warp = share(rng), gloss = 0.2f * share(rng);
-        for (size_t c = 0; c < 3; ++c) {
-            reflected.blockMeans[0][b + c] = weft;
-            reflected.blockMeans[1][b + c] = warp;
-            reflected.blockMeans[2][b + c] = gloss;
-            reflectedPhoto.values[kStatBlockMeans][b + c] =
-                float(truth.exposure * (truth.weft[int(c)] * weft + truth.warp[int(c)] * warp + 1.5 * gloss));
-        }
-    }
+    reflectedShot(truth, rng, [](float, float, float r) { return 0.2f * r; }, 1.5, reflected, reflectedPhoto);
     TransmissionStats parts;
     ImageStats backlitPhoto;
     backlitShot(truth, rng, parts, backlitPhoto);
