@@ -54,9 +54,9 @@ constexpr double kRestartGain = 1e-3;
 // Closed-form colour solves at each point of stage 4: the fold's phase and shift come from the
 // colours before the solve, so a second solve from the first's colours lays the folds right.
 constexpr int kColourSolves = 2;
-// Stage 5's samples a pixel, as a multiple of the fit's (polishColours()): its renders (five for
-// a flash and a backlit shot) at 4 times the samples cost about 20 of stage 4's, 8 % of the
-// round trips' 250.
+// Stage 5's samples a pixel, as a multiple of the fit's (polishColours()): its five images of a
+// shot (for a flash and a backlit shot) at 4 times the samples cost about 20 of stage 4's, 8 % of
+// the round trips' 250.
 constexpr int kPolishSamples = 4;
 // A photo's pixel clips where a channel reaches this share of its saturation (8 bits: 255).
 constexpr float kClipped = 0.999f;
@@ -155,6 +155,7 @@ public:
         bool anyReflected = false;
         for (const Shot& s : shots_) anyReflected = anyReflected || !s.backlit;
         for (const Shot& s : shots_) reflected_.push_back(!s.backlit || !anyReflected);
+        for (size_t i = 0; i < shots_.size(); ++i) allReflectedFree_ = allReflectedFree_ && (!reflected_[i] || !shots_[i].photo.exposure);
         transmitted_ = anyReflected && std::find(reflected_.begin(), reflected_.end(), false) != reflected_.end();
     }
 
@@ -214,10 +215,10 @@ private:
 
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
     // The time budget is spent when what is left would only pay for polishColours(): its renders
-    // at kPolishSamples times the samples, at the mean time a render has taken so far.
+    // of a shot at kPolishSamples times the samples, at the mean time one has taken so far.
     bool stop() const {
         const double t = elapsed();
-        const double polish = result_.evaluations > 0 ? t / result_.evaluations * kPolishSamples * polishRenders() : 0.0;
+        const double polish = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ * kPolishSamples * polishShotRenders() : 0.0;
         return cancel_.load() || t + polish >= options_.seconds ||
                (options_.renders > 0 && result_.evaluations >= options_.renders);
     }
@@ -238,7 +239,10 @@ private:
         std::vector<Image> images(shots_.size());
         for (size_t i = 0; i < shots_.size(); ++i) {
             if ((!which.empty() && !which[i]) || (backlitLeftOut_ && !reflected_[i])) continue;
+            const Clock::time_point start = Clock::now();
             images[i] = renderShot(renderShots_[i], p, options_.render, cancel_);
+            renderSeconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+            ++shotRenders_;
             applyVignette(images[i], shots_[i].photo.vignetteSigmaPx);
         }
         ++result_.evaluations;
@@ -467,34 +471,31 @@ private:
         return images;
     }
 
-    // Where a backlit photo clips (its pixels a summed render is not compared at: a render summed
-    // from parts cannot clip as the photo did, and a lamp behind the cloth often clips where it
-    // shines through), `image` with those pixels set to 0.
-    Image withoutClipped(size_t shot, Image image) const {
-        const float saturation = photoSaturation(shots_[shot].photo);
-        const Image& photo = shots_[shot].image;
-        for (size_t k = 0; k < image.pixels.size(); ++k) {
-            const glm::vec3& v = photo.pixels[k];
-            if (std::max({v.r, v.g, v.b}) >= kClipped * saturation) image.pixels[k] = glm::vec3(0.0f);
-        }
-        return image;
-    }
-
-    // Each backlit shot's photo without its clipped pixels (withoutClipped()) and its statistics
+    // Each backlit shot's photo without the pixels it clips (withoutClipped()) and its statistics
     // the transmission's solves compare (transmitted_colours.h): the block means, and the tile fold
-    // on the weave last tried (foldBacklitPhoto()).
+    // on the weave last tried (foldBacklitPhoto()). A render summed from parts cannot clip as the
+    // photo did, and a lamp behind the cloth often clips where it shines through, so those pixels
+    // are compared nowhere.
     struct BacklitPhoto {
         size_t shot = 0;
+        std::vector<bool> clipped;  // per pixel
         Image image;
         ImageStats stats;
         int foldPeriod = 0;  // the weave's period stats.fold is folded on
+        Image withoutClipped(Image other) const {
+            for (size_t k = 0; k < other.pixels.size(); ++k)
+                if (clipped[k]) other.pixels[k] = glm::vec3(0.0f);
+            return other;
+        }
     };
     void measureBacklitPhotos() {
         for (size_t i = 0; i < shots_.size(); ++i) {
             if (reflected_[i]) continue;
             BacklitPhoto& b = backlitPhotos_.emplace_back();
             b.shot = i;
-            b.image = withoutClipped(i, shots_[i].image);
+            const float saturation = photoSaturation(shots_[i].photo);
+            for (const glm::vec3& v : shots_[i].image.pixels) b.clipped.push_back(std::max({v.r, v.g, v.b}) >= kClipped * saturation);
+            b.image = b.withoutClipped(shots_[i].image);
             b.stats.values[kStatBlockMeans] = blockMeans(b.image);
         }
     }
@@ -523,7 +524,7 @@ private:
             std::array<Image, 2 * kTransmittedRegionCount>& images = out.images.emplace_back();
             TransmissionStats& t = out.stats.emplace_back();
             for (size_t k = 0; k < images.size(); ++k) {
-                images[k] = withoutClipped(b.shot, parts[b.shot][k]);
+                images[k] = b.withoutClipped(parts[b.shot][k]);
                 t.blockMeans[k] = blockMeans(images[k]);
             }
         }
@@ -541,7 +542,7 @@ private:
             std::vector<const Image*> images;
             for (const Image& part : out.images[j]) images.push_back(&part);
             const std::vector<TileFold> folds =
-                foldsLaidOn(b.stats.fold, withoutClipped(b.shot, reference[b.shot]), images, *grid);
+                foldsLaidOn(b.stats.fold, b.withoutClipped(reference[b.shot]), images, *grid);
             std::copy(folds.begin(), folds.end(), out.stats[j].folds.begin());
         }
     }
@@ -648,7 +649,7 @@ private:
         return basis;
     }
 
-    // The renders of p's colours at the basis's shape.
+    // The renders of p's colours at the basis's shape, its gloss R scaled by `rsScale`.
     static std::vector<Image> mixture(const ColourBasis& basis, const WovenParams& p, float rsScale = 1.0f) {
         std::vector<Image> images;
         for (const std::array<Image, 3>& b : basis) {
@@ -755,10 +756,16 @@ private:
         return p;
     }
 
+    // Where rs is solved with the colours, the exposure and the transmission under a free exposure
+    // (solveColoursWithTransmission()): backlit shots join reflected ones, every reflected shot's
+    // exposure is free (else rs is a product with the exposure in some shots only), and one render
+    // makes the colour basis, so that its R is the gloss alone, which rs scales.
+    bool rsSolvedWithColours() const { return transmitted_ && allReflectedFree_ && whiteLight_; }
+
     // Stage 4's axes of fullAxes(), searched by BOBYQA: the shape, as the colours are solved at
     // each point. rs too where no exposure is free; a free exposure scales the gloss as it does
-    // the colours (a photo shows only exposure x rs), so rs is held there, or where backlit shots
-    // join, solved with the colours (solveWithBacklitShots()).
+    // the colours (a photo shows only exposure x rs), so rs is held there, or solved with the
+    // colours where rsSolvedWithColours().
     std::vector<size_t> shapeAxes() const {
         std::vector<size_t> axes;
         for (size_t a = anyFree_ ? kRsAxis + 1 : kRsAxis; a < fullAxes().size(); ++a) axes.push_back(a);
@@ -777,8 +784,6 @@ private:
         if (cancel_.load()) return INFINITY;
         // Where only some exposures are free, the free one is held at its best so far: the
         // colours and the exposure are then a product only in the free shots.
-        bool allFree = true;
-        for (size_t i = 0; i < shots_.size(); ++i) allFree = allFree && (!reflected_[i] || !shots_[i].photo.exposure);
         std::vector<std::optional<double>> exposures;
         std::vector<const ImageStats*> photos;
         std::vector<size_t> solved;  // the shots the colours are solved from
@@ -786,8 +791,8 @@ private:
             if (!reflected_[i]) continue;
             const Shot& s = shots_[i];
             exposures.push_back(s.photo.exposure ? std::optional<double>(*s.photo.exposure)
-                                : allFree         ? std::nullopt
-                                                  : std::optional<double>(result_.exposure));
+                                : allReflectedFree_ ? std::nullopt
+                                                    : std::optional<double>(result_.exposure));
             photos.push_back(&photoStats_[i]);
             solved.push_back(i);
         }
@@ -828,13 +833,13 @@ private:
         if (transmitted_ && !backlitLeftOut_) {
             const TransmissionParts parts = transmissionParts(p);
             if (cancel_.load()) return INFINITY;
-            const ReflectedSolve reflected{photos, exposures, entryStats, colours, entryColours, allFree};
-            const float rsScale = float(solveWithBacklitShots(p, entry, reflected, parts));
-            images = mixture(basis, p, rsScale);
+            const ReflectedSolve reflected{photos, exposures, entryStats, colours, entryColours};
+            const WovenParams scaled = withRsScaled(p, float(solveWithBacklitShots(p, entry, reflected, parts)));
+            images = mixture(basis, p, scaled.rs / p.rs);
             const std::vector<Image> transmitted = backlitRenders(parts, p);
             for (size_t i = 0; i < shots_.size(); ++i)
                 if (!reflected_[i]) images[i] = transmitted[i];
-            p = withRsScaled(p, rsScale);
+            p = scaled;
         }
         return evaluate(p, std::move(images), true);
     }
@@ -847,17 +852,16 @@ private:
         std::vector<std::optional<double>> exposures;
         std::vector<LinearStats> entryStats;
         LinearColours last, entry;
-        bool allFree = true;
     };
 
     // p's colours, free exposure and transmission solved against the reflected and the backlit
     // shots together (transmitted_colours.h), from the reflected solve's colours and from
     // `entry`'s (p as evaluateSolvingColours() was given it), every fold laid at `entry`'s.
-    // Returns the factor on rs solved with them (1 where the exposure is given).
+    // Returns the factor on rs solved with them (1 where rsSolvedWithColours() is false).
     double solveWithBacklitShots(WovenParams& p, const WovenParams& entry, const ReflectedSolve& reflected,
                                const TransmissionParts& parts) {
         // The backlit folds' reference: the entry, with the transmission solved at its colours.
-        const std::optional<double> shared = reflected.allFree ? std::nullopt : std::optional<double>(result_.exposure);
+        const std::optional<double> shared = allReflectedFree_ ? std::nullopt : std::optional<double>(result_.exposure);
         std::vector<double> exposures;
         for (const std::optional<double>& e : backlitExposures(shared)) exposures.push_back(e.value_or(reflected.entry.exposure));
         BacklitParts backlit = backlitParts(parts);
@@ -868,10 +872,11 @@ private:
         reference.transmission_gloss = float(first.gloss());
         foldBacklitParts(backlit, parts, reference);
         LinearColours entryStart = reflected.entry;
-        if (!reflected.allFree) entryStart.exposure = 1.0;
+        if (!allReflectedFree_) entryStart.exposure = 1.0;
         const TransmittedColours joint =
             solveColoursWithTransmission(reflected.photos, reflected.entryStats, reflected.exposures, backlitPhotoStats(),
-                                         backlit.stats, backlitExposures(shared), {reflected.last, entryStart});
+                                         backlit.stats, backlitExposures(shared), {reflected.last, entryStart},
+                                         rsSolvedWithColours());
         p.weft_color = glm::vec3(joint.colours.weft);
         p.warp_color = glm::vec3(joint.colours.warp);
         p.transmission = float(joint.split.transmission());
@@ -879,14 +884,16 @@ private:
         return joint.rsScale;
     }
 
-    // p, its colours and transmission solved at its rs, with rs scaled by `k` and the colours and
-    // the transmission rescaled so that p renders as it did with its R scaled by k: the diffuse
-    // reflection carries a factor 1 - rs (../shared/MODEL.md 4), exactly kept, and so does the
-    // light through the yarns (docs/MODEL_TRANSMISSION.md), kept but for its factor 1 - R_d
-    // (1 to 2 % at the factors of 1.1 to 1.3 the round trips solve).
+    // p, its colours and transmission solved at its rs, with rs scaled by `k` (within its axis) and
+    // the colours and the transmission rescaled so that p renders nearly as it did with its R
+    // scaled by as much. The diffuse reflection carries a factor 1 - rs (../shared/MODEL.md 4),
+    // kept exactly, and so does the light through the yarns (docs/MODEL_TRANSMISSION.md), kept but
+    // for its factor 1 - R_d (1 to 2 % at the factors of 1.1 to 1.3 the round trips solve). R
+    // itself is rs's but for Schlick's (1 - rs)(1 - h.k)^5, small for a flash beside the lens.
     static WovenParams withRsScaled(WovenParams p, float k) {
-        if (k == 1.0f) return p;
-        const float rs = std::clamp(p.rs * k, 0.0f, 1.0f), keep = (1.0f - p.rs) / (1.0f - rs);
+        const Axis& axis = fullAxes()[kRsAxis];
+        if (k == 1.0f || !(p.rs > 0.0f)) return p;
+        const float rs = float(axis.value(axis.unit(double(p.rs * k)))), keep = (1.0f - p.rs) / (1.0f - rs);
         p.weft_color = glm::min(p.weft_color * keep, glm::vec3(1.0f));
         p.warp_color = glm::min(p.warp_color * keep, glm::vec3(1.0f));
         p.transmission = std::min(p.transmission * keep, 1.0f);
@@ -898,7 +905,7 @@ private:
     // where backlit shots join reflected ones) solved at each point, again from where it stopped
     // while that gains (it stops where its trust region shrinks, often short of the minimum),
     // until the budget is spent. `shotRs`: the shot material's rs, held where an exposure is
-    // free and no backlit shot joins. Returns the points it tried.
+    // free, unless rsSolvedWithColours(). Returns the points it tried.
     int refine(float shotRs) {
         stage_ = transmitted_ ? "gloss, widths, bump, transmission" : "gloss, widths, bump";
         const std::vector<size_t> axes = shapeAxes();
@@ -906,7 +913,7 @@ private:
         for (double before = INFINITY; result_.loss < before * (1.0 - kRestartGain) && !stop();) {
             before = result_.loss;
             WovenParams base = result_.params;
-            if (anyFree_ && !transmitted_) base.rs = shotRs;
+            if (anyFree_ && !rsSolvedWithColours()) base.rs = shotRs;
             const std::vector<double> full = encode(base);
             std::vector<double> x;
             for (size_t a : axes) x.push_back(full[a]);
@@ -939,11 +946,12 @@ private:
         options_.render.spp = samples;
         if (cancel_.load() || !std::isfinite(result_.loss)) result_ = std::move(before);
     }
-    // The renders polishColours() makes: the best fit's, then stage 4's at one point (the colour
-    // basis and the transmission's parts).
-    int polishRenders() const {
-        const int basis = whiteLight_ ? 1 : 3;
-        return 1 + basis + (transmitted_ ? (whiteLight_ ? 2 : 6) : 0);
+    // The renders of a shot polishColours() makes: the best fit's of every shot, then stage 4's
+    // at one point (the reflected shots' colour basis and the backlit shots' parts).
+    int polishShotRenders() const {
+        const int backlit = int(std::count(reflected_.begin(), reflected_.end(), false));
+        const int reflected = int(shots_.size()) - backlit;
+        return int(shots_.size()) + reflected * (whiteLight_ ? 1 : 3) + backlit * (whiteLight_ ? 2 : 6);
     }
 
     // Stage 2 fits to the reflected shots alone (backlitLeftOut_), the best so far then compared
@@ -1003,6 +1011,7 @@ private:
     std::string stage_;
     FitResult result_;
     bool anyFree_ = false;  // of the shots' exposures
+    bool allReflectedFree_ = true;  // of the reflected_ shots' exposures
     bool whiteLight_ = true;                 // every shot makes its colour basis in one render
     // Per shot: the colours are fitted to it (not backlit, or every shot is).
     std::vector<bool> reflected_;
@@ -1010,6 +1019,8 @@ private:
     // Renders leave the backlit shots out (stage 2).
     bool backlitLeftOut_ = false;
     std::vector<BacklitPhoto> backlitPhotos_;  // where transmitted_
+    double renderSeconds_ = 0.0;  // spent in renderShot()
+    int shotRenders_ = 0;         // renders of a shot
 };
 
 }  // namespace

@@ -33,7 +33,8 @@ namespace woven {
 
 struct FitOptions {
     double seconds = 180.0;  // the time budget
-    int renders = 0;         // a budget of renders besides (0: none), which makes a fit repeatable
+    int renders = 0;         // a budget of renders besides (0: none), which makes a fit repeatable;
+                             // stage 5's few renders come after it
     FitRenderSettings render;
 };
 
@@ -61,9 +62,10 @@ struct ShotFit {
 struct FitResult {
     WovenParams params;
     double exposure = 1.0;  // the free shots' exposure (1 when none is free)
-    double loss = 0.0;
+    double loss = 0.0;  // at stage 5's samples where it ran (a render's noise counts in the spectrum)
     std::vector<ShotFit> shots;
-    std::vector<std::pair<double, double>> history;  // (seconds, best loss) after each evaluation
+    // (seconds, best loss) after each evaluation; stage 5's at its own samples, so the last may jump
+    std::vector<std::pair<double, double>> history;
     int evaluations = 0;
     bool complete = false;  // every stage ran (not cancelled, the budget was enough)
     std::vector<std::string> warnings;

@@ -116,8 +116,9 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
                                                 const std::vector<const ImageStats*>& backlitPhotos,
                                                 const std::vector<TransmissionStats>& backlit,
                                                 const std::vector<std::optional<double>>& backlitExposures,
-                                                const std::vector<LinearColours>& starts) {
+                                                const std::vector<LinearColours>& starts, bool solveRs) {
     const bool free = !reflectedExposures.empty() && !reflectedExposures[0];
+    const bool rsFree = free && solveRs;
     const auto backlitExposuresAt = [&](double exposure) {
         std::vector<double> e;
         for (const std::optional<double>& b : backlitExposures) e.push_back(b.value_or(free ? exposure : 1.0));
@@ -133,14 +134,14 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
     double bestValue = INFINITY;
     for (const LinearColours& start : starts) {
         // x: the six colours on [kLeastColour, kMostColour], then a free exposure and rs's factor,
-        // each in log10 about the start's.
+        // each a power of its range about the start's (the factor's about 1).
         const auto colour = [](double u) { return kLeastColour + std::clamp(u, 0.0, 1.0) * (kMostColour - kLeastColour); };
         const auto unit = [](double c) { return std::clamp((c - kLeastColour) / (kMostColour - kLeastColour), 0.0, 1.0); };
         const auto exposure = [&](const std::vector<double>& x) {
             return free ? start.exposure * std::pow(kExposureRange, 2.0 * std::clamp(x[6], 0.0, 1.0) - 1.0) : start.exposure;
         };
         const auto rsScale = [&](const std::vector<double>& x) {
-            return free ? std::pow(kRsRange, 2.0 * std::clamp(x[7], 0.0, 1.0) - 1.0) : 1.0;
+            return rsFree ? std::pow(kRsRange, 2.0 * std::clamp(x[7], 0.0, 1.0) - 1.0) : 1.0;
         };
         const std::function<double(const std::vector<double>&)> f = [&](const std::vector<double>& x) {
             return objective({colour(x[0]), colour(x[1]), colour(x[2])}, {colour(x[3]), colour(x[4]), colour(x[5])},
@@ -148,7 +149,8 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
         };
         std::vector<double> x{unit(start.weft.r), unit(start.weft.g), unit(start.weft.b),
                               unit(start.warp.r), unit(start.warp.g), unit(start.warp.b)};
-        if (free) x.insert(x.end(), {0.5, 0.5});
+        if (free) x.push_back(0.5);
+        if (rsFree) x.push_back(0.5);
         nlopt::opt opt(nlopt::LN_BOBYQA, unsigned(x.size()));
         opt.set_lower_bounds(std::vector<double>(x.size(), 0.0));
         opt.set_upper_bounds(std::vector<double>(x.size(), 1.0));

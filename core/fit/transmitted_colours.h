@@ -50,15 +50,16 @@ TransmissionSplit solveTransmission(const std::vector<const ImageStats*>& photos
 struct TransmittedColours {
     LinearColours colours;
     TransmissionSplit split;
-    double rsScale = 1.0;  // the factor on the reflected shots' R (their renders' rs); 1 where the exposure is given
+    double rsScale = 1.0;  // the factor on the reflected shots' R (their renders' rs); 1 where not solved
 };
 
 // The colours, a free exposure and the transmission minimising the block means' and tile fold's
 // terms of the reflected shots (as solveColours() weighs them) and of the backlit shots together,
-// by NLopt's BOBYQA from each of `starts`, the best kept. With a free exposure, a factor on the
-// reflected shots' R too: a reflected photo shows only exposure x rs, as it shows exposure x
-// colour, and held at the renders' rs where the truth's differs it biased the colours (the
-// backlit shot ties the exposure to the colours through T's factor 1 - R_d: docs/FIT.md). `reflectedExposures` as for
+// by NLopt's BOBYQA from each of `starts`, the best kept. With a free exposure and `solveRs`, a
+// factor on the reflected shots' R too (R the gloss alone, which rs scales): a reflected photo
+// shows only exposure x rs, as it shows exposure x colour, and held at the renders' rs where the
+// truth's differs it biased the colours (the backlit shot ties the exposure to the colours
+// through T's factor 1 - R_d: docs/FIT.md). `reflectedExposures` as for
 // solveColours(); `backlitExposures` each backlit shot's, none where it shares the free one.
 TransmittedColours solveColoursWithTransmission(const std::vector<const ImageStats*>& reflectedPhotos,
                                                 const std::vector<LinearStats>& reflected,
@@ -66,6 +67,6 @@ TransmittedColours solveColoursWithTransmission(const std::vector<const ImageSta
                                                 const std::vector<const ImageStats*>& backlitPhotos,
                                                 const std::vector<TransmissionStats>& backlit,
                                                 const std::vector<std::optional<double>>& backlitExposures,
-                                                const std::vector<LinearColours>& starts);
+                                                const std::vector<LinearColours>& starts, bool solveRs);
 
 }  // namespace woven
