@@ -76,6 +76,7 @@ struct Axis {
         const double u = log ? (std::log10(std::max(v, 1e-30)) - lo) / (hi - lo) : (v - lo) / (hi - lo);
         return std::clamp(u, 0.0, 1.0);
     }
+    double clamped(double v) const { return value(unit(v)); }  // v held within the axis
 };
 
 // Stage 4's parameters: weft and warp colour, rs, ex and ey (the warp's following the weft's:
@@ -752,7 +753,7 @@ private:
         const float k = 0.5f / brightest;
         p.weft_color *= k;
         p.warp_color *= k;
-        p.rs = float(fullAxes()[kRsAxis].value(fullAxes()[kRsAxis].unit(double(p.rs * k))));
+        p.rs = float(fullAxes()[kRsAxis].clamped(double(p.rs * k)));
         return p;
     }
 
@@ -862,8 +863,9 @@ private:
                                const TransmissionParts& parts) {
         // The backlit folds' reference: the entry, with the transmission solved at its colours.
         const std::optional<double> shared = allReflectedFree_ ? std::nullopt : std::optional<double>(result_.exposure);
+        const std::vector<std::optional<double>> backlitExposed = backlitExposures(shared);
         std::vector<double> exposures;
-        for (const std::optional<double>& e : backlitExposures(shared)) exposures.push_back(e.value_or(reflected.entry.exposure));
+        for (const std::optional<double>& e : backlitExposed) exposures.push_back(e.value_or(reflected.entry.exposure));
         BacklitParts backlit = backlitParts(parts);
         const TransmissionSplit first = solveTransmission(backlitPhotoStats(), backlit.stats, exposures,
                                                           reflected.entry.weft, reflected.entry.warp);
@@ -875,7 +877,7 @@ private:
         if (!allReflectedFree_) entryStart.exposure = 1.0;
         const TransmittedColours joint =
             solveColoursWithTransmission(reflected.photos, reflected.entryStats, reflected.exposures, backlitPhotoStats(),
-                                         backlit.stats, backlitExposures(shared), {reflected.last, entryStart},
+                                         backlit.stats, backlitExposed, {reflected.last, entryStart},
                                          rsSolvedWithColours());
         p.weft_color = glm::vec3(joint.colours.weft);
         p.warp_color = glm::vec3(joint.colours.warp);
@@ -891,9 +893,8 @@ private:
     // for its factor 1 - R_d (1 to 2 % at the factors of 1.1 to 1.3 the round trips solve). R
     // itself is rs's but for Schlick's (1 - rs)(1 - h.k)^5, small for a flash beside the lens.
     static WovenParams withRsScaled(WovenParams p, float k) {
-        const Axis& axis = fullAxes()[kRsAxis];
         if (k == 1.0f || !(p.rs > 0.0f)) return p;
-        const float rs = float(axis.value(axis.unit(double(p.rs * k)))), keep = (1.0f - p.rs) / (1.0f - rs);
+        const float rs = float(fullAxes()[kRsAxis].clamped(double(p.rs * k))), keep = (1.0f - p.rs) / (1.0f - rs);
         p.weft_color = glm::min(p.weft_color * keep, glm::vec3(1.0f));
         p.warp_color = glm::min(p.warp_color * keep, glm::vec3(1.0f));
         p.transmission = std::min(p.transmission * keep, 1.0f);
