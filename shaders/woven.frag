@@ -173,6 +173,13 @@ vec3 averagedTransmission(Frame front, vec3 p, vec3 ng, vec3 wo, Lobe weft, Lobe
 vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec3 wo, vec2 e, vec2 dedx, vec2 dedy,
                       vec3 print, out float coverage) {
     vec2 yarnArea = face == 0 ? yarnCoverage.xy : yarnCoverage.zw;
+    // The pixel's box of elements (whole repeats where the uv cannot resolve it): each side's
+    // share as the box shows it.
+    vec2 halfBox = 0.5 * (abs(dedx) + abs(dedy));
+    if (dedx.x < 1e29) {
+        vec3 scales = footprintScales(face, e - halfBox, e + halfBox);
+        yarnArea *= scales.yx;
+    }
 #ifdef WOVEN_THREADS
     vec3 warpColor = footprintColor(warpColorTexture, threadPeriod.x, e.x, dedx.x, dedy.x);
     vec3 weftColor = footprintColor(weftColorTexture, threadPeriod.y, e.y, dedx.y, dedy.y);

@@ -262,7 +262,8 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     else glEnable(GL_CULL_FACE);
     uploadMaterial(program, material, materialIndex);
     // After the weave's update, which binds on the active unit; the transmitted maps after the
-    // material's textures (a woven material's kept surface has at most two, on units 8 and 9).
+    // material's textures (a woven material's kept surface has at most two, on units 8 and 9;
+    // its far field's tables are on 14 and 15).
     const int transmittedUnit = material.woven ? 10 : 4 + int(gltfMaps(material).size());
     if (shadows != ShadowLookups::None) shadows_->bind(program, 1, 2, transmittedUnit);
     mesh.draw();

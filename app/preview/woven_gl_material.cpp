@@ -153,11 +153,13 @@ WeaveTextures::WeaveTextures() {
     glGenTextures(2, colorTracks_);
     glGenBuffers(1, &threadBuffer_);
     glGenBuffers(1, &yarnBuffer_);
+    glGenTextures(2, warpTopSums_);
 }
 
 WeaveTextures::~WeaveTextures() {
-    const GLuint textures[] = {tile_, floats_, threadTable_, yarnTable_, colorTracks_[0], colorTracks_[1]};
-    glDeleteTextures(6, textures);
+    const GLuint textures[] = {tile_,           floats_,         threadTable_,    yarnTable_,
+                               colorTracks_[0], colorTracks_[1], warpTopSums_[0], warpTopSums_[1]};
+    glDeleteTextures(8, textures);
     const GLuint buffers[] = {threadBuffer_, yarnBuffer_};
     glDeleteBuffers(2, buffers);
 }
@@ -169,6 +171,7 @@ void WeaveTextures::update(const WovenParams& p) {
         updateThreads(weave);
         coverage_[0] = weaveCoverage(weave, false);
         coverage_[1] = weaveCoverage(weave, true);
+        updateFootprintSplit(weave, p);
     }
     // The yarn table: the resolved yarns, which every yarn slider changes; a few floats each.
     std::vector<glm::vec4> yarns;
@@ -220,6 +223,25 @@ void WeaveTextures::updateThreads(const Weave& weave) {
     uploadBuffer(threadBuffer_, threadTable_, texels);
 }
 
+void WeaveTextures::updateFootprintSplit(const Weave& weave, const WovenParams& p) {
+    // A float table counts cells exactly up to 2^24; larger tiles are left unsplit (the repeat's
+    // shares at every footprint, as for unevenly spaced threads).
+    constexpr size_t kMaxTableTexels = size_t(1) << 22;
+    for (int face = 0; face < 2; ++face) {
+        const WeaveFarField far(weave, p, face == 1);
+        const glm::ivec2 tile = far.tileSize();
+        splitsByFootprint_[face] = far.splitsByFootprint() && size_t(tile.x + 1) * size_t(tile.y + 1) <= kMaxTableTexels;
+        farShares_[face] = far.colorShares();
+        inWarpCells_[face] = far.sharesInWarpCells();
+        inWeftCells_[face] = far.sharesInWeftCells();
+        if (!splitsByFootprint_[face]) continue;
+        glBindTexture(GL_TEXTURE_2D, warpTopSums_[face]);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, tile.x + 1, tile.y + 1, 0, GL_RED, GL_FLOAT, far.warpTopSums().data());
+        setNearest(GL_TEXTURE_2D);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 void WeaveTextures::bind(const ShaderProgram& program) const {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, tile_);
@@ -249,6 +271,19 @@ void WeaveTextures::bind(const ShaderProgram& program) const {
         glActiveTexture(GL_TEXTURE7);
         glBindTexture(GL_TEXTURE_1D, colorTracks_[1]);
         glUniform1i(program.uniform("weftColorTexture"), 7);
+    }
+    if (program.uniform("splitsByFootprint[0]") >= 0) {
+        const char* samplers[2] = {"frontWarpTopSums", "backWarpTopSums"};
+        for (int face = 0; face < 2; ++face) {
+            glActiveTexture(GLenum(GL_TEXTURE14 + face));
+            glBindTexture(GL_TEXTURE_2D, warpTopSums_[face]);
+            glUniform1i(program.uniform(samplers[face]), 14 + face);
+        }
+        const GLint split[2] = {splitsByFootprint_[0], splitsByFootprint_[1]};
+        glUniform1iv(program.uniform("splitsByFootprint[0]"), 2, split);
+        glUniform3fv(program.uniform("farShares[0]"), 2, glm::value_ptr(farShares_[0]));
+        glUniform3fv(program.uniform("inWarpCells[0]"), 2, glm::value_ptr(inWarpCells_[0]));
+        glUniform3fv(program.uniform("inWeftCells[0]"), 2, glm::value_ptr(inWeftCells_[0]));
     }
     const glm::vec4 coverage(coverage_[0].weft, coverage_[0].warp, coverage_[1].weft, coverage_[1].warp);
     glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(coverage));

@@ -42,17 +42,24 @@ public:
     // thread and yarn tables (a few kilobytes) when anything about the threads did.
     void update(const WovenParams& p);
     // Binds the textures to units 0 (tile), 3 (floats), 4 (threads), 5 (yarns), 6 and 7 (the
-    // filter's warp and weft colours) and sets the uniforms that go with them.
+    // filter's warp and weft colours), 14 and 15 (the filter's warp-top tables of the front and the
+    // back) and sets the uniforms that go with them.
     void bind(const ShaderProgram& program) const;
 
 private:
     void updateTile(const Weave& weave);
     void updateThreads(const Weave& weave);
+    void updateFootprintSplit(const Weave& weave, const WovenParams& p);
 
     GLuint tile_ = 0, floats_ = 0, threadBuffer_ = 0, threadTable_ = 0, yarnBuffer_ = 0, yarnTable_ = 0;
     GLuint colorTracks_[2] = {0, 0};  // warp, weft: the weave filter's mipmapped thread colours
     glm::ivec2 threadPeriod_{1}, threadSpaced_{0};
     WeaveCoverage coverage_[2];  // front, back
+    // Per face, the far field's split by top yarn (WeaveFarField::footprintScales()): its table of
+    // warp-top cells, and per colour the shares of the repeat, of warp-top and of other cells.
+    GLuint warpTopSums_[2] = {0, 0};
+    bool splitsByFootprint_[2] = {false, false};
+    glm::vec3 farShares_[2], inWarpCells_[2], inWeftCells_[2];
     std::optional<WovenParams> uploaded_;
 };
 

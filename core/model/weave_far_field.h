@@ -57,6 +57,17 @@ public:
     // unevenly spaced threads (whose cells are not the tile's unit cells).
     glm::vec3 footprintScales(const glm::dvec2& e0, const glm::dvec2& e1) const;
 
+    // What footprintScales() is computed from, for its GLSL twin (woven.frag): whether it splits
+    // by top yarn at all, each colour's share of the repeat and of the cells with the warp on top
+    // and of the others, and the (width + 1) x (height + 1) table of warp-top cells below and
+    // left of each corner of the tile.
+    bool splitsByFootprint() const { return byFootprint_; }
+    glm::vec3 colorShares() const { return {share_[0], share_[1], share_[2]}; }
+    glm::vec3 sharesInWarpCells() const { return {inWarpCells_[0], inWarpCells_[1], inWarpCells_[2]}; }
+    glm::vec3 sharesInWeftCells() const { return {inWeftCells_[0], inWeftCells_[1], inWeftCells_[2]}; }
+    glm::ivec2 tileSize() const { return {tileWidth_, tileHeight_}; }
+    const std::vector<float>& warpTopSums() const { return warpTopSums_; }
+
 private:
     double warpTopArea(double x0, double y0, double x1, double y1) const;  // cells with the warp on top, in the box
 
