@@ -86,7 +86,6 @@ void PreviewWindow::applyFinishedFit() {
     }
     editIndex_ = int(edit - edits.begin());
     edits_->params(editIndex_) = params;
-    presetIndex_ = -1;
     chosenFabric_.reset();
     showFinal_ = false;  // the rendered frame is of the old cloth
     applyEdits();

@@ -4,6 +4,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -26,7 +27,6 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
             std::vector<std::string> warnings;
             ChosenFabric chosen = chooseFabric(target, name, scene(), edits_->meshesOf(target), warnings);
             p = chosen.params;
-            presetIndex_ = -1;
             showFinal_ = false;  // the rendered frame is of the old cloth
             showDraftOf(chosen.wif, warnings);
             chosenFabric_ = std::move(chosen);
@@ -68,26 +68,120 @@ void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>
     copyToBuffer(draftPath_, wif);
 }
 
-void PreviewWindow::drawMaterialControls(WovenParams& p) {
-    drawFabricControls(p);
+namespace {
+
+// A drag moves a logarithmic parameter by a decade in this many pixels, whatever its range (a
+// slider 240 pixels wide spans e_x's eight decades in 30 pixels a decade).
+constexpr float kPixelsPerDecade = 150.0f;
+// The smallest magnitude a logarithmic drag of "%.4g" reaches above 0 (ImGui's epsilon for it).
+constexpr float kLogZero = 1e-4f;
+
+float logDragSpeed(const ParamInfo& info) {
+    const float decades = std::log10(info.max / std::max(info.min, kLogZero));
+    return (info.max - info.min) / (decades * kPixelsPerDecade);
+}
+
+// The per-thread colour list that overrides a side's colour field, if it is set.
+const std::vector<glm::vec3>* threadColorsOver(const ParamInfo& info, const WovenParams& p) {
+    const std::string name = info.name;
+    if (name == "weft_color" && !p.weft_colors.empty()) return &p.weft_colors;
+    if (name == "warp_color" && !p.warp_colors.empty()) return &p.warp_colors;
+    return nullptr;
+}
+
+// Every colour the threads have, in order of first use (ends, then picks): a side without
+// per-thread colours has its own colour.
+std::vector<glm::vec3> threadPalette(const WovenParams& p) {
+    std::vector<glm::vec3> palette;
+    auto add = [&](const glm::vec3& c) {
+        if (std::find(palette.begin(), palette.end(), c) == palette.end()) palette.push_back(c);
+    };
+    for (const glm::vec3& c : p.warp_colors) add(c);
+    if (p.warp_colors.empty()) add(p.warp_color);
+    for (const glm::vec3& c : p.weft_colors) add(c);
+    if (p.weft_colors.empty()) add(p.weft_color);
+    return palette;
+}
+
+// Every thread of colour `from` takes colour `to`.
+void recolour(WovenParams& p, const glm::vec3& from, const glm::vec3& to) {
+    for (std::vector<glm::vec3>* list : {&p.warp_colors, &p.weft_colors})
+        std::replace(list->begin(), list->end(), from, to);
+    if (p.warp_colors.empty() && p.warp_color == from) p.warp_color = to;
+    if (p.weft_colors.empty() && p.weft_color == from) p.weft_color = to;
+}
+
+}  // namespace
+
+// The weave: a preset, or the (i, j, k) of MODEL.md. Either replaces a tile, a draft's too: its
+// threads keep their colours, yarns and spacing by position, and the draft view closes, for the
+// draft no longer describes the cloth.
+void PreviewWindow::drawWeaveControls(WovenParams& p) {
     const auto& presets = weavePresets();
-    const char* presetName = presetIndex_ >= 0 ? presets[presetIndex_].name.c_str() : "(custom)";
-    if (ui::BeginCombo("weave preset", presetName)) {
+    const int current = presetOf(p);
+    const char* name = current >= 0 ? presets[size_t(current)].name.c_str() : p.tile.empty() ? "(custom)" : "(a tile)";
+    std::string chosen;
+    if (ui::BeginCombo("weave preset", name)) {
         for (size_t i = 0; i < presets.size(); ++i)
-            if (ui::Selectable(presets[i].name.c_str(), int(i) == presetIndex_)) {
-                presetIndex_ = int(i);
+            if (ui::Selectable(presets[i].name.c_str(), int(i) == current)) {
                 applyPreset(presets[i], p);
+                chosen = presets[i].name;
             }
         ui::EndCombo();
     }
+    const ParamInfo& pattern = *std::find_if(wovenParamTable().begin(), wovenParamTable().end(),
+                                             [](const ParamInfo& info) { return info.type == ParamType::IVec3; });
+    int* v = &p.pattern.x;
+    if (ui::InputInt3(pattern.label, v)) {
+        for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(pattern.min), int(pattern.max));
+        p.tile.clear();
+        chosen = "(" + std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]) + ")";
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s: %s%s", pattern.name, pattern.description,
+                          p.tile.empty() ? "" : "\nthe weave is a tile now (a draft's or drawn): a weave typed here replaces it");
+    if (!chosen.empty() && draft_ && draftEdit_ == editIndex_) {
+        draft_.reset();
+        status_ = "the weave " + chosen + " replaces the draft's; its threads keep their colours";
+    }
+}
+
+// A swatch for each colour the threads have: editing one recolours every thread of that colour.
+void PreviewWindow::drawThreadPalette(WovenParams& p) {
+    if (p.warp_colors.empty() && p.weft_colors.empty()) return;
+    ImGui::TextUnformatted("thread colours");
+    const std::vector<glm::vec3> palette = threadPalette(p);
+    for (size_t i = 0; i < palette.size(); ++i) {
+        if (i % 8 != 0) ImGui::SameLine();
+        glm::vec3 c = palette[i];
+        const std::string label = "##thread colour " + std::to_string(i + 1);
+        if (ui::ColorEdit3(label.c_str(), &c.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_NoInputs)) recolour(p, palette[i], c);
+        if (ImGui::IsItemHovered()) {
+            const auto count = [&](const std::vector<glm::vec3>& list) { return std::count(list.begin(), list.end(), palette[i]); };
+            ImGui::SetTooltip("%td of %zu ends, %td of %zu picks: a click edits every thread of this colour",
+                              count(p.warp_colors), p.warp_colors.size(), count(p.weft_colors), p.weft_colors.size());
+        }
+    }
+}
+
+void PreviewWindow::drawMaterialControls(WovenParams& p) {
+    drawFabricControls(p);
+    drawWeaveControls(p);
     for (const ParamInfo& info : wovenParamTable()) {
-        if (!isNumeric(info.type)) continue;  // the tile and the per-thread lists: the draft view
+        // The tile and the per-thread lists: the weave above, the palette and the draft view below.
+        if (!isNumeric(info.type) || info.type == ParamType::IVec3) continue;
         char* field = reinterpret_cast<char*>(&p) + info.offset;
         ImGui::PushID(info.name);
-        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp
+                                                     : ImGuiSliderFlags_AlwaysClamp;
+        const std::vector<glm::vec3>* overriddenBy = nullptr;
         switch (info.type) {
         case ParamType::Float:
-            ui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
+            if (info.logScale)
+                ui::DragFloat(info.label, reinterpret_cast<float*>(field), logDragSpeed(info), info.min, info.max, "%.4g",
+                              flags);
+            else
+                ui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
             break;
         case ParamType::Int:
             ui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
@@ -96,23 +190,25 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             ui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
             break;
         case ParamType::Vec3:
+            overriddenBy = threadColorsOver(info, p);
+            ImGui::BeginDisabled(overriddenBy != nullptr);
             ui::ColorEdit3(info.label, reinterpret_cast<float*>(field), ImGuiColorEditFlags_Float);
+            ImGui::EndDisabled();
             break;
-        case ParamType::IVec3: {
-            int* v = reinterpret_cast<int*>(field);
-            if (ui::InputInt3(info.label, v)) {
-                for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(info.min), int(info.max));
-                p.tile.clear();  // an edited (i, j, k) replaces a hand-drawn tile
-                presetIndex_ = -1;
-            }
-            break;
-        }
         default: break;
         }
         // The scene-file key and its meaning, so what the panel tunes can be written by hand.
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", info.name, info.description);
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+            if (overriddenBy)
+                ImGui::SetTooltip("%s: every thread of this side has its own colour: edit them in \"thread colours\" "
+                                  "below (%zu threads)",
+                                  info.name, overriddenBy->size());
+            else
+                ImGui::SetTooltip("%s: %s\n(Ctrl+click to type a value)", info.name, info.description);
+        }
         ImGui::PopID();
     }
+    drawThreadPalette(p);
     try {
         validate(p);
     } catch (const std::exception& e) {
@@ -137,7 +233,6 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             std::vector<std::string> warnings;
             const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
             p = scaledToMeshes(read, scene(), edits_->meshesOf(target), warnings);
-            presetIndex_ = -1;
             if (chosenFabric_ && chosenFabric_->target == target) chosenFabric_.reset();
             status_ = std::string("loaded ") + materialPath_;
             if (!read.wif.empty()) showDraftOf(read.wif, warnings);
@@ -213,7 +308,6 @@ void PreviewWindow::drawDraftWindow() {
     try {
         if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
             *woven = draft_->material(*woven);
-            presetIndex_ = -1;
             showFinal_ = false;  // the rendered frame is of the old cloth
             applyEdits();
         }
@@ -247,7 +341,6 @@ void PreviewWindow::drawSelection() {
     if (ui::Button("Make woven")) {
         try {
             editIndex_ = edits_->makeWoven(target);
-            presetIndex_ = -1;
             applyEdits();
             status_ = "made " + target + " woven";
         } catch (const std::exception& e) {

@@ -112,11 +112,14 @@ void PreviewWindow::drawPanel() {
         const auto& edits = edits_->edits();
         if (ui::BeginCombo("woven", editIndex_ >= 0 ? edits[size_t(editIndex_)].target.c_str() : "(none: click a surface)")) {
             for (size_t i = 0; i < edits.size(); ++i)
-                if (ui::Selectable(edits[i].target.c_str(), int(i) == editIndex_)) editIndex_ = int(i), presetIndex_ = -1;
+                if (ui::Selectable(edits[i].target.c_str(), int(i) == editIndex_)) editIndex_ = int(i);
             ui::EndCombo();
         }
         if (WovenParams* p = editedParams()) {
+            const size_t changesBefore = widgets_.valueChanges();
             drawMaterialControls(*p);
+            // The rendered frame is of the old cloth: any edit goes back to the live preview.
+            if (widgets_.valueChanges() != changesBefore) showFinal_ = false;
             applyEdits();
         }
         ImGui::PopID();

@@ -68,9 +68,15 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
     glfwSetWindowUserPointer(window_, this);
-    // Installed before ImGui's, which chains to them.
+    // Installed before ImGui's, which chains to them; each input wakes a resting window.
     glfwSetScrollCallback(window_, onScroll);
     glfwSetDropCallback(window_, onDrop);
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { wake(w); });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { wake(w); });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { wake(w); });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { wake(w); });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { wake(w); });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { wake(w); });
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -130,7 +136,6 @@ void PreviewWindow::openScene(const std::string& path) {
             }
             break;
         }
-    presetIndex_ = -1;
     showFinal_ = false;
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
@@ -151,7 +156,6 @@ void PreviewWindow::openDraft(const std::string& path) {
     *p = editor.material(*p);
     draft_ = std::move(editor);
     draftEdit_ = editIndex_;
-    presetIndex_ = -1;
     applyEdits();
     copyToBuffer(draftPath_, path);
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
@@ -195,16 +199,21 @@ void PreviewWindow::pick(glm::vec2 cursor) {
     if (pickedMesh_ >= 0) targetChoice_ = int(edits_->targetsFor(pickedMesh_).size()) - 1;
 }
 
+void PreviewWindow::wake(GLFWwindow* window) { ++static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window))->inputs_; }
+
 void PreviewWindow::onScroll(GLFWwindow* window, double, double dy) {
+    wake(window);
     static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window))->scroll_ += dy;
 }
 
 void PreviewWindow::onDrop(GLFWwindow* window, int count, const char** paths) {
+    wake(window);
     auto* self = static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window));
     for (int i = 0; i < count; ++i) self->droppedPaths_.emplace_back(paths[i]);
 }
 
 void PreviewWindow::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    wake(window);
     auto* self = static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window));
     auto& pressed = self->pressedSinceFrame_;
     if (action == GLFW_PRESS) pressed.push_back(key);
@@ -368,6 +377,42 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     std::filesystem::rename(tmp, path);
 }
 
+// Whether the next frame may differ from the last with no input: a render or fit under way, the
+// view still at a reduced size, a drag held, or a counted run (--frames).
+bool PreviewWindow::busy() const {
+    return final_.running() || fit_.running() || interacting_ || resolution_.scale() < 1.0f || options_.frames > 0 ||
+           !deferredReleases_.empty() || !deferredModifierReleases_.empty();
+}
+
+// Waits, drawing nothing, until an input arrives or the window has work; a few frames follow each
+// input or the end of work, for ImGui's hover and popups to settle. Woken each 0.25 s to see a
+// signal or a background job start. Returns whether it waited.
+bool PreviewWindow::restUntilNeeded() {
+    constexpr double kSettleSeconds = 0.5;
+    constexpr int kSettleFrames = 3;
+    const double now = glfwGetTime();
+    if (busy() || inputs_ != inputsSeen_) {
+        inputsSeen_ = inputs_;
+        settleUntil_ = now + kSettleSeconds;
+        settleFrames_ = kSettleFrames;
+        return false;
+    }
+    if (settleFrames_ > 0 || now < settleUntil_) {
+        --settleFrames_;
+        return false;
+    }
+    // A focused text field's cursor blinks: a frame each 0.4 s while one is.
+    const double restStart = glfwGetTime();
+    const bool typing = ImGui::GetIO().WantTextInput;
+    while (!closeRequested && !glfwWindowShouldClose(window_) && inputs_ == inputsSeen_ && !busy() &&
+           !(typing && glfwGetTime() - restStart >= 0.4))
+        glfwWaitEventsTimeout(typing ? 0.1 : 0.25);
+    inputsSeen_ = inputs_;
+    settleUntil_ = glfwGetTime() + kSettleSeconds;
+    settleFrames_ = kSettleFrames;
+    return true;
+}
+
 void PreviewWindow::run() {
     closeRequested = false;
     auto previousInt = std::signal(SIGINT, requestClose);
@@ -375,10 +420,11 @@ void PreviewWindow::run() {
     glfwGetCursorPos(window_, &lastCursor_.x, &lastCursor_.y);
     double frameStart = glfwGetTime();
     for (frame_ = 1; !glfwWindowShouldClose(window_); ++frame_) {
-        const double now = glfwGetTime();
-        if (frame_ > 1) resolution_.frameTook(now - frameStart);
-        frameStart = now;
         glfwPollEvents();
+        const bool rested = restUntilNeeded();
+        const double now = glfwGetTime();
+        if (frame_ > 1 && !rested) resolution_.frameTook(now - frameStart);
+        frameStart = now;
         std::vector<std::string> dropped;
         dropped.swap(droppedPaths_);
         for (const std::string& path : dropped) {

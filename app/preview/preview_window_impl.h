@@ -59,6 +59,8 @@ private:
     void drawPanel();
     void drawSelection();
     void drawMaterialControls(WovenParams& p);
+    void drawWeaveControls(WovenParams& p);
+    void drawThreadPalette(WovenParams& p);
     void drawDraftControls(WovenParams& p);
     void drawFabricControls(WovenParams& p);
     // A material's draft ("wif") in the draft view of the edited material; none: that edit's
@@ -82,6 +84,9 @@ private:
     WovenParams* editedParams();
     SceneDescription& scene() { return edits_->sceneForLighting(); }
 
+    bool busy() const;
+    bool restUntilNeeded();
+    static void wake(GLFWwindow* window);
     static void onScroll(GLFWwindow* window, double, double dy);
     static void onDrop(GLFWwindow* window, int count, const char** paths);
     // Between ImGui's GLFW backend and GLFW: a key released before ImGui saw it down (a quick
@@ -103,7 +108,6 @@ private:
     int pickedMesh_ = -1;     // the primitive last clicked
     int targetChoice_ = 0;    // which of its targets the selection panel offers
     int editIndex_ = -1;      // the edit the panel tunes
-    int presetIndex_ = -1;
     DisplayTransform display_;
     bool filterWeave_ = true;
     bool shadows_ = true;
@@ -157,6 +161,10 @@ private:
     WidgetMap widgets_;
     int frame_ = 0;
     bool interacting_ = false;  // the last frame was drawn as an interactive one
+    // A resting window draws nothing until an input (counted by the callbacks) or work arrives.
+    uint64_t inputs_ = 0, inputsSeen_ = 0;
+    double settleUntil_ = 0.0;
+    int settleFrames_ = 0;
 };
 
 }  // namespace woven

@@ -21,4 +21,11 @@ void applyPreset(const WeavePreset& preset, WovenParams& p) {
     p.tile = preset.tile;
 }
 
+int presetOf(const WovenParams& p) {
+    const auto& presets = weavePresets();
+    for (size_t i = 0; i < presets.size(); ++i)
+        if (presets[i].tile == p.tile && (!p.tile.empty() || presets[i].pattern == p.pattern)) return int(i);
+    return -1;
+}
+
 }  // namespace woven

@@ -19,4 +19,7 @@ const std::vector<WeavePreset>& weavePresets();  // plain, twill, satin, basket,
 // Sets the weave of `p` (pattern and tile) to the preset's; every other parameter stays.
 void applyPreset(const WeavePreset& preset, WovenParams& p);
 
+// The preset whose weave `p` has (its index in weavePresets()), or -1.
+int presetOf(const WovenParams& p);
+
 }  // namespace woven

@@ -16,13 +16,22 @@ nlohmann::json rect(ImVec2 lo, ImVec2 hi) { return {lo.x, lo.y, hi.x, hi.y}; }
 
 // Records the widget just drawn and passes its result on.
 bool recorded(bool result, const char* label, const char* kind) {
-    if (current) current->record(label, kind);
+    if (current) {
+        current->record(label, kind);
+        if (result) current->noteChange(kind);
+    }
     return result;
 }
 
 }  // namespace
 
 void setCurrentWidgetMap(WidgetMap* map) { current = map; }
+
+void WidgetMap::noteChange(const char* kind) {
+    // Buttons act and checkboxes toggle the view; the others hold a value.
+    static const std::set<std::string> values = {"slider", "drag", "colour", "input", "selectable"};
+    if (values.count(kind)) ++valueChanges_;
+}
 
 void WidgetMap::beginFrame() {
     items_.clear();
@@ -135,6 +144,9 @@ bool SliderFloat3(const char* label, float v[3], float min, float max) {
 }
 bool SliderInt(const char* label, int* v, int min, int max) {
     return recorded(ImGui::SliderInt(label, v, min, max), label, "slider");
+}
+bool DragFloat(const char* label, float* v, float speed, float min, float max, const char* format, ImGuiSliderFlags flags) {
+    return recorded(ImGui::DragFloat(label, v, speed, min, max, format, flags), label, "drag");
 }
 bool DragFloat3(const char* label, float v[3], float speed) {
     return recorded(ImGui::DragFloat3(label, v, speed), label, "drag");

@@ -41,6 +41,12 @@ public:
     // Right after a widget, in the ID stack it was drawn in.
     void record(const char* label, const char* kind);
 
+    // A widget returned true ("changed" for a value, "pressed" for a button).
+    void noteChange(const char* kind);
+    // How many value widgets (sliders, drags, colours, fields, selectables) changed a value so far:
+    // the difference across a section says whether the user edited anything in it.
+    size_t valueChanges() const { return valueChanges_; }
+
     const std::vector<WidgetItem>& items() const { return items_; }
     std::vector<WidgetClash> clashes() const;
     // One line on stderr for each clash not reported before ("warning: ImGui ID clash ...").
@@ -53,6 +59,7 @@ private:
     std::vector<WidgetItem> items_;
     nlohmann::json windows_ = nlohmann::json::object();
     std::set<std::string> warned_;  // the clashes already said, by their labels
+    size_t valueChanges_ = 0;
     std::vector<std::string> pendingCombos_;  // open combos' labels, recorded at EndCombo
     friend bool ui::BeginCombo(const char*, const char*);
     friend void ui::EndCombo();
@@ -76,6 +83,8 @@ bool SliderFloat2(const char* label, float v[2], float min, float max, const cha
                   ImGuiSliderFlags flags = 0);
 bool SliderFloat3(const char* label, float v[3], float min, float max);
 bool SliderInt(const char* label, int* v, int min, int max);
+bool DragFloat(const char* label, float* v, float speed, float min, float max, const char* format,
+               ImGuiSliderFlags flags = 0);
 bool DragFloat3(const char* label, float v[3], float speed);
 bool ColorEdit3(const char* label, float col[3], ImGuiColorEditFlags flags = 0);
 bool InputInt(const char* label, int* v, int step = 1, int stepFast = 100, ImGuiInputTextFlags flags = 0);

@@ -42,8 +42,9 @@ const std::map<std::string, std::vector<std::string>>& replacedKeys() {
         {"weft_count", {"yarn_width"}},
         {"warp_width", {"warp_count"}},
         {"warp_count", {"warp_width"}},
-        {"pattern", {"tile", "wif", "scale"}},
-        {"tile", {"pattern", "wif", "scale"}},
+        // A weave replaces the fabric's weave but not its draft's threads (materialFromJson()).
+        {"pattern", {"tile"}},
+        {"tile", {"pattern"}},
         {"wif", {"pattern", "tile"}},
     };
     return keys;

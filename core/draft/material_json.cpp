@@ -38,6 +38,29 @@ void setWidthsFromCounts(const TextileKeys& t, const glm::vec2& threadsPerCm, nl
 
 }  // namespace
 
+namespace {
+
+// A key given in the material's own JSON replaces what a lower layer (its draft, its preset, the
+// scene's "*" entry, the base) gave for the same thing in another field: `pattern` the tile (a
+// draft's weave: its threads keep their colours, yarns and spacing by position), `weft_color` and
+// `warp_color` the side's per-thread colours (every pick, or every end, that colour).
+void replaceByGivenKeys(const nlohmann::json& given, nlohmann::json& rest, WovenParams& lower) {
+    static const struct {
+        const char* key;
+        const char* replaced;
+        void (*clear)(WovenParams&);
+    } rules[] = {{"pattern", "tile", [](WovenParams& p) { p.tile.clear(); }},
+                 {"weft_color", "weft_colors", [](WovenParams& p) { p.weft_colors.clear(); }},
+                 {"warp_color", "warp_colors", [](WovenParams& p) { p.warp_colors.clear(); }}};
+    for (const auto& rule : rules)
+        if (given.contains(rule.key) && !given.contains(rule.replaced)) {
+            rest.erase(rule.replaced);
+            rule.clear(lower);
+        }
+}
+
+}  // namespace
+
 MaterialJson materialFromJson(const nlohmann::json& given, const WovenParams& base, const std::string& directory,
                               std::vector<std::string>& warnings) {
     if (!given.is_object()) throw std::invalid_argument("a woven material must be a JSON object");
@@ -102,6 +125,7 @@ MaterialJson materialFromJson(const nlohmann::json& given, const WovenParams& ba
                                         "inch), or a draft with \"scale\": \"draft\"");
         setWidthsFromCounts(out.textile, *out.threadsPerCm, rest, warnings);
     }
+    replaceByGivenKeys(given, rest, out.params);
     out.params = paramsFromJson(rest, out.params);
     return out;
 }

@@ -123,6 +123,37 @@ TEST(FabricLibrary, PresetsAndTheirOverrides) {
     EXPECT_THAT(error({{"preset", "../drafts/denim"}}), HasSubstr("'preset' = \"../drafts/denim\": need a fabric's name"));
 }
 
+// A weave given beside a draft replaces the draft's weave, its threads keeping their colours by
+// position; a side's colour given beside per-thread colours replaces them (docs/SCENE_FORMAT.md).
+TEST(FabricLibrary, AGivenWeaveOrColourReplacesTheDraftsOrPresets) {
+    const MaterialJson denim = read({{"preset", "denim"}});
+    const MaterialJson satin = read({{"preset", "denim"}, {"pattern", {1, 4, 2}}});
+    EXPECT_TRUE(satin.params.tile.empty());
+    EXPECT_EQ(satin.params.pattern, glm::ivec3(1, 4, 2));
+    EXPECT_EQ(satin.params.warp_color, denim.params.warp_color);  // indigo ends, ecru picks still
+    EXPECT_EQ(satin.params.weft_color, denim.params.weft_color);
+    EXPECT_EQ(*satin.threadsPerCm, glm::vec2(25, 16));
+    EXPECT_EQ(satin.wif, denim.wif);
+    // The same beside a draft named in the material itself.
+    const MaterialJson drafted =
+        read({{"wif", std::string(WOVEN_ASSETS_DIR) + "/drafts/gingham.wif"}, {"pattern", {1, 2, 1}}});
+    EXPECT_TRUE(drafted.params.tile.empty());
+    EXPECT_FALSE(drafted.params.warp_colors.empty());  // the gingham's checks stay
+    // A tile given replaces the draft's tile too.
+    const MaterialJson tiled = read({{"preset", "denim"}, {"tile", {"-|", "|-"}}});
+    EXPECT_EQ(tiled.params.tile, (std::vector<std::string>{"-|", "|-"}));
+
+    const MaterialJson tartan = read({{"preset", "tartan"}});
+    ASSERT_FALSE(tartan.params.weft_colors.empty());
+    const MaterialJson red = read({{"preset", "tartan"}, {"weft_color", {1, 0, 0}}});
+    EXPECT_TRUE(red.params.weft_colors.empty());
+    EXPECT_EQ(red.params.weft_color, glm::vec3(1, 0, 0));
+    EXPECT_EQ(red.params.warp_colors, tartan.params.warp_colors);  // the other side keeps its sett
+    // Per-thread colours given beside the side's colour win, as before.
+    const MaterialJson lists = read({{"preset", "tartan"}, {"weft_color", {1, 0, 0}}, {"weft_colors", {{0, 1, 0}}}});
+    EXPECT_EQ(lists.params.weft_colors, (std::vector<glm::vec3>{{0, 1, 0}}));
+}
+
 TEST(FabricLibrary, AFabricFilesMistakeNamesTheFile) {
     test::TempDir dir;
     std::ofstream(dir.file("bad.json")) << R"({"name": "bad", "title": "t", "source": "s",
