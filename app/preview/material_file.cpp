@@ -29,8 +29,17 @@ nlohmann::json readJson(const std::string& path) {
     }
 }
 
+// `gltf` as the scene file at `path` names it: relative to that file's folder where it can be.
+std::string gltfFromSceneFile(const std::string& gltf, const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder = fs::absolute(path, ec).parent_path();
+    const fs::path relative = fs::absolute(gltf, ec).lexically_relative(folder);
+    return !ec && !relative.empty() ? relative.generic_string() : fs::absolute(gltf, ec).generic_string();
+}
+
 void saveMaterialJson(const std::string& path, const std::string& materialName, const nlohmann::json& material,
-                      const std::string& gltf) {
+                      const std::string& gltf, const nlohmann::json& camera = nullptr) {
     nlohmann::json file;
     if (std::filesystem::exists(path)) {
         file = readJson(path);
@@ -38,10 +47,11 @@ void saveMaterialJson(const std::string& path, const std::string& materialName, 
             throw std::runtime_error(path + ": not a woven scene file (no \"gltf\" key); not overwriting it");
         file["materials"][materialName] = material;
     } else if (!gltf.empty()) {
-        file = {{"gltf", gltf}, {"materials", {{materialName, material}}}};
+        file = {{"gltf", gltfFromSceneFile(gltf, path)}, {"materials", {{materialName, material}}}};
     } else {
         file = material;
     }
+    if (!camera.is_null() && file.contains("gltf")) file["camera"] = camera;
     writeFileAtomically(path, [&](const std::string& tmp) {
         std::ofstream out(tmp);
         out << file.dump(2) << "\n";
@@ -54,6 +64,26 @@ void saveMaterialJson(const std::string& path, const std::string& materialName, 
 void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
                   const std::string& gltf) {
     saveMaterialJson(path, materialName, paramsToJson(params), gltf);
+}
+
+void saveScene(const std::string& path, const std::vector<std::pair<std::string, WovenParams>>& materials,
+               const std::string& gltf, const Camera& camera) {
+    const glm::vec3 position(camera.cameraToWorld[3]), forward(-camera.cameraToWorld[2]), up(camera.cameraToWorld[1]);
+    const glm::vec3 target = position + forward;
+    const nlohmann::json view = {{"position", {position.x, position.y, position.z}},
+                                 {"target", {target.x, target.y, target.z}},
+                                 {"up", {up.x, up.y, up.z}},
+                                 {"yfov_degrees", glm::degrees(double(camera.yfov))}};
+    for (const auto& [target, params] : materials) saveMaterialJson(path, target, paramsToJson(params), gltf, view);
+}
+
+std::string sceneGltf(const std::string& scenePath) {
+    if (scenePath.size() < 5 || scenePath.compare(scenePath.size() - 5, 5, ".json") != 0) return scenePath;
+    const nlohmann::json scene = readJson(scenePath);
+    if (!scene.is_object() || !scene.contains("gltf") || !scene["gltf"].is_string())
+        throw std::runtime_error(scenePath + ": not a woven scene file (no \"gltf\" key)");
+    const std::filesystem::path gltf(scene["gltf"].get<std::string>());
+    return gltf.is_absolute() ? gltf.string() : (std::filesystem::path(scenePath).parent_path() / gltf).string();
 }
 
 std::string saveMaterialWithDraft(const std::string& path, const std::string& materialName, const WovenParams& params,

@@ -7,6 +7,7 @@
 
 #include "draft_editor.h"
 #include "material_json.h"
+#include "scene_description.h"
 
 namespace woven {
 
@@ -15,6 +16,16 @@ namespace woven {
 // glTF (the procedural cloth) it becomes the bare parameter object. Written atomically.
 void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
                   const std::string& gltf);
+
+// Every edit (target, parameters) into the woven scene file at `path`, with `camera` as its
+// "camera": a new file names `gltf` (relative to the file's folder where it can be), an existing
+// scene file keeps everything else it has; saved again, it is overwritten the same way.
+void saveScene(const std::string& path, const std::vector<std::pair<std::string, WovenParams>>& materials,
+               const std::string& gltf, const Camera& camera);
+
+// The glTF file a scene path stands for: itself, or the one a woven scene file (.json) names,
+// resolved against its folder; empty for none (the procedural cloth).
+std::string sceneGltf(const std::string& scenePath);
 
 // The same with the draft the material was made from: the draft is written (and renamed) as a
 // WIF file beside `path` (its name with .wif), and the material names it ("wif") instead of

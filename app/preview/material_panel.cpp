@@ -218,10 +218,12 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
     ui::InputText("scene file", materialPath_, sizeof materialPath_);
     const std::string& target = edits_->edits()[size_t(editIndex_)].target;
     if (ui::Button("Save materials")) {
-        // Every edit under its target, as a scene file's "materials" says it.
+        // Every edit under its target, as a scene file's "materials" says it, and the view.
         try {
-            const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
-            for (const WovenEdit& e : edits_->edits()) saveMaterial(materialPath_, e.target, e.params, gltf ? scenePath_ : "");
+            std::vector<std::pair<std::string, WovenParams>> materials;
+            for (const WovenEdit& e : edits_->edits()) materials.emplace_back(e.target, e.params);
+            Camera view = camera_.camera();
+            saveScene(materialPath_, materials, scenePath_.empty() ? "" : sceneGltf(scenePath_), view);
             status_ = std::string("saved ") + materialPath_;
         } catch (const std::exception& e) {
             status_ = e.what();

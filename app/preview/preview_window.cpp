@@ -32,6 +32,14 @@ extern "C" void requestClose(int) { closeRequested = true; }
 // Weaving programs write .wif and .WIF alike.
 bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
 
+// An output's default path: beside the scene, named after it (the procedural cloth's: `fallback`
+// in the working directory).
+std::string besideScene(const std::string& scene, const std::string& suffix, const char* fallback) {
+    if (scene.empty()) return fallback;
+    const std::filesystem::path path(scene);
+    return (path.parent_path() / (path.stem().string() + suffix)).string();
+}
+
 // A window with the newest core context the driver gives, 4.5 down to 3.3.
 GLFWwindow* createWindow(int width, int height) {
     static const int versions[][2] = {{4, 5}, {4, 1}, {3, 3}};
@@ -114,6 +122,9 @@ void PreviewWindow::openScene(const std::string& path) {
     final_.cancel();
     edits_.emplace(std::move(loaded));
     scenePath_ = path;
+    copyToBuffer(materialPath_, besideScene(path, "-tuned.json", "material.json"));
+    copyToBuffer(imagePath_, besideScene(path, "-render.png", "render.png"));
+    copyToBuffer(exportPath_, besideScene(path, "-export.glb", "scene.glb"));
     renderer_->setMeshes(scene());
     picker_.reset();
     pickedMesh_ = -1;
@@ -351,6 +362,9 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
                     {"fabric", chosen ? nlohmann::json(chosenFabric_->name) : nlohmann::json(nullptr)},
                     {"repeat", {p->repeat.x, p->repeat.y}},
                     {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
+                    {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
+                    {"tile_rows", p->tile.size()},
+                    {"draft_open", draft_.has_value() && draftEdit_ == editIndex_},
                     {"measures", measuresLine_}};
     }
     map["state"] = {

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""The previewer's window on the default scene (denim from a draft), driven under Xvfb as a user
+drives it (issue: "what you tune is what you get"):
+
+- left alone, the window rests: under 2 % of a core over 3 s once its view has settled;
+- a weave chosen in the panel replaces the draft's weave (the draft view closes and the status
+  line says so; that the Render button's frame follows is held by test_draft's layering test,
+  through the same materialFromJson());
+- a slider moved after a render hides the stale final frame.
+
+Usage: window_truth_xvfb.py WOVEN_BINARY ASSETS_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from window_click_xvfb import Failure, check, png_pixels, run, window_under_xvfb  # noqa: E402
+
+IDLE_CPU_LIMIT = 0.02  # of one core
+
+
+def cpu_seconds(pid):
+    """User + system CPU time of the process, from /proc (clock ticks)."""
+    with open(f'/proc/{pid}/stat') as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
+def rested(window, quiet=1.5, timeout=90):
+    """Waits until no frame was drawn for `quiet` seconds."""
+    deadline = time.monotonic() + timeout
+    last, since = window.frame(), time.monotonic()
+    while time.monotonic() < deadline:
+        time.sleep(0.1)
+        frame = window.frame()
+        if frame != last:
+            last, since = frame, time.monotonic()
+        elif time.monotonic() - since >= quiet:
+            return
+    raise Failure(f'the window kept drawing for {timeout} s with nothing to do')
+
+
+def scroll_to(window, label, kind):
+    """Scrolls the panel (the mouse wheel over it) until the widget is on screen."""
+    for _ in range(40):
+        item = window.item(label, kind)
+        clip = window.map['windows']['woven']['clip']
+        if item['visible'] and clip[1] <= item['frame'][1] and item['frame'][3] <= clip[3]:
+            return
+        down = item['frame'][1] > clip[1]
+        wx, wy = window.map['state']['window']['pos']
+        window.xdotool('mousemove', str(int(wx + (clip[0] + clip[2]) / 2)), str(int(wy + (clip[1] + clip[3]) / 2)))
+        window.xdotool('click', '5' if down else '4')
+        window.frames()
+    raise Failure(f'"{label}" could not be scrolled into view')
+
+
+def render_and_save(window, tmp, name):
+    scroll_to(window, 'Render', 'button')
+    window.click('Render', 'button')
+    window.wait('the final frame', lambda m: m['state']['final']['done'] and m['state']['final']['shown'], 180)
+    scroll_to(window, 'Save PNG', 'button')
+    window.click('Save PNG', 'button')
+    path = os.path.join(tmp, name)
+    window.wait(f'"saved {name}"', lambda m: m['state']['status'] == f'saved {path}', 30)
+    return png_pixels(path)[2]
+
+
+def scene_in(tmp, assets):
+    """The default scene as a file of tmp's, naming the assets by their absolute paths: the window's
+    outputs go beside the scene."""
+    with open(os.path.join(assets, 'default_scene.json')) as f:
+        scene = json.load(f)
+    scene['gltf'] = os.path.join(assets, scene['gltf'])
+    scene['materials']['Cloth']['wif'] = os.path.join(assets, scene['materials']['Cloth']['wif'])
+    path = os.path.join(tmp, 'denim.json')
+    with open(path, 'w') as f:
+        json.dump(scene, f)
+    return path
+
+
+def main(woven, assets):
+    with tempfile.TemporaryDirectory(prefix='woven-truth-') as tmp, \
+            window_under_xvfb(woven, tmp, ('--spp', '2', '--integrator', 'path', scene_in(tmp, assets))) as window:
+        m = window.wait('the first widget map', lambda m: m['state']['frame'] >= 2, 60)
+        check(m['state']['material']['draft_open'], 'the default denim did not open its draft')
+
+        # A software-rendered frame of this scene may take a second or more: the measurement
+        # counts once no frame was drawn during it.
+        for attempt in range(10):
+            rested(window)
+            frame, before = window.frame(), cpu_seconds(window.process.pid)
+            time.sleep(3.0)
+            used = (cpu_seconds(window.process.pid) - before) / 3.0
+            if window.frame() == frame:
+                break
+        print(f'idle: {used:.1%} of a core, frame {window.frame()}')
+        check(used < IDLE_CPU_LIMIT, f'the resting window used {used:.1%} of a core (at most {IDLE_CPU_LIMIT:.0%})')
+
+        render_and_save(window, tmp, 'denim-render.png')
+
+        # A slider moved: the denim's final frame is stale, and hidden.
+        scroll_to(window, 'weft e_x (along yarn)', 'drag')
+        x0, y0, x1, y1 = window.item('weft e_x (along yarn)', 'drag')['frame']
+        wx, wy = window.map['state']['window']['pos']
+        window.xdotool('mousemove', str(int(wx + (x0 + x1) / 2)), str(int(wy + (y0 + y1) / 2)))
+        window.frames()
+        window.xdotool('mousedown', '1')
+        window.frames()
+        for _ in range(4):
+            window.xdotool('mousemove_relative', '--', '10', '0')
+            window.frames()
+        window.xdotool('mouseup', '1')
+        m = window.wait('the final frame hidden', lambda m: not m['state']['final']['shown'], 30)
+        print('a slider moved after Render hides the final frame')
+
+        # A weave chosen over the draft: sateen (1,4,2).
+        scroll_to(window, 'weave preset', 'combo')
+        window.click('weave preset', 'combo')
+        window.wait('the weave presets listed', lambda m: any(i['label'] == 'sateen (1,4,2)' and i['visible']
+                                                               for i in m['items']), 30)
+        window.frames()
+        window.click('sateen (1,4,2)', 'selectable')
+        m = window.wait('the sateen chosen', lambda m: m['state']['material']['pattern'] == [1, 4, 2], 30)
+        material = m['state']['material']
+        check(material['tile_rows'] == 0 and not material['draft_open'],
+              f'the draft\'s tile or view stayed: {material}')
+        check('replaces the draft' in m['state']['status'], f'status "{m["state"]["status"]}"')
+        print('sateen chosen over the denim draft: the draft replaced, and said so')
+
+        # Save, twice: a woven scene file beside the scene, naming its glTF, with the view and the
+        # sateen, that `woven render` renders.
+        saved = os.path.join(tmp, 'denim-tuned.json')
+        for time_ in ('first', 'second'):
+            scroll_to(window, 'Save materials', 'button')
+            window.click('Save materials', 'button')
+            window.wait(f'the {time_} save', lambda m: m['state']['status'] == f'saved {saved}', 30)
+            with open(saved) as f:
+                written = json.load(f)
+            check(os.path.isabs(written['gltf']) or os.path.exists(os.path.join(tmp, written['gltf'])),
+                  f'{saved} names a glTF that is not there: {written["gltf"]}')
+            check(written['materials']['Cloth']['pattern'] == [1, 4, 2] and 'tile' not in written['materials']['Cloth'],
+                  f'{saved} does not hold the sateen: {written["materials"]["Cloth"]}')
+            check('camera' in written, f'{saved} has no camera')
+            window.frames()
+        result = subprocess.run([woven, 'render', saved, '--width', '32', '--height', '24', '--spp', '1', '-o',
+                                 os.path.join(tmp, 'saved.png')], capture_output=True, text=True, timeout=120)
+        check(result.returncode == 0, f'woven render {saved} failed: {result.stderr}')
+        print(f'saved twice to {os.path.basename(saved)}, which woven render renders')
+
+
+if __name__ == '__main__':
+    run(main, sys.argv[1], sys.argv[2])
