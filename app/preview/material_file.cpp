@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include "atomic_file.h"
@@ -90,7 +91,14 @@ std::string saveMaterialWithDraft(const std::string& path, const std::string& ma
                                   const std::string& gltf, DraftEditor& draft) {
     const std::filesystem::path wif = std::filesystem::path(path).replace_extension(".wif");
     nlohmann::json material = paramsToJson(params);
-    for (const std::string& field : fieldsSetByDraft(draft.draft())) material.erase(field);
+    // What the draft sets, and the keys that would replace it (materialFromJson(): `pattern` a
+    // draft's tile, a side's colour its per-thread colours).
+    static const std::map<std::string, std::string> replacing = {
+        {"tile", "pattern"}, {"weft_colors", "weft_color"}, {"warp_colors", "warp_color"}};
+    for (const std::string& field : fieldsSetByDraft(draft.draft())) {
+        material.erase(field);
+        if (const auto key = replacing.find(field); key != replacing.end()) material.erase(key->second);
+    }
     material["wif"] = wif.filename().string();  // beside the material file
     draft.save(wif.string());
     saveMaterialJson(path, materialName, material, gltf);
