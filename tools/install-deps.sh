@@ -24,6 +24,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libopenimageio-dev libdraco-dev libmeshoptimizer-dev libwebp-dev
   libfftw3-dev libnlopt-cxx-dev  # woven fit's spectra and optimiser
+  zlib1g-dev  # the U3MA archive of woven export (deflate, CRC-32)
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
 )
 test_packages=(

@@ -190,6 +190,12 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
                 const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
                 params = scaledToMeshes(read, scene, meshes, warnings);
                 if (!read.wif.empty()) material.draft = read.wif;
+                if (read.threadsPerCm) {
+                    material.textile = read.textile;
+                    material.textile->threadsPerCm = glm::dvec2(*read.threadsPerCm);
+                } else if (layer.contains("repeat")) {
+                    material.textile.reset();  // a size of its own, no longer the cloth's real one
+                }
             } catch (const std::exception& e) {  // a bad key, a draft that cannot be used, no UVs to scale by
                 fail(assignments[a], e.what());
             }
