@@ -1,6 +1,7 @@
 // `woven bake SCENE -o DIR`: each woven material's glTF textures (and mip levels) as PNG files;
 // `woven export SCENE -o OUT.glb`: the scene as a standard glTF file, woven materials baked,
 // with --report the bake's error against the model (docs/EXPORT.md).
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "scene_camera.h"
 #include "scene_export.h"
 #include "scene_loader.h"
+#include "share_page.h"
 #include "u3m_export.h"
 #include "woven_assignment.h"
 
@@ -31,6 +33,7 @@ struct ExportCommand {
     bool report = false, mips = false;
     ReportOptions reportOptions;
     U3mOptions u3m;
+    ShareOptions share;
 };
 
 // The scene with the command line's --woven edits; no default lighting (glTF has no place for it).
@@ -153,6 +156,25 @@ void runExport(ExportCommand o) {
     }
 }
 
+// The page folder of `woven share` (share_page.h).
+void runShare(ExportCommand o) {
+    o.share.export_ = o.options;
+    o.share.export_.bake.sheen = !o.noSheen;
+    o.share.export_.bake.anisotropy = !o.isotropic;
+    const char* viewer = std::getenv("WOVEN_MODEL_VIEWER");
+    o.share.modelViewer = viewer && *viewer ? viewer : WOVEN_MODEL_VIEWER_JS;
+    const auto bar = std::make_shared<ProgressBar>("bake");
+    showBakeProgress(o.share.export_.bake, bar);
+    const SceneDescription scene = loadWithEdits(o);
+    for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
+        refuseOverwritingInputs((std::filesystem::path(o.out) / file).string(), scene.inputFiles);
+    std::cerr << "share: baking the woven materials of " << o.scene << ", then woven's render for the poster\n";
+    const std::vector<std::string> warnings = writeSharePage(scene, o.out, o.share);
+    bar->finish();
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    std::cerr << "wrote " << (std::filesystem::path(o.out) / "index.html").string() << "\n";
+}
+
 }  // namespace
 
 void addExportCommands(CLI::App& app) {
@@ -179,6 +201,15 @@ void addExportCommands(CLI::App& app) {
     addBakeOptions(*bake, *b);
     bake->add_flag("--mips", b->mips, "also write every mip level, fitted in the model (NAME_MAP_mipN.png)");
     bake->callback([b] { runBake(*b); });
+
+    auto p = std::make_shared<ExportCommand>();
+    CLI::App* share = app.add_subcommand("share", "Write a web page that shows the scene's cloth in a browser, offline (model-viewer)");
+    share->add_option("scene", p->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    share->add_option("-o,--out", p->out, "the page's folder (created if missing): index.html, scene.glb, poster.png, ...")->required();
+    addBakeOptions(*share, *p);
+    share->add_option("--poster-size", p->share.posterSize, "pixels along the poster render's longer side (default 640)")->check(CLI::Range(16, 8192));
+    share->add_option("--poster-spp", p->share.posterSpp, "samples per pixel of the poster render (default 64)")->check(CLI::Range(1, 1 << 16));
+    share->callback([p] { runShare(*p); });
 }
 
 }  // namespace woven

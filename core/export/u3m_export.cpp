@@ -1,7 +1,6 @@
 #include "u3m_export.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -10,17 +9,15 @@
 #include <sstream>
 
 #include "atomic_file.h"
-#include "display_transform.h"
-#include "frame_denoise.h"
+#include "final_preview.h"
 #include "frame_io.h"
 #include "image_io.h"
 #include "lobe_fit.h"
-#include "render_job.h"
-#include "scene_lighting.h"
 #include "srgb.h"
 #include "u3m_physics.h"
 #include "u3ma_archive.h"
 #include "uv_scale.h"
+#include "weave_pattern.h"
 #include "woven_params_json.h"
 
 namespace woven {
@@ -51,7 +48,8 @@ int chooseMaterial(const SceneDescription& scene, const std::string& name) {
     throw U3mError(scene.source + ": --material '" + name + "' is no woven material of the scene; its woven materials: " + names);
 }
 
-// The cloth's ends and picks per cm: as its material gave them, else its repeat on its meshes.
+}  // namespace
+
 glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material) {
     const Material& m = scene.materials[size_t(material)];
     if (m.textile && m.textile->threadsPerCm) return *m.textile->threadsPerCm;
@@ -65,6 +63,8 @@ glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material) {
                        "): give its thread counts (ends_per_cm and picks_per_cm)");
     }
 }
+
+namespace {
 
 // One channel of a map as a grey PNG (R = G = B, opaque), which U3M's scalar maps take.
 TextureImage greyMap(const TextureImage& from, const std::function<float(glm::u8vec4)>& value, double& mean) {
@@ -165,29 +165,6 @@ struct FaceWriter {
     }
 };
 
-// The scene as woven renders it by default (its camera, default light where it has none), small.
-TextureImage renderPreview(const SceneDescription& scene, const U3mOptions& o) {
-    SceneDescription lit = scene;
-    lightByDefault(lit);
-    RenderSettings settings = defaultRenderSettings(lit);
-    const double aspect = double(settings.width) / double(settings.height);
-    settings.width = aspect >= 1.0 ? o.previewSize : std::max(1, int(std::lround(o.previewSize * aspect)));
-    settings.height = aspect >= 1.0 ? std::max(1, int(std::lround(o.previewSize / aspect))) : o.previewSize;
-    settings.spp = o.previewSpp;
-    RenderJob job(std::make_shared<const SceneDescription>(lit), settings);
-    const std::atomic<bool> cancel{false};
-    job.run(cancel);
-    FilmImage film = job.snapshot();
-    denoiseFilm(film);
-    TextureImage t;
-    t.width = film.radiance.width, t.height = film.radiance.height;
-    for (const glm::vec3& p : film.denoised ? film.denoised->pixels : film.radiance.pixels) {
-        const glm::u8vec3 c = displayColor(p, {});
-        t.bytes.emplace_back(c.r, c.g, c.b, 255);
-    }
-    return t;
-}
-
 std::string uuid4() {
     std::random_device device;
     std::mt19937_64 random((uint64_t(device()) << 32) ^ device());
@@ -278,7 +255,7 @@ U3mExport exportU3m(const SceneDescription& scene, const std::string& path, cons
     FaceWriter faces{stem + "_textures/", out.mapMm, files};
     nlohmann::json frontJson = faces.face("front", front), backJson = faces.face("back", back);
     if (options.previewSize > 0) {
-        const TextureImage preview = renderPreview(scene, options);
+        const TextureImage preview = renderFinalPreview(scene, options.previewSize, options.previewSpp);
         const std::string file = faces.folder + "preview.png";
         files.push_back({file, encodeTexturePng(preview)});
         // A render has no size on the cloth; the preview claims 10 cm across, its dpi to match.

@@ -41,6 +41,11 @@ struct U3mExport {
     std::vector<std::string> notes;  // what U3M cannot say and the export approximated
 };
 
+// The cloth's ends and picks per cm: as its material gave them (thread counts, "scale": "draft",
+// a preset), else its `repeat` on the meshes that use it. Throws U3MError for a material on no
+// mesh with texture coordinates.
+glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material);
+
 // The woven parameters of the cloth's other face: the weave's top yarn swapped in every cell.
 WovenParams backFace(const WovenParams& front);
 
