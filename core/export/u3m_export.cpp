@@ -231,11 +231,7 @@ U3mExport exportU3m(const SceneDescription& scene, const std::string& path, cons
     const TextileKeys textile = material.textile.value_or(TextileKeys{std::nullopt, std::nullopt, std::nullopt, fibres().front().density, ""});
     if (!(threadsPerCm.x > 0.0 && threadsPerCm.y > 0.0 && std::isfinite(threadsPerCm.x) && std::isfinite(threadsPerCm.y)))
         throw U3mError(scene.source + ": material '" + material.name + "': its real size is unknown: give its thread counts");
-    checkOutput(path);
-    if (fs::exists(path)) {
-        std::error_code ec;
-        if (fs::is_directory(path, ec)) throw U3mError(path + ": is a folder");
-    }
+    checkOutput(path);  // also refuses a folder by that name
 
     U3mExport out;
     out.material = material.name;

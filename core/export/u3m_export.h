@@ -42,7 +42,7 @@ struct U3mExport {
 };
 
 // The cloth's ends and picks per cm: as its material gave them (thread counts, "scale": "draft",
-// a preset), else its `repeat` on the meshes that use it. Throws U3MError for a material on no
+// a preset), else its `repeat` on the meshes that use it. Throws U3mError for a material on no
 // mesh with texture coordinates.
 glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material);
 

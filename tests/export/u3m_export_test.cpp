@@ -270,6 +270,11 @@ TEST_F(U3mCommandTest, TheFolderFormWritesTheU3mBesideItsTextures) {
             check.files[std::filesystem::relative(entry.path(), dir_).string()] = readRegularFile(entry.path().string(), size_t(1) << 30);
     check.document(u3m);
     for (const std::string& p : check.problems) ADD_FAILURE() << p;
+    // woven reads the folder form back as it reads the archive.
+    const std::string scene = file("read.json");
+    std::ofstream(scene) << json{{"gltf", std::string(WOVEN_ASSETS_DIR) + "/cloth_drape.glb"}, {"materials", {{"Cloth", {{"u3m", "satin.u3m"}}}}}}.dump();
+    const test::RunResult listed = runWovenCommand("render '" + scene + "' --list");
+    EXPECT_EQ(listed.exitCode, 0) << listed.out;
 }
 
 TEST_F(U3mCommandTest, BadInputIsRefusedByNameAndLeavesNoFile) {
