@@ -158,13 +158,13 @@ void runExport(ExportCommand o) {
 
 // The page folder of `woven share` (share_page.h).
 void runShare(ExportCommand o) {
-    o.share.export_ = o.options;
-    o.share.export_.bake.sheen = !o.noSheen;
-    o.share.export_.bake.anisotropy = !o.isotropic;
+    o.share.exportOptions = o.options;
+    o.share.exportOptions.bake.sheen = !o.noSheen;
+    o.share.exportOptions.bake.anisotropy = !o.isotropic;
     const char* viewer = std::getenv("WOVEN_MODEL_VIEWER");
     o.share.modelViewer = viewer && *viewer ? viewer : WOVEN_MODEL_VIEWER_JS;
     const auto bar = std::make_shared<ProgressBar>("bake");
-    showBakeProgress(o.share.export_.bake, bar);
+    showBakeProgress(o.share.exportOptions.bake, bar);
     const SceneDescription scene = loadWithEdits(o);
     for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
         refuseOverwritingInputs((std::filesystem::path(o.out) / file).string(), scene.inputFiles);

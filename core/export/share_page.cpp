@@ -156,7 +156,7 @@ std::vector<std::string> writeSharePage(const SceneDescription& scene, const std
         throw ShareError(folder + ": cannot create the page's folder" + (ec ? " (" + ec.message() + ")" : ""));
     std::vector<std::string> warnings;
     try {
-        warnings = exportScene(scene, (dir / "scene.glb").string(), options.export_);
+        warnings = exportScene(scene, (dir / "scene.glb").string(), options.exportOptions);
         writeBytes((dir / "model-viewer.min.js").string(), viewer);
         const std::vector<unsigned char> poster = encodeTexturePng(renderFinalPreview(scene, options.posterSize, options.posterSpp));
         writeBytes((dir / "poster.png").string(), std::string(poster.begin(), poster.end()));

@@ -21,7 +21,7 @@ struct ShareError : std::runtime_error {
 };
 
 struct ShareOptions {
-    ExportOptions export_;
+    ExportOptions exportOptions;
     std::string modelViewer;  // model-viewer-umd.min.js from @google/model-viewer's dist/
     int posterSize = 640;     // pixels along the poster's longer side
     int posterSpp = 64;
