@@ -66,19 +66,24 @@ glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material) {
 
 namespace {
 
-// One channel of a map as a grey PNG (R = G = B, opaque), which U3M's scalar maps take.
-TextureImage greyMap(const TextureImage& from, const std::function<float(glm::u8vec4)>& value, double& mean) {
-    TextureImage grey;
-    grey.width = from.width, grey.height = from.height;
-    grey.bytes.reserve(from.bytes.size());
+// One channel of a map as a grey PNG (R = G = B, opaque), which U3M's scalar maps take, and the
+// channel's mean, the constant that stands for the map.
+struct GreyMap {
+    TextureImage image;
+    double mean = 0.0;
+};
+GreyMap greyMap(const TextureImage& from, const std::function<float(glm::u8vec4)>& value) {
+    GreyMap grey;
+    grey.image.width = from.width, grey.image.height = from.height;
+    grey.image.bytes.reserve(from.bytes.size());
     double sum = 0.0;
     for (const glm::u8vec4& t : from.bytes) {
         const float v = std::clamp(value(t), 0.0f, 1.0f);
         sum += v;
         const auto b = uint8_t(std::lround(v * 255.0f));
-        grey.bytes.emplace_back(b, b, b, 255);
+        grey.image.bytes.emplace_back(b, b, b, 255);
     }
-    mean = from.bytes.empty() ? 0.0 : sum / double(from.bytes.size());
+    grey.mean = from.bytes.empty() ? 0.0 : sum / double(from.bytes.size());
     return grey;
 }
 
@@ -99,15 +104,14 @@ struct FaceWriter {
                 {"dpi", {{"x", t.width / (mm.x / 25.4)}, {"y", t.height / (mm.y / 25.4)}}},
                 {"repeat", {{"mode", "normal"}, {"rotation", 0.0}}}};
     }
-    nlohmann::json scalar(const std::string& file, const TextureImage& t, double mean, double factor = 1.0) {
-        return {{"constant", mean * factor}, {"texture", {{"factor", factor}, {"offset", 0.0}, {"image", image(file, t)}}}};
+    nlohmann::json scalar(const std::string& file, const GreyMap& grey, double factor = 1.0) {
+        return {{"constant", grey.mean * factor}, {"texture", {{"factor", factor}, {"offset", 0.0}, {"image", image(file, grey.image)}}}};
     }
 
     nlohmann::json face(const std::string& side, const BakedMaterial& b) {
         const Material& m = b.material;
         const std::vector<TextureImage>& maps = b.textures;
         const TextureImage& base = maps[BakedMaterial::kBaseColor];
-        double mean = 0.0;
         // Base colour: sRGB as baked; the constant is its mean taken in linear light.
         glm::dvec3 linear(0.0);
         for (const glm::u8vec4& t : base.bytes) linear += glm::dvec3(srgbToLinear(unit(t.r)), srgbToLinear(unit(t.g)), srgbToLinear(unit(t.b)));
@@ -118,22 +122,22 @@ struct FaceWriter {
         v["shader"] = "principled";
         v["basecolor"] = {{"constant", {{"r", linearToSrgb(float(linear.r))}, {"g", linearToSrgb(float(linear.g))}, {"b", linearToSrgb(float(linear.b))}}},
                           {"texture", {{"mode", "multiply"}, {"factor", {{"r", 1.0}, {"g", 1.0}, {"b", 1.0}}}, {"image", image(side + "_basecolor.png", opaque)}}}};
-        v["alpha"] = scalar(side + "_alpha.png", greyMap(base, [](glm::u8vec4 t) { return unit(t.a); }, mean), mean);
+        v["alpha"] = scalar(side + "_alpha.png", greyMap(base, [](glm::u8vec4 t) { return unit(t.a); }));
         v["normal"] = {{"constant", {{"x", 0.0}, {"y", 0.0}, {"z", 1.0}}},
                        {"texture", {{"scale", 1.0}, {"image", image(side + "_normal.png", maps[BakedMaterial::kNormal])}}}};
         v["roughness"] = scalar(side + "_roughness.png",
-                                greyMap(maps[BakedMaterial::kMetallicRoughness], [](glm::u8vec4 t) { return unit(t.g); }, mean), mean);
+                                greyMap(maps[BakedMaterial::kMetallicRoughness], [](glm::u8vec4 t) { return unit(t.g); }));
         v["metalness"] = {{"constant", 0.0}, {"texture", nullptr}};
         if (m.anisotropy.texture) {
             const TextureImage& a = maps[BakedMaterial::kAnisotropy];
-            v["anisotropy_value"] = scalar(side + "_anisotropy_value.png", greyMap(a, [](glm::u8vec4 t) { return unit(t.b); }, mean), mean);
+            v["anisotropy_value"] = scalar(side + "_anisotropy_value.png", greyMap(a, [](glm::u8vec4 t) { return unit(t.b); }));
             // glTF's direction (x along the tangent, y along the bitangent, as the normal map's)
             // as U3M's rotation, a fraction of a turn; an axis, so half a turn apart is the same.
             const auto turn = [](glm::u8vec4 t) {
                 const float r = std::atan2(signedUnit(t.g), signedUnit(t.r)) / float(2.0 * M_PI);
                 return r < 0.0f ? r + 1.0f : r;
             };
-            v["anisotropy_rotation"] = scalar(side + "_anisotropy_rotation.png", greyMap(a, turn, mean), mean);
+            v["anisotropy_rotation"] = scalar(side + "_anisotropy_rotation.png", greyMap(a, turn));
         } else {
             v["anisotropy_value"] = {{"constant", 0.0}, {"texture", nullptr}};
             v["anisotropy_rotation"] = {{"constant", 0.0}, {"texture", nullptr}};
@@ -150,9 +154,8 @@ struct FaceWriter {
                                        greyMap(maps[BakedMaterial::kDiffuseTransmission],
                                                [](glm::u8vec4 t) {
                                                    return float(luminance(glm::vec3(srgbToLinear(unit(t.r)), srgbToLinear(unit(t.g)), srgbToLinear(unit(t.b)))));
-                                               },
-                                               mean),
-                                       mean, m.diffuseTransmission.factor);
+                                               }),
+                                       m.diffuseTransmission.factor);
         } else {
             v["transmission"] = {{"constant", 0.0}, {"texture", nullptr}};
         }

@@ -77,6 +77,15 @@ struct SchemaCheck {
         if (!keys(j["texture"], where + ".texture", {"factor", "offset", "image"})) return;
         number(j["texture"]["factor"], where + ".texture.factor"), number(j["texture"]["offset"], where + ".texture.offset");
         image(j["texture"]["image"], where + ".texture.image", true);
+        // The constant stands for the map: its mean value after factor and offset (u3m_additional_spec_u3m.txt).
+        const auto file = files.find(j["texture"]["image"].value("path", ""));
+        if (file == files.end() || !j["constant"].is_number() || !j["texture"]["factor"].is_number()) return;
+        const TextureImage t = decodeTexture(file->second.data(), file->second.size(), file->first);
+        double sum = 0.0;
+        for (const glm::u8vec4& b : t.bytes) sum += (b.r + b.g + b.b) / 765.0;
+        const double mean = j["texture"]["offset"].get<double>() + j["texture"]["factor"].get<double>() * sum / double(t.bytes.size());
+        if (std::abs(j["constant"].get<double>() - mean) > 0.01 * std::max(1.0, std::abs(mean)))
+            fail(where, "constant " + j["constant"].dump() + " is not its map's mean " + std::to_string(mean));
     }
     void color(const json& j, const std::string& where) {
         if (!keys(j, where, {"r", "g", "b"})) return;
