@@ -121,11 +121,9 @@ std::string fabricLines(const SceneDescription& scene) {
         if (m.material < 0 || !scene.materials[size_t(m.material)].woven || std::find(done.begin(), done.end(), m.material) != done.end()) continue;
         done.push_back(m.material);
         const Material& material = scene.materials[size_t(m.material)];
-        const TextileKeys textile = material.textile.value_or(TextileKeys{std::nullopt, std::nullopt, std::nullopt, fibres().front().density, ""});
         std::string line = "<b>" + escapeHtml(material.name) + "</b>: ";
         try {
-            const FabricMeasures f = measureFabric(*material.woven, realThreadsPerCm(scene, m.material), textile.warpTex, textile.weftTex,
-                                                   textile.fibreDensity);
+            const FabricMeasures f = measureSceneMaterial(scene, m.material);
             char s[200];
             std::snprintf(s, sizeof s, "%.4g x %.4g threads/cm, %s%.0f g/m&sup2;, ", f.threadsPerCm.x, f.threadsPerCm.y,
                           f.weightFromWidths ? "about " : "", f.gramsPerSquareMetre);

@@ -50,18 +50,30 @@ int chooseMaterial(const SceneDescription& scene, const std::string& name) {
 
 }  // namespace
 
-glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material) {
+TextileKeys textileOf(const Material& m) {
+    return m.textile.value_or(TextileKeys{std::nullopt, std::nullopt, std::nullopt, fibres().front().density, ""});
+}
+
+FabricMeasures measureSceneMaterial(const SceneDescription& scene, int material) {
     const Material& m = scene.materials[size_t(material)];
-    if (m.textile && m.textile->threadsPerCm) return *m.textile->threadsPerCm;
-    std::vector<size_t> meshes;
-    for (size_t i = 0; i < scene.meshes.size(); ++i)
-        if (scene.meshes[i].material == material) meshes.push_back(i);
-    try {
-        return glm::dvec2(m.woven->repeat) / (100.0 * worldLengthPerUv(scene, meshes));
-    } catch (const std::invalid_argument& e) {
-        throw U3mError(scene.source + ": material '" + m.name + "': its real size is unknown (" + e.what() +
-                       "): give its thread counts (ends_per_cm and picks_per_cm)");
+    const TextileKeys textile = textileOf(m);
+    glm::dvec2 threadsPerCm(0.0);
+    if (textile.threadsPerCm) {
+        threadsPerCm = *textile.threadsPerCm;
+    } else {
+        std::vector<size_t> meshes;
+        for (size_t i = 0; i < scene.meshes.size(); ++i)
+            if (scene.meshes[i].material == material) meshes.push_back(i);
+        try {
+            threadsPerCm = glm::dvec2(m.woven->repeat) / (100.0 * worldLengthPerUv(scene, meshes));
+        } catch (const std::invalid_argument& e) {
+            throw U3mError(scene.source + ": material '" + m.name + "': its real size is unknown (" + e.what() +
+                           "): give its thread counts (ends_per_cm and picks_per_cm)");
+        }
     }
+    if (!(threadsPerCm.x > 0.0 && threadsPerCm.y > 0.0 && std::isfinite(threadsPerCm.x) && std::isfinite(threadsPerCm.y)))
+        throw U3mError(scene.source + ": material '" + m.name + "': its real size is unknown: give its thread counts");
+    return measureFabric(*m.woven, threadsPerCm, textile.warpTex, textile.weftTex, textile.fibreDensity);
 }
 
 namespace {
@@ -204,6 +216,14 @@ nlohmann::json wovenSection(const Material& m, const glm::dvec2& threadsPerCm) {
     return j;
 }
 
+void writeFile(const std::string& path, const std::vector<unsigned char>& bytes) {
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream f(tmp, std::ios::binary);
+        f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        if (!f) throw FileWriteError(tmp + ": could not be written");
+    });
+}
+
 void checkOutput(const std::string& path) {
     try {
         checkWritable(path);  // and so its folder, where the .u3m's textures go
@@ -230,15 +250,11 @@ U3mExport exportU3m(const SceneDescription& scene, const std::string& path, cons
     const int index = chooseMaterial(scene, options.material);
     const Material& material = scene.materials[size_t(index)];
     const WovenParams& params = *material.woven;
-    const glm::dvec2 threadsPerCm = realThreadsPerCm(scene, index);
-    const TextileKeys textile = material.textile.value_or(TextileKeys{std::nullopt, std::nullopt, std::nullopt, fibres().front().density, ""});
-    if (!(threadsPerCm.x > 0.0 && threadsPerCm.y > 0.0 && std::isfinite(threadsPerCm.x) && std::isfinite(threadsPerCm.y)))
-        throw U3mError(scene.source + ": material '" + material.name + "': its real size is unknown: give its thread counts");
-    checkOutput(path);  // also refuses a folder by that name
-
     U3mExport out;
     out.material = material.name;
-    out.measures = measureFabric(params, threadsPerCm, textile.warpTex, textile.weftTex, textile.fibreDensity);
+    out.measures = measureSceneMaterial(scene, index);
+    const glm::dvec2 threadsPerCm = out.measures.threadsPerCm;
+    checkOutput(path);  // also refuses a folder by that name
     BakedMaterial front, back;
     try {
         front = bakeWoven(params, options.bake);
@@ -274,7 +290,7 @@ U3mExport exportU3m(const SceneDescription& scene, const std::string& path, cons
           {"front", frontJson},
           {"back", backJson},
           {"side", nullptr},
-          {"physics", u3mPhysics(params, out.measures, textile)},
+          {"physics", u3mPhysics(params, out.measures, textileOf(material))},
           {"metadata", nullptr}}},
         {"custom", {{"woven", {{"version", 1}, {"material", wovenSection(material, threadsPerCm)}}}}},
     };
@@ -283,22 +299,12 @@ U3mExport exportU3m(const SceneDescription& scene, const std::string& path, cons
     try {
         if (archive) {
             files.insert(files.begin(), u3m);
-            const std::vector<unsigned char> bytes = packU3ma(files, now);
-            writeFileAtomically(path, [&](const std::string& tmp) {
-                std::ofstream f(tmp, std::ios::binary);
-                f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-                if (!f) throw FileWriteError(tmp + ": could not be written");
-            });
+            writeFile(path, packU3ma(files, now));
         } else {
             const fs::path folder = fs::path(path).parent_path();
             fs::create_directories(folder / faces.folder);
             files.push_back({fs::path(path).filename().string(), u3m.bytes});  // the .u3m last: a finished file set
-            for (const ArchiveEntry& e : files)
-                writeFileAtomically((folder / e.name).string(), [&](const std::string& tmp) {
-                    std::ofstream f(tmp, std::ios::binary);
-                    f.write(reinterpret_cast<const char*>(e.bytes.data()), std::streamsize(e.bytes.size()));
-                    if (!f) throw FileWriteError(tmp + ": could not be written");
-                });
+            for (const ArchiveEntry& e : files) writeFile((folder / e.name).string(), e.bytes);
         }
     } catch (const std::exception& e) {
         throw U3mError(path + ": " + e.what());

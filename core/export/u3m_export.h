@@ -41,10 +41,14 @@ struct U3mExport {
     std::vector<std::string> notes;  // what U3M cannot say and the export approximated
 };
 
-// The cloth's ends and picks per cm: as its material gave them (thread counts, "scale": "draft",
-// a preset), else its `repeat` on the meshes that use it. Throws U3mError for a material on no
-// mesh with texture coordinates.
-glm::dvec2 realThreadsPerCm(const SceneDescription& scene, int material);
+// What the material's woven layers said of the real cloth (Material::textile); else no counts,
+// no fibre named, and cotton's density, as measureFabric() takes them.
+TextileKeys textileOf(const Material& m);
+
+// The woven material's measures (fabric_measures.h) at its real thread count: as its material
+// gave it (thread counts, "scale": "draft", a preset), else its `repeat` on the meshes that use
+// it. Throws U3mError for a material on no mesh with texture coordinates.
+FabricMeasures measureSceneMaterial(const SceneDescription& scene, int material);
 
 // The woven parameters of the cloth's other face: the weave's top yarn swapped in every cell.
 WovenParams backFace(const WovenParams& front);
