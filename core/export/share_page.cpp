@@ -150,8 +150,13 @@ std::vector<std::string> writeSharePage(const SceneDescription& scene, const std
     }
     const fs::path dir(folder);
     std::error_code ec;
-    if (!fs::is_directory(dir, ec) && !fs::create_directory(dir, ec))
+    const bool created = !fs::is_directory(dir, ec);
+    if (created && !fs::create_directory(dir, ec))
         throw ShareError(folder + ": cannot create the page's folder" + (ec ? " (" + ec.message() + ")" : ""));
+    // A failure leaves no index.html (written last), and no folder where it made one and wrote nothing.
+    const auto removeIfEmpty = [&] {
+        if (created) fs::remove(dir, ec);
+    };
     std::vector<std::string> warnings;
     try {
         warnings = exportScene(scene, (dir / "scene.glb").string(), options.exportOptions);
@@ -185,8 +190,10 @@ std::vector<std::string> writeSharePage(const SceneDescription& scene, const std
              << "</body>\n</html>\n";
         writeBytes((dir / "index.html").string(), html.str());
     } catch (const ExportError& e) {
+        removeIfEmpty();
         throw ShareError(e.what());
     } catch (const std::exception& e) {
+        removeIfEmpty();
         throw ShareError(folder + ": " + e.what());
     }
     return warnings;

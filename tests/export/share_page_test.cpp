@@ -74,7 +74,14 @@ TEST_F(SharePageTest, WithoutModelViewerItSaysWhereToGetIt) {
     EXPECT_NE(status, 0);
     EXPECT_NE(out.find("model-viewer"), std::string::npos) << out;
     EXPECT_NE(out.find("install-deps.sh"), std::string::npos) << out;
-    EXPECT_FALSE(std::filesystem::exists(file("page3") + "/index.html"));
+    EXPECT_FALSE(std::filesystem::exists(file("page3")));
+}
+
+TEST_F(SharePageTest, ASceneWithNothingWovenIsRefusedAndLeavesNoFolder) {
+    const test::RunResult r = test::runWovenCommand("share '" + std::string(WOVEN_ASSETS_DIR) + "/lampshade.gltf' -o '" + file("page") + "'");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("no part of the scene is woven"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(file("page")));
 }
 
 }  // namespace
