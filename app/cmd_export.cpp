@@ -1,6 +1,7 @@
 // `woven bake SCENE -o DIR`: each woven material's glTF textures (and mip levels) as PNG files;
 // `woven export SCENE -o OUT.glb`: the scene as a standard glTF file, woven materials baked,
 // with --report the bake's error against the model (docs/EXPORT.md).
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -8,6 +9,7 @@
 #include "bake_report.h"
 #include "commands.h"
 #include "flat_cloth.h"
+#include "frame_io.h"
 #include "gltf_writer.h"
 #include "image_io.h"
 #include "output_path.h"
@@ -15,6 +17,8 @@
 #include "scene_camera.h"
 #include "scene_export.h"
 #include "scene_loader.h"
+#include "share_page.h"
+#include "u3m_export.h"
 #include "woven_assignment.h"
 
 namespace woven {
@@ -28,6 +32,8 @@ struct ExportCommand {
     bool noSheen = false, isotropic = false;
     bool report = false, mips = false;
     ReportOptions reportOptions;
+    U3mOptions u3m;
+    ShareOptions share;
 };
 
 // The scene with the command line's --woven edits; no default lighting (glTF has no place for it).
@@ -104,9 +110,32 @@ void runBake(ExportCommand o) {
     }
 }
 
+bool isU3m(const std::string& path) {
+    const std::string e = lowerExtension(path);
+    return e == ".u3ma" || e == ".u3m";
+}
+
+// One woven material as a U3M (u3m_export.h), its physics and map size on stdout.
+void runU3mExport(ExportCommand o) {
+    o.u3m.bake = o.options.bake;
+    const auto bar = std::make_shared<ProgressBar>("bake");
+    showBakeProgress(o.u3m.bake, bar);
+    const SceneDescription scene = loadWithEdits(o);
+    refuseOverwritingInputs(o.out, scene.inputFiles);
+    std::cerr << "export: baking the front and back of a woven material of " << o.scene << "\n";
+    const U3mExport u = exportU3m(scene, o.out, o.u3m);
+    bar->finish();
+    for (const std::string& note : u.notes) std::cerr << "note: material '" << u.material << "': " << note << "\n";
+    const nlohmann::json& physics = u.document["material"]["physics"];
+    std::cout << "material '" << u.material << "': " << describe(u.measures) << "; " << physics["construction"]["type"].get<std::string>()
+              << ", " << physics["thickness"].get<double>() << " mm thick; maps " << u.mapMm.x << " x " << u.mapMm.y << " mm\n";
+    std::cerr << "wrote " << o.out << "\n";
+}
+
 void runExport(ExportCommand o) {
     o.options.bake.sheen = !o.noSheen;
     o.options.bake.anisotropy = !o.isotropic;
+    if (isU3m(o.out)) return runU3mExport(o);
     const auto bar = std::make_shared<ProgressBar>("bake");
     showBakeProgress(o.options.bake, bar);
     if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
@@ -127,14 +156,38 @@ void runExport(ExportCommand o) {
     }
 }
 
+// The page folder of `woven share` (share_page.h).
+void runShare(ExportCommand o) {
+    o.share.exportOptions = o.options;
+    o.share.exportOptions.bake.sheen = !o.noSheen;
+    o.share.exportOptions.bake.anisotropy = !o.isotropic;
+    const char* viewer = std::getenv("WOVEN_MODEL_VIEWER");
+    o.share.modelViewer = viewer && *viewer ? viewer : WOVEN_MODEL_VIEWER_JS;
+    const auto bar = std::make_shared<ProgressBar>("bake");
+    showBakeProgress(o.share.exportOptions.bake, bar);
+    const SceneDescription scene = loadWithEdits(o);
+    for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
+        refuseOverwritingInputs((std::filesystem::path(o.out) / file).string(), scene.inputFiles);
+    std::cerr << "share: baking the woven materials of " << o.scene << ", then woven's render for the poster\n";
+    const std::vector<std::string> warnings = writeSharePage(scene, o.out, o.share);
+    bar->finish();
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    std::cerr << "wrote " << (std::filesystem::path(o.out) / "index.html").string() << "\n";
+}
+
 }  // namespace
 
 void addExportCommands(CLI::App& app) {
     auto e = std::make_shared<ExportCommand>();
     CLI::App* cmd = app.add_subcommand("export", "Write a scene as a standard glTF file, each woven material baked to textures");
     cmd->add_option("scene", e->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
-    cmd->add_option("-o,--out", e->out, "the glTF file to write: .glb (binary) or .gltf (images embedded)")->required();
+    cmd->add_option("-o,--out", e->out, "the file to write: .glb (binary glTF), .gltf (images embedded), .u3ma (one woven material as a "
+                                        "U3M archive) or .u3m (the same as a file and a folder of textures)")->required();
     addBakeOptions(*cmd, *e);
+    cmd->add_option("--material", e->u3m.material, "U3M: the woven material to export (default: the scene's only one)");
+    cmd->add_option("--preview-size", e->u3m.previewSize, "U3M: pixels along the preview render's longer side (default 256; 0: none)")
+        ->check(CLI::Range(0, 4096));
+    cmd->add_option("--preview-spp", e->u3m.previewSpp, "U3M: samples per pixel of the preview render (default 16)")->check(CLI::Range(1, 1 << 16));
     cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
     cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
     cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(CLI::Range(1, 1 << 16));
@@ -148,6 +201,15 @@ void addExportCommands(CLI::App& app) {
     addBakeOptions(*bake, *b);
     bake->add_flag("--mips", b->mips, "also write every mip level, fitted in the model (NAME_MAP_mipN.png)");
     bake->callback([b] { runBake(*b); });
+
+    auto p = std::make_shared<ExportCommand>();
+    CLI::App* share = app.add_subcommand("share", "Write a web page that shows the scene's cloth in a browser, offline (model-viewer)");
+    share->add_option("scene", p->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    share->add_option("-o,--out", p->out, "the page's folder (created if missing): index.html, scene.glb, poster.png, ...")->required();
+    addBakeOptions(*share, *p);
+    share->add_option("--poster-size", p->share.posterSize, "pixels along the poster render's longer side (default 640)")->check(CLI::Range(16, 8192));
+    share->add_option("--poster-spp", p->share.posterSpp, "samples per pixel of the poster render (default 64)")->check(CLI::Range(1, 1 << 16));
+    share->callback([p] { runShare(*p); });
 }
 
 }  // namespace woven

@@ -12,7 +12,7 @@ void addRenderCommand(CLI::App& app);
 void addConvergeCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
 void addSubmitCommand(CLI::App& app);  // docs/CLUSTER.md
-void addExportCommands(CLI::App& app);  // export, bake (docs/EXPORT.md)
+void addExportCommands(CLI::App& app);  // export, bake, share (docs/EXPORT.md)
 void addFitCommand(CLI::App& app);  // docs/FIT.md
 
 }  // namespace woven

@@ -5,7 +5,8 @@
 #                                  GoogleTest, Google Benchmark, Xvfb and xdotool (the window is
 #                                  tested through a real display), gnuplot (converge's plots), clang
 #                                  and its sanitizer runtime (the fuzz and asan presets), slurm-wlm
-#                                  and munge (a real one-node cluster), Khronos's glTF validator (npm)
+#                                  and munge (a real one-node cluster), Khronos's glTF validator (npm),
+#                                  Chromium and puppeteer-core (npm), which open woven share's pages
 #   tools/install-deps.sh --compare also what the comparisons with Blender Cycles need
 #                                  (tools/cycles_compare, docs/CYCLES_COMPARISON.md; the tests that
 #                                  open frames in Blender run where it is installed): Blender,
@@ -24,6 +25,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libembree-dev libtinygltf-dev libopenimageio-dev libdraco-dev libmeshoptimizer-dev libwebp-dev
   libfftw3-dev libnlopt-cxx-dev  # woven fit's spectra and optimiser
+  zlib1g-dev  # the U3MA archive of woven export (deflate, CRC-32)
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
 )
 test_packages=(
@@ -31,6 +33,7 @@ test_packages=(
   clang libclang-rt-14-dev  # the fuzz and asan presets (docs/FUZZING.md): libFuzzer, ASan, UBSan
   slurm-wlm munge
   imagemagick  # tools/fabric_sheet.sh stitches docs/RESULTS.md's sheet of the fabric library
+  chromium     # a real browser for woven share's page (tests/export/share_page_test.cpp)
 )
 compare_packages=(blender python3-numpy python3-openimageio)
 if $tests; then packages+=("${test_packages[@]}"); fi
@@ -39,8 +42,9 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# npm (for the glTF validator below) may come from Node's own packages, which conflict with Debian's.
-if $tests; then command -v npm >/dev/null || missing+=(npm); fi
+# npm (for model-viewer and the glTF validator below) may come from Node's own packages, which
+# conflict with Debian's.
+command -v npm >/dev/null || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}" >&2
   sudo=""
@@ -55,4 +59,17 @@ if $tests && [ ! -x "$HOME/node_modules/.bin/gltf-transform" ]; then
   echo "installing: @gltf-transform/cli (npm, into ~/node_modules)" >&2
   npm install --prefix "$HOME" --no-audit --no-fund @gltf-transform/cli >&2 \
     || echo "warning: npm could not install @gltf-transform/cli; the glTF validator tests will be skipped" >&2
+fi
+# Google's <model-viewer>, which woven share copies into its pages (docs/EXPORT.md). Not a Debian
+# package; without it woven share says where to get it, so a failed install is a warning.
+if [ ! -f "$HOME/node_modules/@google/model-viewer/dist/model-viewer-umd.min.js" ]; then
+  echo "installing: @google/model-viewer (npm, into ~/node_modules)" >&2
+  npm install --prefix "$HOME" --no-audit --no-fund @google/model-viewer >&2 \
+    || echo "warning: npm could not install @google/model-viewer; woven share will not work" >&2
+fi
+# puppeteer-core drives Debian's chromium in the share page's test (no browser download).
+if $tests && [ ! -d "$HOME/node_modules/puppeteer-core" ]; then
+  echo "installing: puppeteer-core (npm, into ~/node_modules)" >&2
+  npm install --prefix "$HOME" --no-audit --no-fund puppeteer-core >&2 \
+    || echo "warning: npm could not install puppeteer-core; the share page test will be skipped" >&2
 fi

@@ -107,6 +107,7 @@ TextileKeys readTextileKeys(const nlohmann::json& j) {
             throw std::invalid_argument("'fibre' = " + j["fibre"].dump() + " is none of woven's fibres: " + names);
         }
         t.fibreDensity = it->density;
+        t.fibre = it->name;
     }
     return t;
 }

@@ -29,6 +29,7 @@ struct TextileKeys {
     std::optional<glm::dvec2> threadsPerCm;  // ends (across u), picks (across v)
     std::optional<double> warpTex, weftTex;  // linear density in tex (g per km)
     double fibreDensity = 0.0;               // g/cm^3, of "fibre" or cotton
+    std::string fibre;                       // "fibre" as given; empty when not given
 };
 
 // Throws std::invalid_argument naming the key: a count that is not positive and finite, a unit

@@ -19,7 +19,7 @@ void checkWritable(const std::string& path) {
     namespace fs = std::filesystem;
     std::string extension = fs::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (extension != ".glb" && extension != ".gltf") throw ExportError(path + ": the file name must end in .glb or .gltf");
+    if (extension != ".glb" && extension != ".gltf") throw ExportError(path + ": the file name must end in .glb or .gltf (glTF), .u3ma or .u3m (U3M)");
     const fs::path folder = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
     std::error_code ec;
     if (!fs::is_directory(folder, ec)) throw ExportError(path + ": cannot write there: the folder '" + folder.string() + "' does not exist");

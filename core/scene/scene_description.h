@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "textile_units.h"
 #include "woven_params.h"
 
 namespace woven {
@@ -132,6 +133,9 @@ struct Material {
     // (WOVEN_fabric) has none: its glTF fields are other viewers' fallback, not applied.
     std::optional<KeptGltfSurface> keptSurface;
     std::string draft;  // the WIF file the woven parameters were made from ("wif"), if any
+    // The real cloth where the woven layers said it: its thread counts (textile keys or "scale":
+    // "draft", always set here), yarn counts and fibre, which U3M export's physics read.
+    std::optional<TextileKeys> textile;
     glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};  // linear RGB and alpha
     TextureRef baseColorTexture;
     float metallic = 0.0f, roughness = 0.5f;

@@ -2,6 +2,8 @@
 
 #include <fnmatch.h>
 
+#include <filesystem>
+
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -12,6 +14,7 @@
 #include "material_json.h"
 #include "untrusted_json.h"
 #include "scene_loader.h"
+#include "u3m_material.h"
 #include "uv_scale.h"
 
 namespace woven {
@@ -86,6 +89,29 @@ bool setsYarnColor(const nlohmann::json& layer) {
     for (const char* key : {"weft_color", "warp_color", "warp_colors", "weft_colors", "wif", "preset"})
         if (layer.contains(key)) return true;
     return false;
+}
+
+// A layer's "u3m" (u3m_material.h): woven's own file becomes its woven parameters, under the
+// layer's other keys (a size of the layer's own replaces the file's thread counts); another
+// tool's is returned, for the caller to put on the meshes at its real size.
+std::optional<U3mMaterial> takeU3m(nlohmann::json& layer, const std::string& directory, SceneDescription& scene) {
+    if (!layer.is_object() || !layer.contains("u3m")) return std::nullopt;
+    if (!layer["u3m"].is_string()) throw std::invalid_argument("'u3m' must be the path of a .u3ma or .u3m file");
+    const std::filesystem::path given = layer["u3m"].get<std::string>();
+    const std::string path = (given.is_absolute() || directory.empty() ? given : std::filesystem::path(directory) / given).string();
+    U3mMaterial u3m = readU3m(path);
+    scene.inputFiles.push_back(path);
+    layer.erase("u3m");
+    if (!u3m.woven) {
+        if (!layer.empty()) throw std::invalid_argument(path + ": another tool's U3M is a textured material, not woven: it takes no woven keys beside 'u3m'");
+        return u3m;
+    }
+    nlohmann::json merged = *u3m.woven;
+    for (const char* size : {"repeat", "scale", "ends_per_cm", "ends_per_inch", "picks_per_cm", "picks_per_inch"})
+        if (layer.contains(size)) merged.erase("ends_per_cm"), merged.erase("picks_per_cm");
+    for (const auto& [key, value] : layer.items()) merged[key] = value;
+    layer = std::move(merged);
+    return std::nullopt;
 }
 
 // A glTF material made woven keeps its surface (Material::keptSurface): the base colour factor
@@ -181,15 +207,31 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         std::optional<bool> keepBaseColor;
         bool colorKeys = false;
         std::string names;
+        std::optional<Material> textured;  // another tool's U3M, which ends the layers
         for (size_t a : order) {
             std::vector<std::string> warnings;
+            if (textured) fail(assignments[a], "comes after another tool's U3M, which is a textured material and cannot be made woven");
             try {
                 nlohmann::json layer = assignments[a].params;
-                if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
-                colorKeys |= setsYarnColor(layer);
-                const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
-                params = scaledToMeshes(read, scene, meshes, warnings);
-                if (!read.wif.empty()) material.draft = read.wif;
+                if (std::optional<U3mMaterial> u3m = takeU3m(layer, assignments[a].directory, scene)) {
+                    textured = atRealSize(*u3m, measureUvScale(scene, meshes).metresPerUv, int(scene.textures.size()));
+                    scene.textures.insert(scene.textures.end(), u3m->textures.begin(), u3m->textures.end());
+                    warnings = u3m->warnings;
+                    textured->name = material.name;
+                    textured->doubleSided = material.doubleSided;
+                } else {
+                    if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
+                    colorKeys |= setsYarnColor(layer);
+                    const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
+                    params = scaledToMeshes(read, scene, meshes, warnings);
+                    if (!read.wif.empty()) material.draft = read.wif;
+                    if (read.threadsPerCm) {
+                        material.textile = read.textile;
+                        material.textile->threadsPerCm = glm::dvec2(*read.threadsPerCm);
+                    } else if (layer.contains("repeat")) {
+                        material.textile.reset();  // a size of its own, no longer the cloth's real one
+                    }
+                }
             } catch (const std::exception& e) {  // a bad key, a draft that cannot be used, no UVs to scale by
                 fail(assignments[a], e.what());
             }
@@ -203,9 +245,13 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         }
         // A material woven in its file keeps its woven colours; a primitive without a material has
         // no glTF surface to keep.
-        if (materialIndex >= 0 && (!wasWoven || material.keptSurface))
-            keepGltfSurface(material, params, keepBaseColor, colorKeys, wasWoven);
-        material.woven = params;
+        if (textured) {
+            material = std::move(*textured);
+        } else {
+            if (materialIndex >= 0 && (!wasWoven || material.keptSurface))
+                keepGltfSurface(material, params, keepBaseColor, colorKeys, wasWoven);
+            material.woven = params;
+        }
         if (materialIndex >= 0 && meshes.size() == users[materialIndex]) {
             scene.materials[size_t(materialIndex)] = std::move(material);
             continue;
@@ -223,8 +269,14 @@ WovenAssignment parseWovenOption(const SceneDescription& scene, const std::strin
     WovenAssignment a;
     a.target = option.substr(0, eq);
     a.where = "--woven " + a.target;
+    const std::string value = option.substr(eq + 1);
+    const std::string extension = std::filesystem::path(value).extension().string();
+    if (value.find('{') == std::string::npos && (extension == ".u3ma" || extension == ".u3m")) {
+        a.params = {{"u3m", value}};  // a U3M file, as a scene file's "u3m" key gives it
+        return a;
+    }
     try {
-        a.params = parseUntrustedJson(std::string_view(option).substr(eq + 1));
+        a.params = parseUntrustedJson(value);
     } catch (const std::invalid_argument& e) {
         throw SceneError(scene.source + ": " + a.where + ": " + e.what());
     }
