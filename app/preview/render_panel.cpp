@@ -11,6 +11,7 @@
 #include "integrators.h"
 #include "preview_window_impl.h"
 #include "scene_export.h"
+#include "u3m_export.h"
 
 namespace woven {
 
@@ -62,9 +63,22 @@ void PreviewWindow::drawRenderControls() {
         shown.camera = camera_.camera();
         shown.hasCamera = true;
         try {
-            const std::vector<std::string> warnings = exportScene(shown, exportPath_, ExportOptions{});
-            for (const std::string& w : warnings) std::cerr << "warning: " << exportPath_ << ": " << w << "\n";
-            status_ = "exported " + std::string(exportPath_) + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+            // By the file's extension: the edited cloth as a U3M, else the scene as glTF.
+            const std::string path = exportPath_;
+            if (hasExtension(path, ".u3ma") || hasExtension(path, ".u3m")) {
+                U3mOptions options;
+                if (editIndex_ >= 0) {
+                    const int m = edits_->materialOf(edits_->edits()[size_t(editIndex_)].target);
+                    if (m >= 0) options.material = shown.materials[size_t(m)].name;
+                }
+                const U3mExport u3m = exportU3m(shown, path, options);
+                for (const std::string& n : u3m.notes) std::cerr << "note: " << path << ": " << n << "\n";
+                status_ = "exported " + u3m.material + " to " + path;
+            } else {
+                const std::vector<std::string> warnings = exportScene(shown, path, ExportOptions{});
+                for (const std::string& w : warnings) std::cerr << "warning: " << path << ": " << w << "\n";
+                status_ = "exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+            }
         } catch (const std::exception& e) {
             status_ = e.what();
         }
@@ -72,6 +86,9 @@ void PreviewWindow::drawRenderControls() {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     ui::InputText("##export file", exportPath_, sizeof exportPath_);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("scene.glb or .gltf: the scene for other renderers; cloth.u3ma or .u3m: the edited cloth for "
+                          "fashion tools (docs/EXPORT.md); a page to share: woven share on the command line");
     if (final_.running() || finalImage_)
         ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
     if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());
