@@ -14,7 +14,7 @@ namespace woven {
 namespace {
 
 // The fields' width the panel is sized for, beside the label column.
-constexpr float kFieldWidth = 240.0f;
+constexpr float kFieldWidth = 180.0f;
 
 }  // namespace
 
@@ -62,6 +62,8 @@ void PreviewWindow::drawPanel() {
                                  std::max(display.x - 16.0f, 100.0f));
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, display.y - 16), ImGuiCond_FirstUseEver);
+    // Never larger than the window, which may shrink: every control is reached by scrolling.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(100, 100), ImVec2(std::max(display.x - 16, 100.0f), std::max(display.y - 16, 100.0f)));
     ImGui::Begin("woven");
     // Fields end where the longest label still fits before the panel's edge, however wide it is.
     ImGui::PushItemWidth(-labels);

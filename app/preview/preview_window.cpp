@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <atomic>
@@ -308,15 +309,35 @@ void PreviewWindow::updateFinalTexture(const FilmImage& film) {
     uploadImageTexture(finalTexture_, film.radiance, display_);
 }
 
-// The rendered frame, letterboxed over the preview (row 0 of the image is its top).
-void PreviewWindow::drawFinalImage() {
-    if (!showFinal_ || !finalImage_) return;
+// The part of the window the panel leaves free on its right (the whole window when the panel is
+// collapsed or elsewhere).
+static ImVec4 viewArea() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float imageAspect = float(finalImage_->radiance.width) / float(finalImage_->radiance.height);
-    ImVec2 size(display.x, display.x / imageAspect);
-    if (size.y > display.y) size = ImVec2(display.y * imageAspect, display.y);
-    const ImVec2 lo((display.x - size.x) * 0.5f, (display.y - size.y) * 0.5f);
+    const ImGuiWindow* panel = ImGui::FindWindowByName("woven");
+    float left = 0.0f;
+    if (panel && !panel->Collapsed && panel->Pos.x < display.x * 0.5f) left = std::min(panel->Rect().Max.x, display.x * 0.5f);
+    return ImVec4(left, 0.0f, display.x, display.y);
+}
+
+// The rendered frame, letterboxed in the view area beside the panel (row 0 of the image is its
+// top); while the live preview shows, an outline of what the Render button's frame will hold.
+void PreviewWindow::drawFinalImage() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    if (!showFinal_ || !finalImage_) {
+        // The render shares the view's camera and vertical field: its width follows its aspect.
+        if (render_.width <= 0 || render_.height <= 0 || display.y <= 0.0f) return;
+        const float width = display.y * float(render_.width) / float(render_.height);
+        const float x0 = std::max(0.5f * (display.x - width), 0.0f), x1 = std::min(0.5f * (display.x + width), display.x);
+        draw->AddRect(ImVec2(x0, 0.0f), ImVec2(x1, display.y), IM_COL32(255, 255, 255, 96), 0.0f, 0, 1.0f);
+        return;
+    }
+    const ImVec4 area = viewArea();
+    const ImVec2 free(area.z - area.x, area.w - area.y);
+    const float imageAspect = float(finalImage_->radiance.width) / float(finalImage_->radiance.height);
+    ImVec2 size(free.x, free.x / imageAspect);
+    if (size.y > free.y) size = ImVec2(free.y * imageAspect, free.y);
+    const ImVec2 lo(area.x + (free.x - size.x) * 0.5f, area.y + (free.y - size.y) * 0.5f);
     draw->AddRectFilled(ImVec2(0, 0), display, IM_COL32(0, 0, 0, 255));
     draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(finalTexture_)), lo,
                    ImVec2(lo.x + size.x, lo.y + size.y));

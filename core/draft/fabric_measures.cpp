@@ -44,11 +44,15 @@ std::string describe(const FabricMeasures& m) {
     char line[400];
     std::snprintf(line, sizeof line,
                   "%.4g x %.4g threads/cm (%.4g x %.4g per inch), repeat %d x %d threads = %.3g x %.3g cm, "
-                  "cover %.2f warp %.2f weft %.2f cloth, %s%.0f g/m2",
+                  "cover %.2f warp %.2f weft %.2f cloth, ",
                   m.threadsPerCm.x, m.threadsPerCm.y, m.threadsPerCm.x * kCmPerInch, m.threadsPerCm.y * kCmPerInch,
-                  m.repeatThreads.x, m.repeatThreads.y, m.repeatCm.x, m.repeatCm.y, m.cover.x, m.cover.y, m.clothCover,
-                  m.weightFromWidths ? "about " : "", m.gramsPerSquareMetre);
-    return line;
+                  m.repeatThreads.x, m.repeatThreads.y, m.repeatCm.x, m.repeatCm.y, m.cover.x, m.cover.y, m.clothCover);
+    // A weight guessed from the yarns' widths alone is off by the fibre's packing and the
+    // crimp (a cloth of 2 mm threads "weighed" 38777 g/m2): only yarn counts give one.
+    if (m.weightFromWidths) return std::string(line) + "no weight: set yarn counts (warp_count, weft_count) for it";
+    char weight[64];
+    std::snprintf(weight, sizeof weight, "%.0f g/m2", m.gramsPerSquareMetre);
+    return line + std::string(weight);
 }
 
 }  // namespace woven
