@@ -10,6 +10,8 @@
 
 #include "bsdf_eval.h"
 #include "commands.h"
+#include "frame_io.h"
+#include "output_path.h"
 #include "untrusted_json.h"
 #include "woven_material.h"
 #include "woven_params_json.h"
@@ -68,6 +70,9 @@ std::optional<glm::dvec2> elementCentre(const WovenMaterial& m, YarnType type) {
 }
 
 void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, int size, const std::string& out) {
+    if (lowerExtension(out) != ".png")
+        throw std::invalid_argument(out + ": bsdf-plot writes PNG: the output's name must end in .png");
+    checkOutput(out);
     nlohmann::json j;
     try {
         j = materialText.empty() ? nlohmann::json::object() : parseUntrustedJson(materialText);
@@ -110,10 +115,9 @@ void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, 
         const glm::vec3 c = heat(maxValue > 0.0f ? std::sqrt(value[i] / maxValue) : 0.0f);
         for (int k = 0; k < 3; ++k) rgb[i * 3 + k] = (unsigned char)std::lround(c[k] * 255.0f);
     }
-    const std::string tmp = out + ".partial";
-    if (!stbi_write_png(tmp.c_str(), width, size, 3, rgb.data(), width * 3))
-        throw std::runtime_error("cannot write '" + out + "'");
-    if (std::rename(tmp.c_str(), out.c_str()) != 0) throw std::runtime_error("cannot write '" + out + "'");
+    writeFileAtomically(out, [&](const std::string& tmp) {
+        if (!stbi_write_png(tmp.c_str(), width, size, 3, rgb.data(), width * 3)) throw std::runtime_error("cannot write the PNG data");
+    });
     std::cerr << "wrote " << out << " (left: weft element, right: warp element; f cos over the hemisphere of wi, "
               << "x = +u, y = +v, peak f cos = " << maxValue << ")\n";
 }

@@ -145,7 +145,8 @@ std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int64_t expe
 void checkFiles(const std::vector<std::string>& inputs, const std::string& out) {
     if (lowerExtension(out) != ".exr")
         throw std::invalid_argument(out + ": merge writes OpenEXR: the output's name must end in .exr");
-    checkWritable(out);
+    checkOutput(out);
+    checkOutput(partialName(out));
     for (size_t i = 0; i < inputs.size(); ++i) {
         if (sameFile(inputs[i], out))
             throw std::invalid_argument(inputs[i] + " is both a part and the output: merging would replace it");
@@ -206,7 +207,7 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         std::cerr << "warning: " << inputs.front()
                   << " has no render passes (an older woven wrote it): the merged frame has none\n";
 
-    const std::string partial = partialFrameName(out);
+    const std::string partial = partialName(out);
     if (!missing.empty()) {
         writeExr(partial, sum, ExrPrecision::Float);
         throw std::runtime_error(out + " not written: " + describe(missing) + " missing (no part holds them); wrote " +

@@ -104,11 +104,13 @@ int runRender(RenderCommand o) {
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
-    refuseOverwritingInputs(o.out, scene->inputFiles);
     if (scene->photo)
         std::cerr << "render: " << o.scene << " is a shot: its photo " << scene->photo->image
                   << " is for woven fit; the render does not use it\n";
     applySceneOptions(*scene, o.options.frame);
+    // Now that every input is read (the environment image too), none may be an output.
+    checkOutput(o.out);
+    checkOutput(partialName(o.out));
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);
     const bool timeLimited = o.time > 0.0;
@@ -146,7 +148,7 @@ int runRender(RenderCommand o) {
         std::cerr << "woven render: interrupted before the first pass finished; nothing written\n";
         return wasInterrupted ? 130 : 1;
     }
-    const std::string path = wasInterrupted ? partialFrameName(o.out) : o.out;
+    const std::string path = wasInterrupted ? partialName(o.out) : o.out;
     FilmImage film = job.snapshot();
     // An interrupted frame is written at once, as rendered: it is for looking at or merging.
     if (o.options.frame.denoise && !wasInterrupted) denoiseFilm(film);

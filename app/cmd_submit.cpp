@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "atomic_file.h"
+#include "output_path.h"
 #include "commands.h"
 #include "frame_pattern.h"
 #include "frame_io.h"
@@ -139,12 +139,26 @@ void writeText(const std::string& path, const std::string& text) {
     });
 }
 
-// Folders and scripts, on the file system every node shares.
+// Makes the folder `path` (and those above it), or throws naming it and the option it is for.
+void makeFolder(const fs::path& path, const std::string& option) {
+    if (path.empty()) return;
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_directory(path, ec))
+        throw std::invalid_argument(option + " " + path.string() + ": is a file, not a folder");
+    fs::create_directories(path, ec);
+    if (!fs::is_directory(path, ec))
+        throw std::invalid_argument(option + " " + path.string() + ": cannot make the folder" + (ec ? ": " + ec.message() : ""));
+}
+
+// Folders and scripts, on the file system every node shares. Each frame's output is checked as
+// an output now (output_path.h), not when the merge job runs.
 void writeJobFiles(const SlurmJob& job) {
-    fs::create_directories(job.logFolder());
+    makeFolder(job.folder, "--job-dir");
+    makeFolder(job.logFolder(), "--job-dir");
     for (const ClusterFrame& f : job.frames) {
-        fs::create_directories(f.parts);
-        fs::create_directories(fs::path(f.out).parent_path());
+        makeFolder(f.parts, "--job-dir");
+        makeFolder(fs::path(f.out).parent_path(), "-o");
+        checkOutput(f.out);
     }
     writeText(job.renderScriptPath(), job.renderScript());
     writeText(job.mergeScriptPath(), job.mergeScript());
@@ -157,7 +171,7 @@ void removeEarlierResults(const SlurmJob& job) {
     for (const ClusterFrame& f : job.frames) {
         for (const fs::directory_entry& entry : fs::directory_iterator(f.parts))
             if (entry.path().filename().string().rfind(kPartPrefix, 0) == 0) removed += fs::remove(entry.path());
-        removed += fs::remove(partialFrameName(f.out));
+        removed += fs::remove(partialName(f.out));
     }
     if (removed > 0) std::cerr << "removed " << removed << " files left by an earlier submission of these frames\n";
 }

@@ -15,4 +15,9 @@ struct FileReadError : std::runtime_error {
 
 std::vector<unsigned char> readRegularFile(const std::string& path, size_t maxBytes);
 
+// Whether `path` names a file this process has read with readRegularFile (by device and inode,
+// through any spelling or link). Every file woven reads passes there, so this is the list of
+// inputs no output may replace (output_path.h), textures and environment images included.
+bool readByThisProcess(const std::string& path);
+
 }  // namespace woven

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -141,9 +143,10 @@ TEST_F(FitCommand, RenderTakesAShotAndSaysItDoesNotUseThePhoto) {
     EXPECT_TRUE(std::filesystem::exists(file("frame.png")));
 }
 
-// Ctrl-C once the fit has reported progress: the best fit so far, exit status 130. The process is
-// started by fork and exec, as the signal needs its pid.
-TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
+// Ctrl-C once the fit has reported progress: the best fit so far, under the partial name (an
+// unfinished fit never takes the final one), exit status 130. The process is started by fork and
+// exec, as the signal needs its pid.
+TEST_F(FitCommand, InterruptWritesTheBestFitSoFarUnderThePartialName) {
     const std::string path = shot();
     const pid_t pid = fork();
     if (pid == 0) {
@@ -162,10 +165,41 @@ TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
     const std::string err = readText(file("stderr.txt"));
     ASSERT_TRUE(WIFEXITED(status)) << err;
     EXPECT_EQ(WEXITSTATUS(status), 130) << err;
-    EXPECT_NE(err.find("interrupted: wrote the best fit so far to " + file("out.json")), std::string::npos) << err;
-    std::ifstream in(file("out.json"));
+    EXPECT_NE(err.find("interrupted: wrote the best fit so far to " + file("out.partial.json")), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+    std::ifstream in(file("out.partial.json"));
     ASSERT_TRUE(in) << err;
     EXPECT_TRUE(nlohmann::json::parse(in).contains("pattern"));
+}
+
+// Every output is checked before the fit (output_path.h): a FIFO, a read-only file, a report
+// "folder" that is a file, a report whose shot_0.png would replace the photo. Each is refused at
+// once, naming the file, and nothing is written.
+TEST_F(FitCommand, OutputsThatCannotBeWrittenAreRefusedBeforeTheFit) {
+    RigPhoto photo;
+    photo.size = 64;
+    photo.spp = 4;
+    const std::string path = writeCaptureShot(dir_.string(), "shot_0", photo);  // its photo: shot_0.png
+    const auto refused = [&](const std::string& options, const std::string& named, const std::string& problem) {
+        const auto start = std::chrono::steady_clock::now();
+        const RunResult r = runWovenCommand("fit '" + path + "' --target Swatch --time 600 " + options);
+        EXPECT_NE(r.exitCode, 0) << options;
+        EXPECT_NE(r.out.find(named + ": " + problem), std::string::npos) << r.out;
+        // Refused up front: the fit (600 s) never starts.
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30)) << options;
+    };
+    ASSERT_EQ(mkfifo(file("fifo.json").c_str(), 0644), 0);
+    refused("-o '" + file("fifo.json") + "'", file("fifo.json"), "is not a regular file");
+    std::ofstream(file("kept.json")) << "{}";
+    std::filesystem::permissions(file("kept.json"), std::filesystem::perms::owner_read);
+    refused("-o '" + file("kept.json") + "'", file("kept.json"), "is read-only");
+    EXPECT_EQ(readText(file("kept.json")), "{}");
+    std::ofstream(file("report.txt")) << "notes";
+    refused("-o '" + file("out.json") + "' --report '" + file("report.txt") + "'", file("report.txt"), "--report: is a file");
+    const std::string photoBefore = readText(file("shot_0.png"));
+    refused("-o '" + file("out.json") + "' --report '" + dir_.string() + "'", file("shot_0.png"), "is an input of this command");
+    EXPECT_EQ(readText(file("shot_0.png")), photoBefore);
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
 }
 
 }  // namespace
