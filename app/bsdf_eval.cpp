@@ -142,6 +142,10 @@ std::string BsdfEval::answer(std::string_view line) {
                                     std::to_string(kMaxBsdfEvalLineBytes >> 20) + " MiB");
     const nlohmann::json query = parseUntrustedJson(line);
     if (!query.is_object()) throw std::invalid_argument("each line must be a JSON object");
+    // A misspelt key ("UV") must not be answered as if it were absent (uv (0, 0)).
+    for (const auto& item : query.items())
+        if (item.key() != "material" && item.key() != "uv" && item.key() != "wi" && item.key() != "wo")
+            throw std::invalid_argument("unknown key " + nlohmann::json(item.key()).dump() + " (expected material, uv, wi, wo)");
     if (!query.contains("material")) throw std::invalid_argument("missing 'material'");
     return evalQuery(materials_->get(query.at("material")), query, warnedFarUv_).dump();
 }

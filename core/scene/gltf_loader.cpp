@@ -174,7 +174,9 @@ private:
     }
 
     // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
-    // Nesting deeper than woven reads is refused here, before tinygltf walks it.
+    // What tinygltf would read other than as written (untrusted_json.h: nesting deeper than woven
+    // reads, a NUL byte, a key twice, U+0000 in a string; glTF's JSON forbids them) is refused
+    // here, before tinygltf walks it.
     nlohmann::json jsonPart(const std::vector<unsigned char>& file) const {
         std::string_view bytes(reinterpret_cast<const char*>(file.data()), file.size());
         if (bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0) {
@@ -184,8 +186,9 @@ private:
         }
         try {
             return parseUntrustedJson(bytes);
-        } catch (const std::invalid_argument& e) {
-            if (jsonDepth(bytes) > kMaxJsonDepth) fail(e.what());
+        } catch (const JsonAsWrittenError& e) {
+            fail(e.what());
+        } catch (const std::invalid_argument&) {
             return nlohmann::json();  // tinygltf names what is malformed
         }
     }

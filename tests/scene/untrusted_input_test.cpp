@@ -36,6 +36,42 @@ TEST(UntrustedJson, DepthIsFoundWithoutRecursionAndRefused) {
     EXPECT_THROW(parseUntrustedJson(nested(80000)), std::invalid_argument);
 }
 
+// JSON read exactly as written: a NUL byte (the parser stopped there), a key written twice (the
+// last was kept), U+0000 in a string (a file name ended there) are refused, naming the key.
+TEST(UntrustedJson, NulBytesDuplicateKeysAndU0000AreRefusedNamingTheKey) {
+    using ::testing::ThrowsMessage;
+    EXPECT_THAT([] { parseUntrustedJson(std::string("{\"a\": 1}\0 trailing", 18)); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("a NUL byte at byte 8")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a": {"b": 1, "c": 2, "b": 3}})"); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("the key \"b\" appears twice")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"gltf": "cloth.gltf\u0000.missing"})"); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("(near the key \"gltf\") holds the character U+0000")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a\u0000b": 1})"); }, ThrowsMessage<JsonAsWrittenError>(HasSubstr("U+0000")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a": 1} {"b": 2})"); }, ThrowsMessage<std::invalid_argument>(HasSubstr("not valid JSON")));
+    // The same key in two objects, or in objects of an array, is no duplicate.
+    EXPECT_NO_THROW(parseUntrustedJson(R"({"a": {"k": 1}, "b": {"k": 2}, "c": [{"k": 1}, {"k": 2}], "k": 0})"));
+}
+
+TEST(UntrustedJson, EveryFileWovenReadsIsReadAsWritten) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}}})}})});
+    b.writeGltf(dir.file("cloth.gltf"));
+    std::ofstream(dir.file("nul.json"), std::ios::binary) << R"({"gltf": "cloth.gltf\u0000.missing"})";
+    EXPECT_THAT(loadError(dir.file("nul.json")), HasSubstr("nul.json: the string \"cloth.gltf\\u0000.missing\""));
+    std::ofstream(dir.file("after.json"), std::ios::binary) << std::string("{\"gltf\": \"cloth.gltf\"}\0{", 24);
+    EXPECT_THAT(loadError(dir.file("after.json")), HasSubstr("after.json: a NUL byte at byte 22"));
+    std::ofstream(dir.file("twice.json")) << R"({"gltf": "cloth.gltf", "gltf": "other.gltf"})";
+    EXPECT_THAT(loadError(dir.file("twice.json")), HasSubstr("twice.json: the key \"gltf\" appears twice"));
+    // glTF's JSON forbids duplicate keys: refused before tinygltf keeps one of them.
+    std::ifstream in(dir.file("cloth.gltf"));
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.insert(text.rfind('}'), R"(, "scene": 0, "scene": 0)");
+    std::ofstream(dir.file("twice.gltf")) << text;
+    EXPECT_THAT(loadError(dir.file("twice.gltf")), HasSubstr("twice.gltf: the key \"scene\" appears twice"));
+}
+
 TEST(UntrustedGltf, ExtrasNestedDeepAreRefusedBeforeParsing) {
     TempDir dir;
     GltfBuilder b;
