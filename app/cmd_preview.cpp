@@ -12,6 +12,7 @@
 #include "frame_options.h"
 #include "headless_gl.h"
 #include "frame_io.h"
+#include "file_reading.h"
 #include "image_io.h"
 #include "output_path.h"
 #include "orbit_camera.h"
@@ -109,6 +110,8 @@ void addPreviewCommand(CLI::App& app) {
     cmd->callback([o] {
         checkModeOptions(*o);
         if (o->headless) return runHeadless(*o);
+        // The window saves a material or a draft back to the file it opened when its user asks.
+        rememberInputs(false);
         PreviewWindowOptions window;
         window.scene = o->scene;
         window.frame = o->frame;

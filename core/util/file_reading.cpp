@@ -23,15 +23,22 @@ std::string byteSize(size_t bytes) {
 using FileId = std::pair<dev_t, ino_t>;
 
 std::mutex readFilesMutex;
+bool remembering = false;
 std::set<FileId> readFiles;
 
 void rememberRead(const struct stat& info) {
     const std::lock_guard<std::mutex> lock(readFilesMutex);
-    readFiles.insert({info.st_dev, info.st_ino});
+    if (remembering) readFiles.insert({info.st_dev, info.st_ino});
 }
 }  // namespace
 
-bool readByThisProcess(const std::string& path) {
+void rememberInputs(bool on) {
+    const std::lock_guard<std::mutex> lock(readFilesMutex);
+    remembering = on;
+    if (!on) readFiles.clear();
+}
+
+bool readAsInput(const std::string& path) {
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0) return false;
     const std::lock_guard<std::mutex> lock(readFilesMutex);

@@ -13,12 +13,12 @@ void checkOutput(const std::string& out) {
     if (out.empty()) refuse("an empty file name");
     struct stat info {};
     if (::stat(out.c_str(), &info) == 0) {
-        if (S_ISDIR(info.st_mode)) refuse("is a folder, not a file name");
+        if (S_ISDIR(info.st_mode)) refuse("is a directory, not a file name");
         if (!S_ISREG(info.st_mode))
             refuse("is not a regular file (a FIFO, socket or device): woven writes its outputs as regular files and "
                    "never replaces such a node; choose another output");
         if ((info.st_mode & 0222) == 0) refuse("is read-only: woven does not replace it; choose another output");
-        if (readByThisProcess(out))
+        if (readAsInput(out))
             refuse("is an input of this command: writing it would replace what it reads; choose another output");
     }
     checkWritable(out);

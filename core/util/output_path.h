@@ -2,8 +2,9 @@
 // The one rule every output of every command follows (docs/LIMITS.md). An output names a regular
 // file or nothing yet: never a FIFO, a device or a folder (the atomic write's rename would
 // replace the node itself: run as root, `fit -o /dev/full` turned the device into a JSON file),
-// never a read-only file, and never a file the command has read (file_reading.h: its scene,
-// glTF, buffers, textures, environment image, photos, drafts); and its folder may be written.
+// never a read-only file, and never a file the command has read (readAsInput(), file_reading.h:
+// its scene, glTF, buffers, textures, environment image, photos, drafts); and its folder may be
+// written.
 // Commands check each output before any work; writeFileAtomically checks again as it writes.
 #include <string>
 
