@@ -10,6 +10,7 @@
 
 #include "bsdf_eval.h"
 #include "commands.h"
+#include "number_checks.h"
 #include "frame_io.h"
 #include "output_path.h"
 #include "untrusted_json.h"
@@ -142,9 +143,9 @@ void addBsdfCommands(CLI::App& app) {
     auto opts = std::make_shared<PlotOptions>();
     CLI::App* plot = app.add_subcommand("bsdf-plot", "Write a PNG of the lobe f cos over the hemisphere, weft and warp");
     plot->add_option("--material", opts->material, "woven material as JSON (bsdf-eval's names)");
-    plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(CLI::Range(0.0f, 89.9f));
+    plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(finiteNumber(0.0, 89.9));
     plot->add_option("--phi", opts->phi, "azimuth of wo in degrees, 0 = +u");
-    plot->add_option("--size", opts->size, "pixels per panel")->check(CLI::Range(16, 4096));
+    plot->add_option("--size", opts->size, "pixels per panel")->check(wholeNumber(16, 4096));
     plot->add_option("-o,--out", opts->out, "output PNG");
     plot->callback([opts] { runBsdfPlot(opts->material, opts->theta, opts->phi, opts->size, opts->out); });
 }

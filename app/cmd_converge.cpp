@@ -438,9 +438,9 @@ void addConvergeCommand(CLI::App& app) {
         ->check(finiteNumber(0.0));
     cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
         ->check(timeCheck);
-    cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));
-    cmd->add_option("--height", o->height, "image height")->check(CLI::Range(8, 8192));
-    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--width", o->width, "image width")->check(wholeNumber(8, 8192));
+    cmd->add_option("--height", o->height, "image height")->check(wholeNumber(8, 8192));
+    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(wholeNumber(0));
     cmd->add_option("--out-dir", o->outDir, "where the reference, CSV and plot go");
     cmd->callback([o] { runConverge(*o); });
 }

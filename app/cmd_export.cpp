@@ -11,6 +11,7 @@
 
 #include "bake_report.h"
 #include "commands.h"
+#include "number_checks.h"
 #include "flat_cloth.h"
 #include "gltf_writer.h"
 #include "image_io.h"
@@ -45,9 +46,9 @@ SceneDescription loadWithEdits(const ExportCommand& o) {
 
 void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
     cmd.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven first (as woven render's --woven)");
-    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(CLI::Range(4, 16384));
+    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(wholeNumber(4, 16384));
     cmd.add_option("--repeats", o.options.bake.repeats, "weave repeats each texture holds along u and v (default 1)")
-        ->check(CLI::Range(1, 1024));
+        ->check(wholeNumber(1, 1024));
     cmd.add_flag("--no-sheen", o.noSheen, "fit no KHR_materials_sheen layer");
     cmd.add_flag("--isotropic", o.isotropic,
                  "no KHR_materials_anisotropy: one roughness a texel, for renderers that ignore the extension (Blender 3.4)");
@@ -181,7 +182,7 @@ void addExportCommands(CLI::App& app) {
     addBakeOptions(*cmd, *e);
     cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
     cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
-    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(CLI::Range(1, 1 << 16));
+    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(wholeNumber(1, 1 << 16));
     cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder (OUT_MATERIAL_near_model.png, ...)");
     cmd->callback([e] { runExport(*e); });
 

@@ -18,6 +18,7 @@
 #include "integrators.h"
 #include "output_path.h"
 #include "sample_index_check.h"
+#include "short_number.h"
 
 namespace woven {
 
@@ -38,13 +39,22 @@ ExrImage readPart(const std::string& path) {
     if (part.sampleCount.empty()) throw missing("sample-count channel samples.N");
     if (part.sampleSums.empty()) throw missing("exact sample sums (channels exact.radiance0.R-exact.radiance5.B)");
     if (!part.samples) throw missing("sample range (attributes wovenFirstSample, wovenSampleCount)");
-    // A count is what the sums are divided by: NaN or a negative one would write NaN or
-    // negate the pixel.
-    for (size_t i = 0; i < part.sampleCount.size(); ++i)
-        if (!(part.sampleCount[i] >= 0.0f && std::isfinite(part.sampleCount[i])))
-            throw std::invalid_argument(path + ": pixel (" + std::to_string(i % size_t(part.image.width)) + ", " +
-                                        std::to_string(i / size_t(part.image.width)) + ") has the sample count N = " +
-                                        std::to_string(part.sampleCount[i]) + ", which is not a finite number >= 0");
+    // A count is what the sums are divided by: NaN or a negative one would write NaN or negate
+    // the pixel, one past the part's samples would darken it, and 0 beside a sum other parts'
+    // counts would divide (the pixel twice as bright). Each is a whole number of the part's range.
+    const double most = double(part.samples->count);
+    for (size_t i = 0; i < part.sampleCount.size(); ++i) {
+        const float n = part.sampleCount[i];
+        const std::string pixel = path + ": pixel (" + std::to_string(i % size_t(part.image.width)) + ", " +
+                                  std::to_string(i / size_t(part.image.width)) + ") has the sample count N = " + shortNumber(n);
+        if (!(n >= 0.0f && n <= most && std::floor(n) == n))
+            throw std::invalid_argument(pixel + ", which is not a whole number from 0 to the part's " + shortNumber(most) +
+                                        " samples (" + describe(*part.samples) + ")");
+        if (n == 0.0f)
+            for (size_t c = 3 * i; c < 3 * i + 3 && c < part.sampleSums.size(); ++c)
+                if (part.sampleSums[c] != ExactSum())
+                    throw std::invalid_argument(pixel + " beside a radiance sum that is not 0: no sample made that sum");
+    }
     return part;
 }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "number_checks.h"
 #include "demo_scene.h"
 #include "final_render.h"
 #include "frame_options.h"
@@ -102,7 +103,7 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_flag("--no-filter", o->frame.noFilter,
                   "Point-sample the weave in the preview even where it is finer than a pixel (the Render button "
                   "filters only with --filter)");
-    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(wholeNumber(0));
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->add_option("--widget-map", o->widgetMap,
                     "Window: write the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON to FILE each frame");

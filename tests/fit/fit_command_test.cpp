@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,8 @@
 #include <thread>
 
 #include "capture_rig.h"
+#include "frame_io.h"
+#include "image_io.h"
 #include "run_woven.h"
 
 namespace woven::test {
@@ -170,6 +173,31 @@ TEST_F(FitCommand, InterruptWritesTheBestFitSoFarUnderThePartialName) {
     std::ifstream in(file("out.partial.json"));
     ASSERT_TRUE(in) << err;
     EXPECT_TRUE(nlohmann::json::parse(in).contains("pattern"));
+}
+
+// A photo with nothing to fit is refused, not fitted as some weave: a uniform grey (it was
+// "satin 7/1, 0.85 x 4.3 ends/picks per cm", exit 0) and one whose pixel is not a number.
+TEST_F(FitCommand, PhotosWithNoSignalAreRefused) {
+    TextureImage grey;
+    grey.width = grey.height = 64;
+    grey.bytes.assign(64 * 64, glm::u8vec4(128, 128, 128, 255));
+    writeTexturePng(file("grey.png"), grey);
+    const std::string path = writeShotFile(dir_.string(), "grey", 64, "{\"image\": \"grey.png\"}");
+    RunResult r = fit(path);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("grey.png: every pixel is within 1% of the mean"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+
+    Image nan;
+    nan.width = nan.height = 64;
+    nan.pixels.assign(64 * 64, glm::vec3(0.2f));
+    for (size_t i = 0; i < nan.pixels.size(); i += 3) nan.pixels[i] = glm::vec3(0.6f);
+    nan.pixels[65] = glm::vec3(std::nanf(""));
+    writeExr(file("nan.exr"), ExrImage{nan, {}});
+    const std::string nanShot = writeShotFile(dir_.string(), "nan", 64, "{\"image\": \"nan.exr\"}");
+    r = fit(nanShot);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("nan.exr: pixel (1, 1) is not a finite number"), std::string::npos) << r.out;
 }
 
 // Every output is checked before the fit (output_path.h): a FIFO, a read-only file, a report
