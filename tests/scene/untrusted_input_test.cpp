@@ -186,6 +186,35 @@ TEST(UntrustedGltf, CoincidentCopiesOfATriangleAreDroppedAndCountedInOneLine) {
     EXPECT_EQ(scene.warnings[0], "dropped 399998 duplicate triangles in 2 primitives ('a/pile/0', 'b/pile/0')");
 }
 
+// A million instances in one place hung a 32 x 24 render (every ray tests every copy): copies of
+// another's matrix are dropped in one warning, as coincident triangles are. A scale of 1e30 is
+// no "zero scale": it is refused as past the coordinate limit.
+TEST(UntrustedGltf, CoincidentInstancesAreDrawnOnceAndAHugeScaleIsNoZeroScale) {
+    TempDir dir;
+    const auto write = [&](const std::string& name, const nlohmann::json& attributes, GltfBuilder& b) {
+        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})}}}}, "leaf");
+        b.useExtension("EXT_mesh_gpu_instancing", true);
+        b.setScene({b.addNode({{"mesh", mesh}, {"name", "tree"}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", attributes}}}}}})});
+        b.writeGlb(dir.file(name));
+    };
+    GltfBuilder pile;
+    std::vector<glm::vec3> t(1000000, glm::vec3(0.0f));
+    t[500000] = glm::vec3(5.0f, 0.0f, 0.0f);
+    write("pile.glb", {{"TRANSLATION", pile.addVec3(t)}}, pile);
+    const SceneDescription scene = loadScene(dir.file("pile.glb"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.meshes[0].instances->size(), 2u);
+    EXPECT_EQ((*scene.meshes[0].instances)[1][3], glm::vec4(5.0f, 0.0f, 0.0f, 1.0f));
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_THAT(scene.warnings[0], HasSubstr("node 'tree': 999998 of its EXT_mesh_gpu_instancing instances repeat another's matrix"));
+
+    GltfBuilder huge;
+    write("huge.glb", {{"SCALE", huge.addVec3({glm::vec3(1e30f)})}}, huge);
+    const std::string error = loadError(dir.file("huge.glb"));
+    EXPECT_THAT(error, HasSubstr("huge.glb: node 'tree': EXT_mesh_gpu_instancing instance 0: "));
+    EXPECT_THAT(error, ::testing::Not(HasSubstr("zero scale")));
+}
+
 // fuzz_gltf's find: a .glb one byte short, whose binary chunk then claims a byte past the file's
 // end, had tinygltf copy past its buffer. Refused, naming the file, whether or not the header's
 // total length was cut to match.
