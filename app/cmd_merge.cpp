@@ -188,9 +188,9 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         if (parts.empty()) sum.passSums.assign(part.passSums.size(), PassSums());
         else if (part.passSums.size() != sum.passSums.size())
             throw std::invalid_argument((part.passSums.empty() ? path : inputs.front()) +
-                                        " has no render passes (an older woven wrote it) and " +
+                                        " has no render passes (rendered with --no-passes, or by an older woven) and " +
                                         (part.passSums.empty() ? inputs.front() : path) +
-                                        " has: parts of one frame come from one version");
+                                        " has: the parts of one frame are rendered alike");
         if (parts.empty()) sum.lacksDirectPass = part.lacksDirectPass;
         else if (!part.passSums.empty() && part.lacksDirectPass != sum.lacksDirectPass)
             throw std::invalid_argument((part.lacksDirectPass ? path : inputs.front()) +
@@ -215,7 +215,7 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
     if (held.size() == 1) sum.samples = held.front();
     if (sum.passSums.empty())
         std::cerr << "warning: " << inputs.front()
-                  << " has no render passes (an older woven wrote it): the merged frame has none\n";
+                  << " has no render passes (rendered with --no-passes, or by an older woven): the merged frame has none\n";
 
     const std::string partial = partialName(out);
     if (!missing.empty()) {
