@@ -15,7 +15,6 @@
 #include "output_path.h"
 #include "untrusted_json.h"
 #include "woven_material.h"
-#include "woven_params_json.h"
 
 namespace woven {
 
@@ -80,7 +79,7 @@ void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, 
     } catch (const std::exception& e) {
         throw std::invalid_argument(std::string("--material: ") + e.what());
     }
-    const WovenMaterial material(paramsFromJson(j));
+    const WovenMaterial material(flatSurfaceParams(j));
     const float theta = glm::radians(thetaDeg), phi = glm::radians(phiDeg);
     const glm::vec3 wo(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
 

@@ -124,7 +124,7 @@ TEST_F(OutputPolicy, HeadlessPreviewRefusesTheWindowsOptions) {
     }
 }
 
-TEST_F(OutputPolicy, BsdfEvalRefusesAnUnknownKeyAndBsdfPlotAnotherImageType) {
+TEST_F(OutputPolicy, BsdfEvalRefusesAnUnknownKeyAndBsdfPlotAnotherImageTypeButTakesAPreset) {
     std::ofstream(file("query.jsonl")) << R"({"material": {}, "UV": [0.3, 0.3], "wi": [0, 0, 1], "wo": [0, 0, 1]})" << "\n";
     RunResult r = woven::test::runWovenCommand("bsdf-eval < " + file("query.jsonl"));
     EXPECT_NE(r.exitCode, 0);
@@ -133,6 +133,10 @@ TEST_F(OutputPolicy, BsdfEvalRefusesAnUnknownKeyAndBsdfPlotAnotherImageType) {
     EXPECT_NE(r.exitCode, 0);
     EXPECT_THAT(r.out, HasSubstr("plot.exr: bsdf-plot writes PNG"));
     EXPECT_FALSE(fs::exists(file("plot.exr")));
+    // bsdf-plot reads bsdf-eval's names, "preset" included.
+    r = woven::test::runWovenCommand("bsdf-plot --size 16 --material '{\"preset\": \"denim\"}' -o " + file("denim.png"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_TRUE(fs::exists(file("denim.png")));
 }
 
 }  // namespace
