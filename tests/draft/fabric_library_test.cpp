@@ -87,7 +87,9 @@ TEST(TextileUnits, JammedYarnsFillTheirCellsWithAWarning) {
 }
 
 TEST(TextileUnits, MistakesNameTheKey) {
-    EXPECT_THAT(error({{"ends_per_cm", 0}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 0: need a number of threads above 0"));
+    EXPECT_THAT(error({{"ends_per_cm", 0}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 0: need a number of threads from 0.01 to 1000 per cm"));
+    // 1e-300 gave a repeat of "inf cm" and a weight of "-nan g/m2".
+    EXPECT_THAT(error({{"ends_per_cm", 1e-300}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 1e-300: need a number of threads from 0.01"));
     EXPECT_THAT(error({{"ends_per_cm", 8}, {"picks_per_cm", -1}}), HasSubstr("'picks_per_cm' = -1"));
     EXPECT_THAT(error({{"ends_per_cm", "8"}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = \"8\""));
     EXPECT_THAT(error({{"ends_per_cm", 8}, {"ends_per_inch", 20}, {"picks_per_cm", 1}}),
@@ -131,7 +133,7 @@ TEST(FabricLibrary, AFabricFilesMistakeNamesTheFile) {
     ASSERT_EQ(setenv("WOVEN_FABRIC_DIR", dir.path().c_str(), 1), 0);
     const std::string bad = error({{"preset", "bad"}}), misnamed = error({{"preset", "misnamed"}});
     unsetenv("WOVEN_FABRIC_DIR");
-    EXPECT_EQ(bad, dir.file("bad.json") + ": 'ends_per_cm' = 0: need a number of threads above 0 and at most 1000 per cm (2540 per inch)");
+    EXPECT_EQ(bad, dir.file("bad.json") + ": 'ends_per_cm' = 0: need a number of threads from 0.01 to 1000 per cm (0.0254 to 2540 per inch)");
     EXPECT_EQ(misnamed, dir.file("misnamed.json") + ": 'name' is \"other\", not its file's name");
 }
 
