@@ -91,6 +91,11 @@ TEST_F(FitCommand, BadPhotoKeysAreNamed) {
     const RunResult r = fit(path);
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find(path + ": photo.encoding: "), std::string::npos) << r.out;
+    // 1e-300 was "must be positive" (it is, and a float makes it 0): the range is said.
+    const std::string tiny = writeShotFile(dir_.string(), "tiny", 64, "{\"image\": \"shot.png\", \"exposure\": 1e-300}");
+    const RunResult t = fit(tiny);
+    EXPECT_NE(t.exitCode, 0);
+    EXPECT_NE(t.out.find(tiny + ": photo.exposure: is 1e-300, must be from 1e-06 to 1e+06"), std::string::npos) << t.out;
 }
 
 // A budget that ends inside the weave search: the best fit so far, a warning, and the report.
