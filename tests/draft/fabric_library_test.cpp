@@ -123,6 +123,14 @@ TEST(FabricLibrary, PresetsAndTheirOverrides) {
     EXPECT_THAT(error({{"preset", "denimm"}}), HasSubstr("'preset': \"denimm\" is no fabric in"));
     EXPECT_THAT(error({{"preset", "denimm"}}), HasSubstr("the library has canvas, chambray, denim"));
     EXPECT_THAT(error({{"preset", "../drafts/denim"}}), HasSubstr("'preset' = \"../drafts/denim\": need a fabric's name"));
+    // Two keys given that contradict each other are refused with a preset as without one: a
+    // given key replaces only the preset's keys, never another given key.
+    EXPECT_THAT(error({{"preset", "denim"}, {"yarn_width", 0.3}, {"weft_count", "20 tex"}}),
+                HasSubstr("'weft_count' and 'yarn_width' both set the yarn's width"));
+    EXPECT_THAT(error({{"preset", "denim"}, {"ends_per_cm", 20}, {"ends_per_inch", 50}}),
+                HasSubstr("'ends_per_cm' and 'ends_per_inch' both give the ends"));
+    EXPECT_THAT(error({{"preset", "denim"}, {"repeat", {10, 20}}, {"ends_per_cm", 20}, {"picks_per_cm", 16}}),
+                HasSubstr("'ends_per_cm' and 'repeat' both set the repeat"));
 }
 
 TEST(FabricLibrary, AFabricFilesMistakeNamesTheFile) {
