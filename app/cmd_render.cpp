@@ -21,6 +21,8 @@
 #include "render_options.h"
 #include "render_job.h"
 #include "sample_index_check.h"
+#include "scene_camera.h"
+#include "scene_lighting.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -82,9 +84,10 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
         out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles"
             << (m.instances ? " x " + std::to_string(m.instances->size()) + " instances" : "") << "  material "
             << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default")
-            << (emits ? "  emissive: an area light" : "") << "\n";
+            << (emits ? "  emissive" : "") << "\n";
     }
-    // Emissive meshes light a scene too: a file lit by a lamp mesh alone is not unlit.
+    // Emissive meshes light a scene by what they deliver (scene_lighting.h): a lamp does, a
+    // screen or a mostly black emissive texture does not.
     out << "lights:" << (scene.lights.empty() ? (emitters ? " none but the emissive meshes" : " none") : "") << "\n";
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const PunctualLight& l = scene.lights[i];
@@ -92,6 +95,11 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
         out << "  " << (directional ? "directional" : l.type == PunctualLight::Type::Spot ? "spot" : "point") << "  "
             << quoted(l.name.empty() ? "light" + std::to_string(i) : l.name) << "  intensity " << l.intensity.r << " "
             << l.intensity.g << " " << l.intensity.b << (directional ? " W/m^2" : " W/sr") << "\n";
+    }
+    if (emitters) {
+        const float E = emitterIrradiance(scene, sceneBounds(scene).centre());
+        out << "  emissive meshes: about " << E << " W/m^2 at the scene's centre ("
+            << (E >= kDimIrradiance ? "they light it" : "too little to light it") << ")\n";
     }
 }
 

@@ -219,6 +219,11 @@ TEST(RenderCommand, AnEmitterWhoseTextureIsMostlyBlackIsNotTheScenesLight) {
     const Result dots = render("dots.gltf", "dots.exr", {});
     ASSERT_EQ(dots.exitCode, 0) << dots.err;
     EXPECT_NE(dots.err.find("dots.gltf has no light source"), std::string::npos) << dots.err;
+    // --list says so: the lamp is emissive, and gives too little to light the scene.
+    const Result list = runWoven({"render", dir.file("dots.gltf"), "--list"}, dir);
+    ASSERT_EQ(list.exitCode, 0) << list.err;
+    EXPECT_NE(list.out.find("emissive meshes: about 0.0"), std::string::npos) << list.out;
+    EXPECT_NE(list.out.find("W/m^2 at the scene's centre (too little to light it)"), std::string::npos) << list.out;
     const Result own = render("dots.gltf", "own.exr", {"--environment", "none"});
     ASSERT_EQ(own.exitCode, 0) << own.err;
     EXPECT_GT(meanRadiance(dir.file("dots.exr")), 10.0 * meanRadiance(dir.file("own.exr")));
