@@ -50,6 +50,24 @@ glm::dvec2 readUv(const nlohmann::json& j) {
 
 }  // namespace
 
+WovenParams flatSurfaceParams(const nlohmann::json& j) {
+    // "wif" is read from the working directory, as for --woven.
+    std::vector<std::string> warnings;
+    MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
+    // The flat surface's UV unit is a metre (dp/du = +x, in glTF's unit), so thread counts
+    // and "scale": "draft" put threads per cm x 100 on it.
+    if (read.threadsPerCm) {
+        read.params.repeat = *read.threadsPerCm * 100.0f;
+        try {
+            validate(read.params);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(read.scaleKey + " gives " + e.what());
+        }
+    }
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    return read.params;
+}
+
 // Materials are rebuilt only when a line's material differs from every one kept.
 class BsdfEval::MaterialCache {
 public:
@@ -57,21 +75,7 @@ public:
         const std::string key = j.dump();
         auto it = cache_.find(key);
         if (it != cache_.end()) return *it->second;
-        // "wif" is read from the working directory, as for --woven.
-        std::vector<std::string> warnings;
-        MaterialJson read = materialFromJson(j, WovenParams{}, "", warnings);
-        // The flat surface's UV unit is a metre (dp/du = +x, in glTF's unit), so thread counts
-        // and "scale": "draft" put threads per cm x 100 on it.
-        if (read.threadsPerCm) {
-            read.params.repeat = *read.threadsPerCm * 100.0f;
-            try {
-                validate(read.params);
-            } catch (const std::invalid_argument& e) {
-                throw std::invalid_argument(read.scaleKey + " gives " + e.what());
-            }
-        }
-        for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-        auto material = std::make_unique<WovenMaterial>(read.params);
+        auto material = std::make_unique<WovenMaterial>(flatSurfaceParams(j));
         // A stream of ever new materials must not grow without bound: start over when full.
         if (cache_.size() >= kMaxCachedMaterials) cache_.clear();
         return *cache_.emplace(key, std::move(material)).first->second;
@@ -142,6 +146,10 @@ std::string BsdfEval::answer(std::string_view line) {
                                     std::to_string(kMaxBsdfEvalLineBytes >> 20) + " MiB");
     const nlohmann::json query = parseUntrustedJson(line);
     if (!query.is_object()) throw std::invalid_argument("each line must be a JSON object");
+    // A misspelt key ("UV") must not be answered as if it were absent (uv (0, 0)).
+    for (const auto& item : query.items())
+        if (item.key() != "material" && item.key() != "uv" && item.key() != "wi" && item.key() != "wo")
+            throw std::invalid_argument("unknown key " + nlohmann::json(item.key()).dump() + " (expected material, uv, wi, wo)");
     if (!query.contains("material")) throw std::invalid_argument("missing 'material'");
     return evalQuery(materials_->get(query.at("material")), query, warnedFarUv_).dump();
 }

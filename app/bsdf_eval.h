@@ -5,12 +5,21 @@
 // double to place within a quarter thread, answered toward the weave's far field, one warning a
 // run). The lines come from anyone's program, so each is bounded (length, JSON depth) and every
 // problem is an exception with a message, never a crash.
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
 
+#include "woven_params.h"
+
 namespace woven {
+
+// The woven parameters of a material as bsdf-eval and bsdf-plot read it: materialFromJson's keys
+// (presets, thread counts, a draft), on the flat surface whose UV unit is a metre. Warnings go
+// to stderr; throws std::invalid_argument naming the key.
+WovenParams flatSurfaceParams(const nlohmann::json& material);
 
 // Longer lines are refused unread: a query with a material is well under a kilobyte.
 constexpr size_t kMaxBsdfEvalLineBytes = size_t(1) << 20;

@@ -10,9 +10,11 @@
 
 #include "bsdf_eval.h"
 #include "commands.h"
+#include "number_checks.h"
+#include "frame_io.h"
+#include "output_path.h"
 #include "untrusted_json.h"
 #include "woven_material.h"
-#include "woven_params_json.h"
 
 namespace woven {
 
@@ -68,13 +70,16 @@ std::optional<glm::dvec2> elementCentre(const WovenMaterial& m, YarnType type) {
 }
 
 void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, int size, const std::string& out) {
+    if (lowerExtension(out) != ".png")
+        throw std::invalid_argument(out + ": bsdf-plot writes PNG: the output's name must end in .png");
+    checkOutput(out);
     nlohmann::json j;
     try {
         j = materialText.empty() ? nlohmann::json::object() : parseUntrustedJson(materialText);
     } catch (const std::exception& e) {
         throw std::invalid_argument(std::string("--material: ") + e.what());
     }
-    const WovenMaterial material(paramsFromJson(j));
+    const WovenMaterial material(flatSurfaceParams(j));
     const float theta = glm::radians(thetaDeg), phi = glm::radians(phiDeg);
     const glm::vec3 wo(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
 
@@ -110,10 +115,9 @@ void runBsdfPlot(const std::string& materialText, float thetaDeg, float phiDeg, 
         const glm::vec3 c = heat(maxValue > 0.0f ? std::sqrt(value[i] / maxValue) : 0.0f);
         for (int k = 0; k < 3; ++k) rgb[i * 3 + k] = (unsigned char)std::lround(c[k] * 255.0f);
     }
-    const std::string tmp = out + ".partial";
-    if (!stbi_write_png(tmp.c_str(), width, size, 3, rgb.data(), width * 3))
-        throw std::runtime_error("cannot write '" + out + "'");
-    if (std::rename(tmp.c_str(), out.c_str()) != 0) throw std::runtime_error("cannot write '" + out + "'");
+    writeFileAtomically(out, [&](const std::string& tmp) {
+        if (!stbi_write_png(tmp.c_str(), width, size, 3, rgb.data(), width * 3)) throw std::runtime_error("cannot write the PNG data");
+    });
     std::cerr << "wrote " << out << " (left: weft element, right: warp element; f cos over the hemisphere of wi, "
               << "x = +u, y = +v, peak f cos = " << maxValue << ")\n";
 }
@@ -138,9 +142,9 @@ void addBsdfCommands(CLI::App& app) {
     auto opts = std::make_shared<PlotOptions>();
     CLI::App* plot = app.add_subcommand("bsdf-plot", "Write a PNG of the lobe f cos over the hemisphere, weft and warp");
     plot->add_option("--material", opts->material, "woven material as JSON (bsdf-eval's names)");
-    plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(CLI::Range(0.0f, 89.9f));
+    plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(finiteNumber(0.0, 89.9));
     plot->add_option("--phi", opts->phi, "azimuth of wo in degrees, 0 = +u");
-    plot->add_option("--size", opts->size, "pixels per panel")->check(CLI::Range(16, 4096));
+    plot->add_option("--size", opts->size, "pixels per panel")->check(wholeNumber(16, 4096));
     plot->add_option("-o,--out", opts->out, "output PNG");
     plot->callback([opts] { runBsdfPlot(opts->material, opts->theta, opts->phi, opts->size, opts->out); });
 }

@@ -25,6 +25,7 @@
 #include "image_io.h"
 #include "integrators.h"
 #include "number_checks.h"
+#include "output_path.h"
 #include "render_job.h"
 #include "scene_camera.h"
 #include "scene_hash.h"
@@ -257,8 +258,12 @@ std::string seconds(double t) {
 void runConverge(const ConvergeOptions& o) {
     namespace fs = std::filesystem;
     auto scene = std::make_shared<const SceneDescription>(loadScene(o.scene));
-    fs::create_directories(o.outDir);
+    std::error_code ec;
+    fs::create_directories(o.outDir, ec);
+    if (!fs::is_directory(o.outDir, ec)) throw std::invalid_argument(o.outDir + ": cannot make the folder");
     const std::string stem = fs::path(o.scene).stem().string();
+    const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
+    checkOutput(csvPath);
     const Image ref = reference(scene, o, stem);
 
     std::vector<Variant> variants;  // the denoised ones right after the same render's undenoised ones
@@ -268,7 +273,6 @@ void runConverge(const ConvergeOptions& o) {
                 for (const std::string& denoise : o.denoise) variants.push_back({integrator, filter == "on", threshold, denoise == "on"});
     const double referenceDetail = detailEnergy(ref);
 
-    const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
     std::ofstream csv(csvPath);
     csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold,denoise,detail\n";
     std::cout << "| integrator | filter | adaptive | denoise | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) | "
@@ -434,9 +438,9 @@ void addConvergeCommand(CLI::App& app) {
         ->check(finiteNumber(0.0));
     cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
         ->check(timeCheck);
-    cmd->add_option("--width", o->width, "image width")->check(CLI::Range(8, 8192));
-    cmd->add_option("--height", o->height, "image height")->check(CLI::Range(8, 8192));
-    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--width", o->width, "image width")->check(wholeNumber(8, 8192));
+    cmd->add_option("--height", o->height, "image height")->check(wholeNumber(8, 8192));
+    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(wholeNumber(0));
     cmd->add_option("--out-dir", o->outDir, "where the reference, CSV and plot go");
     cmd->callback([o] { runConverge(*o); });
 }

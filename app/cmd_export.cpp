@@ -1,13 +1,18 @@
 // `woven bake SCENE -o DIR`: each woven material's glTF textures (and mip levels) as PNG files;
 // `woven export SCENE -o OUT.glb`: the scene as a standard glTF file, woven materials baked,
 // with --report the bake's error against the model (docs/EXPORT.md).
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
 #include "bake_report.h"
 #include "commands.h"
+#include "number_checks.h"
 #include "flat_cloth.h"
 #include "frame_io.h"
 #include "gltf_writer.h"
@@ -47,9 +52,9 @@ SceneDescription loadWithEdits(const ExportCommand& o) {
 
 void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
     cmd.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven first (as woven render's --woven)");
-    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(CLI::Range(4, 16384));
+    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(wholeNumber(4, 16384));
     cmd.add_option("--repeats", o.options.bake.repeats, "weave repeats each texture holds along u and v (default 1)")
-        ->check(CLI::Range(1, 1024));
+        ->check(wholeNumber(1, 1024));
     cmd.add_flag("--no-sheen", o.noSheen, "fit no KHR_materials_sheen layer");
     cmd.add_flag("--isotropic", o.isotropic,
                  "no KHR_materials_anisotropy: one roughness a texel, for renderers that ignore the extension (Blender 3.4)");
@@ -69,39 +74,79 @@ void showBakeProgress(BakeOptions& bake, const std::shared_ptr<ProgressBar>& bar
     };
 }
 
+// One file of a bake: its final name and how it is written (to the name given).
+struct BakeFile {
+    std::string path;
+    std::function<void(const std::string&)> write;
+};
+
+// A bake's files all appear, or none does: each is written under its partial name first (those
+// written are removed when one fails), then all are renamed into place.
+void writeAllOrNone(const std::vector<BakeFile>& files) {
+    for (const BakeFile& f : files) {
+        checkOutput(f.path);
+        checkOutput(partialName(f.path));
+    }
+    std::vector<std::string> written;
+    try {
+        for (const BakeFile& f : files) {
+            f.write(partialName(f.path));
+            written.push_back(partialName(f.path));
+        }
+    } catch (...) {
+        for (const std::string& path : written) std::remove(path.c_str());
+        throw;
+    }
+    for (const BakeFile& f : files)
+        if (std::rename(partialName(f.path).c_str(), f.path.c_str()) != 0)
+            throw FileWriteError(f.path + ": cannot rename " + partialName(f.path) + " into place: " + std::strerror(errno));
+}
+
 void runBake(ExportCommand o) {
     namespace fs = std::filesystem;
     o.options.bake.sheen = !o.noSheen;
     o.options.bake.anisotropy = !o.isotropic;
     const auto bar = std::make_shared<ProgressBar>("bake");
     showBakeProgress(o.options.bake, bar);
-    if (!fs::is_directory(o.out)) throw ExportError(o.out + ": no such folder (create it first)");
+    std::error_code ec;
+    if (fs::exists(o.out, ec) && !fs::is_directory(o.out, ec))
+        throw ExportError(o.out + ": is a file: bake -o names the folder its textures go to");
+    if (!fs::is_directory(o.out, ec)) throw ExportError(o.out + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
     std::cerr << "bake: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
     bakedScene(scene, o.options, &bakes);
     bar->finish();
+    std::vector<BakeFile> files;
     for (const MaterialBake& b : bakes) {
         const Material& original = scene.materials[size_t(b.material)];
         const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
         for (int map = 0; map < int(b.baked.textures.size()); ++map) {
-            refuseOverwritingInputs(stem + "_" + BakedMaterial::mapName(map) + ".png", scene.inputFiles);
-            writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + ".png", b.baked.textures[size_t(map)]);
+            const TextureImage& texture = b.baked.textures[size_t(map)];
+            files.push_back({stem + "_" + BakedMaterial::mapName(map) + ".png",
+                             [&texture](const std::string& path) { writeTexturePng(path, texture); }});
             if (!o.mips) continue;
-            for (size_t level = 0; level < b.baked.mipLevels[size_t(map)].size(); ++level)
-                writeTexturePng(stem + "_" + BakedMaterial::mapName(map) + "_mip" + std::to_string(level + 1) + ".png",
-                                b.baked.mipLevels[size_t(map)][level]);
+            for (size_t level = 0; level < b.baked.mipLevels[size_t(map)].size(); ++level) {
+                const TextureImage& mip = b.baked.mipLevels[size_t(map)][level];
+                files.push_back({stem + "_" + BakedMaterial::mapName(map) + "_mip" + std::to_string(level + 1) + ".png",
+                                 [&mip](const std::string& path) { writeTexturePng(path, mip); }});
+            }
         }
         // A square of one texture tile in the material, for any glTF viewer.
-        SceneDescription square;
-        square.source = o.scene;
-        const Mesh m = flatCloth(glm::vec2(b.baked.uvSize), fileStem(original.name));
-        square.meshes.push_back(m);
-        square.materials.push_back(bakedMaterial(original, b.baked, 0));
-        square.textures = b.baked.textures;
-        std::vector<std::string> warnings;
-        refuseOverwritingInputs(stem + ".gltf", scene.inputFiles);
-        writeGltf(stem + ".gltf", square, sceneCamera(square), warnings);
+        files.push_back({stem + ".gltf", [&o, &b, &original](const std::string& path) {
+                             SceneDescription square;
+                             square.source = o.scene;
+                             square.meshes.push_back(flatCloth(glm::vec2(b.baked.uvSize), fileStem(original.name)));
+                             square.materials.push_back(bakedMaterial(original, b.baked, 0));
+                             square.textures = b.baked.textures;
+                             std::vector<std::string> warnings;
+                             writeGltf(path, square, sceneCamera(square), warnings);
+                         }});
+    }
+    writeAllOrNone(files);
+    for (const MaterialBake& b : bakes) {
+        const Material& original = scene.materials[size_t(b.material)];
+        const std::string stem = (fs::path(o.out) / fileStem(original.name)).string();
         std::cout << "material '" << original.name << "': " << b.baked.textures[0].width << "x" << b.baked.textures[0].height
                   << " texels for " << b.baked.threads.x * o.options.bake.repeats << "x" << b.baked.threads.y * o.options.bake.repeats
                   << " threads (" << b.baked.uvSize.x << " x " << b.baked.uvSize.y << " in uv), far-field error "
@@ -141,7 +186,7 @@ void runExport(ExportCommand o) {
     if (!o.reportOptions.imageFolder.empty() && !std::filesystem::is_directory(o.reportOptions.imageFolder))
         throw ExportError(o.reportOptions.imageFolder + ": no such folder (create it first)");
     const SceneDescription scene = loadWithEdits(o);
-    refuseOverwritingInputs(o.out, scene.inputFiles);
+    checkOutput(o.out);
     std::cerr << "export: baking the woven materials of " << o.scene << "\n";
     std::vector<MaterialBake> bakes;
     const std::vector<std::string> warnings = exportScene(scene, o.out, o.options, &bakes);
@@ -190,7 +235,7 @@ void addExportCommands(CLI::App& app) {
     cmd->add_option("--preview-spp", e->u3m.previewSpp, "U3M: samples per pixel of the preview render (default 16)")->check(CLI::Range(1, 1 << 16));
     cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
     cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
-    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(CLI::Range(1, 1 << 16));
+    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(wholeNumber(1, 1 << 16));
     cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder (OUT_MATERIAL_near_model.png, ...)");
     cmd->callback([e] { runExport(*e); });
 

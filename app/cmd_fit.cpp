@@ -8,7 +8,6 @@
 #include <memory>
 #include <sstream>
 
-#include "atomic_file.h"
 #include "commands.h"
 #include "fabric_fit.h"
 #include "fit_output.h"
@@ -42,14 +41,13 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 
 int runFit(const FitCommand& o) {
     std::vector<Shot> shots;
-    std::vector<std::string> inputs;
     for (const std::string& path : o.shots) {
         shots.push_back(loadShot(path, o.target));
-        inputs.insert(inputs.end(), shots.back().scene->inputFiles.begin(), shots.back().scene->inputFiles.end());
-        inputs.push_back(shots.back().photo.image);
     }
-    refuseOverwritingInputs(o.out, inputs);
-    checkWritable(o.out);
+    // Every output is checked before the fit: the inputs read are none of them (output_path.h).
+    checkOutput(o.out);
+    checkOutput(partialName(o.out));
+    if (!o.report.empty()) checkFitReport(o.report, shots.size());
 
     FitOptions options;
     options.seconds = o.time;
@@ -73,8 +71,10 @@ int runFit(const FitCommand& o) {
     if (!result.complete && !wasInterrupted)
         std::cerr << "warning: fit: --time " << o.time << " s ran out before the fit finished its stages; "
                   << o.out << " holds the best fit so far (docs/FIT.md says how long a fit takes)\n";
-    writeJson(o.out, fittedMaterialJson(result.params, shots[0]));
-    std::cerr << (wasInterrupted ? "interrupted: wrote the best fit so far to " : "wrote ") << o.out << "\n";
+    // An interrupted fit is unfinished: it never takes the final name (as render's .partial.exr).
+    const std::string out = wasInterrupted ? partialName(o.out) : o.out;
+    writeJson(out, fittedMaterialJson(result.params, shots[0]));
+    std::cerr << (wasInterrupted ? "interrupted: wrote the best fit so far to " : "wrote ") << out << "\n";
 
     std::cout << "weave " << describeWeave(result.params.pattern);
     if (const auto counts = threadsPerCm(shots[0], result.params.repeat))
@@ -110,8 +110,8 @@ void addFitCommand(CLI::App& app) {
     cmd->add_option("--report", o->report, "folder for the photos beside their fitted renders, each statistic's error "
                                            "and the loss against time");
     cmd->add_option("--seed", o->seed, "seed of the fit's renders (default 1): the loss is a pure function of the parameters");
-    cmd->add_option("--spp", o->spp, "samples per pixel of the fit's renders (default 4)")->check(CLI::Range(1, 1024));
-    cmd->add_option("--threads", o->threads, "render threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--spp", o->spp, "samples per pixel of the fit's renders (default 4)")->check(wholeNumber(1, 1024));
+    cmd->add_option("--threads", o->threads, "render threads (default: all cores)")->check(wholeNumber(0));
     cmd->callback([o] {
         if (int rc = runFit(*o)) throw CLI::RuntimeError(rc);
     });

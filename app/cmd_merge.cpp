@@ -18,6 +18,7 @@
 #include "integrators.h"
 #include "output_path.h"
 #include "sample_index_check.h"
+#include "short_number.h"
 
 namespace woven {
 
@@ -38,13 +39,22 @@ ExrImage readPart(const std::string& path) {
     if (part.sampleCount.empty()) throw missing("sample-count channel samples.N");
     if (part.sampleSums.empty()) throw missing("exact sample sums (channels exact.radiance0.R-exact.radiance5.B)");
     if (!part.samples) throw missing("sample range (attributes wovenFirstSample, wovenSampleCount)");
-    // A count is what the sums are divided by: NaN or a negative one would write NaN or
-    // negate the pixel.
-    for (size_t i = 0; i < part.sampleCount.size(); ++i)
-        if (!(part.sampleCount[i] >= 0.0f && std::isfinite(part.sampleCount[i])))
-            throw std::invalid_argument(path + ": pixel (" + std::to_string(i % size_t(part.image.width)) + ", " +
-                                        std::to_string(i / size_t(part.image.width)) + ") has the sample count N = " +
-                                        std::to_string(part.sampleCount[i]) + ", which is not a finite number >= 0");
+    // A count is what the sums are divided by: NaN or a negative one would write NaN or negate
+    // the pixel, one past the part's samples would darken it, and 0 beside a sum other parts'
+    // counts would divide (the pixel twice as bright). Each is a whole number of the part's range.
+    const double most = double(part.samples->count);
+    for (size_t i = 0; i < part.sampleCount.size(); ++i) {
+        const float n = part.sampleCount[i];
+        const std::string pixel = path + ": pixel (" + std::to_string(i % size_t(part.image.width)) + ", " +
+                                  std::to_string(i / size_t(part.image.width)) + ") has the sample count N = " + shortNumber(n);
+        if (!(n >= 0.0f && n <= most && std::floor(n) == n))
+            throw std::invalid_argument(pixel + ", which is not a whole number from 0 to the part's " + shortNumber(most) +
+                                        " samples (" + describe(*part.samples) + ")");
+        if (n == 0.0f)
+            for (size_t c = 3 * i; c < 3 * i + 3 && c < part.sampleSums.size(); ++c)
+                if (part.sampleSums[c] != ExactSum())
+                    throw std::invalid_argument(pixel + " beside a radiance sum that is not 0: no sample made that sum");
+    }
     return part;
 }
 
@@ -145,7 +155,8 @@ std::vector<SampleRange> gaps(const std::vector<SampleRange>& held, int64_t expe
 void checkFiles(const std::vector<std::string>& inputs, const std::string& out) {
     if (lowerExtension(out) != ".exr")
         throw std::invalid_argument(out + ": merge writes OpenEXR: the output's name must end in .exr");
-    checkWritable(out);
+    checkOutput(out);
+    checkOutput(partialName(out));
     for (size_t i = 0; i < inputs.size(); ++i) {
         if (sameFile(inputs[i], out))
             throw std::invalid_argument(inputs[i] + " is both a part and the output: merging would replace it");
@@ -177,9 +188,9 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
         if (parts.empty()) sum.passSums.assign(part.passSums.size(), PassSums());
         else if (part.passSums.size() != sum.passSums.size())
             throw std::invalid_argument((part.passSums.empty() ? path : inputs.front()) +
-                                        " has no render passes (an older woven wrote it) and " +
+                                        " has no render passes (rendered with --no-passes, or by an older woven) and " +
                                         (part.passSums.empty() ? inputs.front() : path) +
-                                        " has: parts of one frame come from one version");
+                                        " has: the parts of one frame are rendered alike");
         if (parts.empty()) sum.lacksDirectPass = part.lacksDirectPass;
         else if (!part.passSums.empty() && part.lacksDirectPass != sum.lacksDirectPass)
             throw std::invalid_argument((part.lacksDirectPass ? path : inputs.front()) +
@@ -204,9 +215,9 @@ void runMerge(const std::vector<std::string>& inputs, const std::string& out, st
     if (held.size() == 1) sum.samples = held.front();
     if (sum.passSums.empty())
         std::cerr << "warning: " << inputs.front()
-                  << " has no render passes (an older woven wrote it): the merged frame has none\n";
+                  << " has no render passes (rendered with --no-passes, or by an older woven): the merged frame has none\n";
 
-    const std::string partial = partialFrameName(out);
+    const std::string partial = partialName(out);
     if (!missing.empty()) {
         writeExr(partial, sum, ExrPrecision::Float);
         throw std::runtime_error(out + " not written: " + describe(missing) + " missing (no part holds them); wrote " +

@@ -1,15 +1,21 @@
 // `woven preview [SCENE]`: the interactive previewer, or with --headless one preview frame
 // (or with --final the Render button's frame) written to a PNG or EXR.
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 
 #include "commands.h"
+#include "number_checks.h"
 #include "demo_scene.h"
 #include "final_render.h"
 #include "frame_options.h"
 #include "headless_gl.h"
 #include "frame_io.h"
+#include "file_reading.h"
 #include "image_io.h"
+#include "output_path.h"
 #include "orbit_camera.h"
 #include "preview_renderer.h"
 #include "preview_window.h"
@@ -38,10 +44,26 @@ SceneDescription openScene(const PreviewCommandOptions& o) {
     return scene;
 }
 
+// The window's options mean nothing to a headless frame, and the headless ones nothing to the
+// window: each is refused where it would be dropped.
+void checkModeOptions(const PreviewCommandOptions& o) {
+    const std::vector<std::pair<bool, const char*>> windowOnly = {{o.frames != 0, "--frames"},
+                                                       {!o.windowScreenshot.empty(), "--window-screenshot"},
+                                                       {!o.wif.empty(), "--wif"},
+                                                       {!o.widgetMap.empty(), "--widget-map"}};
+    const std::vector<std::pair<bool, const char*>> headlessOnly = {{!o.screenshot.empty(), "--screenshot"}, {o.final, "--final"}};
+    for (const auto& [given, name] : o.headless ? windowOnly : headlessOnly)
+        if (given)
+            throw std::invalid_argument(std::string(name) + " is for " +
+                                        (o.headless ? "the previewer's window: --headless has none (its image is --screenshot)"
+                                                    : "--headless (the window's image is --window-screenshot)"));
+}
+
 void runHeadless(const PreviewCommandOptions& o) {
     if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png (or .exr)");
     checkFrameFileName(o.screenshot);
     const SceneDescription scene = openScene(o);
+    checkOutput(o.screenshot);  // again, now that the scene's files are read: none may be replaced
     const Camera camera = OrbitCamera::forScene(scene).camera();
     if (o.final) {  // the Render button's path: core's RenderJob for the preview's camera
         RenderSettings settings = frameSettings(scene, o.frame);
@@ -81,13 +103,16 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_flag("--no-filter", o->frame.noFilter,
                   "Point-sample the weave in the preview even where it is finer than a pixel (the Render button "
                   "filters only with --filter)");
-    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(wholeNumber(0));
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->add_option("--widget-map", o->widgetMap,
                     "Window: write the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON to FILE each frame");
     cmd->add_option("--wif", o->wif, "Window: open this draft (WIF file) on the first woven material, in the draft view");
     cmd->callback([o] {
+        checkModeOptions(*o);
         if (o->headless) return runHeadless(*o);
+        // The window saves a material or a draft back to the file it opened when its user asks.
+        rememberInputs(false);
         PreviewWindowOptions window;
         window.scene = o->scene;
         window.frame = o->frame;

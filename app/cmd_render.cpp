@@ -21,6 +21,8 @@
 #include "render_options.h"
 #include "render_job.h"
 #include "sample_index_check.h"
+#include "scene_camera.h"
+#include "scene_lighting.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -82,9 +84,10 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
         out << "  " << quoted(m.name) << "  " << m.triangles.size() << " triangles"
             << (m.instances ? " x " + std::to_string(m.instances->size()) + " instances" : "") << "  material "
             << (hasMaterial ? quoted(scene.materials[size_t(m.material)].name) : "default")
-            << (emits ? "  emissive: an area light" : "") << "\n";
+            << (emits ? "  emissive" : "") << "\n";
     }
-    // Emissive meshes light a scene too: a file lit by a lamp mesh alone is not unlit.
+    // Emissive meshes light a scene by what they deliver (scene_lighting.h): a lamp does, a
+    // screen or a mostly black emissive texture does not.
     out << "lights:" << (scene.lights.empty() ? (emitters ? " none but the emissive meshes" : " none") : "") << "\n";
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const PunctualLight& l = scene.lights[i];
@@ -92,6 +95,11 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
         out << "  " << (directional ? "directional" : l.type == PunctualLight::Type::Spot ? "spot" : "point") << "  "
             << quoted(l.name.empty() ? "light" + std::to_string(i) : l.name) << "  intensity " << l.intensity.r << " "
             << l.intensity.g << " " << l.intensity.b << (directional ? " W/m^2" : " W/sr") << "\n";
+    }
+    if (emitters) {
+        const float E = emitterIrradiance(scene, sceneBounds(scene).centre());
+        out << "  emissive meshes: about " << E << " W/m^2 at the scene's centre ("
+            << (E >= kDimIrradiance ? "they light it" : "too little to light it") << ")\n";
     }
 }
 
@@ -104,11 +112,13 @@ int runRender(RenderCommand o) {
     checkFrameFileName(o.out);
 
     auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
-    refuseOverwritingInputs(o.out, scene->inputFiles);
     if (scene->photo)
         std::cerr << "render: " << o.scene << " is a shot: its photo " << scene->photo->image
                   << " is for woven fit; the render does not use it\n";
     applySceneOptions(*scene, o.options.frame);
+    // Now that every input is read (the environment image too), none may be an output.
+    checkOutput(o.out);
+    checkOutput(partialName(o.out));
 
     RenderSettings settings = frameSettings(*scene, o.options.frame);
     const bool timeLimited = o.time > 0.0;
@@ -146,7 +156,7 @@ int runRender(RenderCommand o) {
         std::cerr << "woven render: interrupted before the first pass finished; nothing written\n";
         return wasInterrupted ? 130 : 1;
     }
-    const std::string path = wasInterrupted ? partialFrameName(o.out) : o.out;
+    const std::string path = wasInterrupted ? partialName(o.out) : o.out;
     FilmImage film = job.snapshot();
     // An interrupted frame is written at once, as rendered: it is for looking at or merging.
     if (o.options.frame.denoise && !wasInterrupted) denoiseFilm(film);

@@ -14,8 +14,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "atomic_file.h"
+#include "output_path.h"
 #include "commands.h"
+#include "number_checks.h"
 #include "frame_pattern.h"
 #include "frame_io.h"
 #include "image_io.h"
@@ -48,10 +49,15 @@ std::string absolute(const std::string& path) { return fs::absolute(path).lexica
 
 // "A..B" -> {A, B}.
 std::pair<int, int> parseFrameRange(const std::string& text) {
-    static const std::regex range(R"((\d{1,9})\.\.(\d{1,9}))");
+    static const std::regex range(R"((\d+)\.\.(\d+))");
     std::smatch m;
-    if (!std::regex_match(text, m, range) || std::stoi(m[1]) > std::stoi(m[2]))
-        throw std::invalid_argument("--frames " + text + ": expected A..B with 0 <= A <= B, e.g. 1..240");
+    if (!std::regex_match(text, m, range))
+        throw std::invalid_argument("--frames " + text + ": expected A..B, two whole numbers, e.g. 1..240");
+    // Frame numbers go into file names through a %d field: at most 9 digits.
+    if (m[1].length() > 9 || m[2].length() > 9)
+        throw std::invalid_argument("--frames " + text + ": frame numbers are at most 999999999");
+    if (std::stoi(m[1]) > std::stoi(m[2]))
+        throw std::invalid_argument("--frames " + text + ": the first frame is after the last (A..B needs A <= B)");
     return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
@@ -139,12 +145,26 @@ void writeText(const std::string& path, const std::string& text) {
     });
 }
 
-// Folders and scripts, on the file system every node shares.
+// Makes the folder `path` (and those above it), or throws naming it and the option it is for.
+void makeFolder(const fs::path& path, const std::string& option) {
+    if (path.empty()) return;
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_directory(path, ec))
+        throw std::invalid_argument(option + " " + path.string() + ": is a file, not a folder");
+    fs::create_directories(path, ec);
+    if (!fs::is_directory(path, ec))
+        throw std::invalid_argument(option + " " + path.string() + ": cannot make the folder" + (ec ? ": " + ec.message() : ""));
+}
+
+// Folders and scripts, on the file system every node shares. Each frame's output is checked as
+// an output now (output_path.h), not when the merge job runs.
 void writeJobFiles(const SlurmJob& job) {
-    fs::create_directories(job.logFolder());
+    makeFolder(job.folder, "--job-dir");
+    makeFolder(job.logFolder(), "--job-dir");
     for (const ClusterFrame& f : job.frames) {
-        fs::create_directories(f.parts);
-        fs::create_directories(fs::path(f.out).parent_path());
+        makeFolder(f.parts, "--job-dir");
+        makeFolder(fs::path(f.out).parent_path(), "-o");
+        checkOutput(f.out);
     }
     writeText(job.renderScriptPath(), job.renderScript());
     writeText(job.mergeScriptPath(), job.mergeScript());
@@ -157,7 +177,7 @@ void removeEarlierResults(const SlurmJob& job) {
     for (const ClusterFrame& f : job.frames) {
         for (const fs::directory_entry& entry : fs::directory_iterator(f.parts))
             if (entry.path().filename().string().rfind(kPartPrefix, 0) == 0) removed += fs::remove(entry.path());
-        removed += fs::remove(partialFrameName(f.out));
+        removed += fs::remove(partialName(f.out));
     }
     if (removed > 0) std::cerr << "removed " << removed << " files left by an earlier submission of these frames\n";
 }
@@ -278,7 +298,7 @@ void addSubmitCommand(CLI::App& app) {
     cmd->add_option("-o,--out", o->out, "merged EXR; with several frames a pattern such as frame_%04d.exr")->required();
     cmd->add_option("--tasks", o->tasks, "render tasks per frame, each a range of the samples")
         ->required()
-        ->check(CLI::Range(1, 1000000));
+        ->check(wholeNumber(1, 1000000));
     cmd->add_option("--frames", o->frames, "A..B: the frame numbers (an animation: SCENE and OUT have a %04d field)");
     cmd->add_option("--job-dir", o->jobDir,
                     "folder of the job's scripts, logs and part files, on a file system every node shares "
@@ -300,13 +320,13 @@ void addSubmitCommand(CLI::App& app) {
     }
     cmd->add_option("--partition", o->sbatch.partition, "Slurm partition");
     cmd->add_option("--time", o->sbatch.time, "Slurm time limit of each job, e.g. 30:00 (sbatch --time)");
-    cmd->add_option("--cpus-per-task", o->sbatch.cpusPerTask, "CPUs of each render task")->check(CLI::PositiveNumber);
+    cmd->add_option("--cpus-per-task", o->sbatch.cpusPerTask, "CPUs of each render task")->check(wholeNumber(1));
     cmd->add_option("--sbatch", o->sbatch.extra, "one more sbatch argument, e.g. --sbatch=--account=lab (repeatable)");
     cmd->add_flag("--requeue", o->sbatch.requeue,
                   "let Slurm requeue a task that is pre-empted or loses its node (it renders the same samples again)");
     cmd->add_flag("--wait", o->wait, "wait until the merge is done, showing progress; fail when a frame is not written");
     cmd->add_option("--wait-timeout", o->waitTimeout, "give up waiting after this many seconds (the jobs go on)")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber());
     cmd->add_flag("--dry-run", o->dryRun, "write the job scripts and print them with the sbatch commands; submit nothing");
     cmd->callback([o] { runSubmit(*o); });
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "display_transform.h"
+#include "output_path.h"
 #include "shell_quote.h"
 #include "weave_candidates.h"
 
@@ -29,18 +30,31 @@ Image sideBySide(const Image& a, const Image& b) {
 }
 
 void writeText(const fs::path& path, const std::string& text) {
-    std::ofstream f(path);
-    f << text;
-    if (!f) throw std::runtime_error(path.string() + ": cannot be written");
+    writeFileAtomically(path.string(), [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << text;
+        if (!f) throw std::runtime_error("cannot be written");
+    });
 }
+
+std::string shotPng(size_t i) { return "shot_" + std::to_string(i) + ".png"; }
 
 }  // namespace
 
+void checkFitReport(const std::string& dir, size_t shots) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw FileWriteError(dir + ": --report: is a file: --report names the folder the report goes to");
+    fs::create_directories(dir, ec);
+    if (!fs::is_directory(dir, ec)) throw FileWriteError(dir + ": --report: cannot make the folder" + (ec ? ": " + ec.message() : ""));
+    std::vector<std::string> names = {"report.txt", "loss.csv", "loss.gp", "loss.png"};
+    for (size_t i = 0; i < shots; ++i) names.push_back(shotPng(i));
+    for (const std::string& name : names) checkOutput((fs::path(dir) / name).string());
+}
+
 std::vector<std::string> writeFitReport(const std::string& dir, const std::vector<Shot>& shots, const FitResult& result) {
     std::vector<std::string> warnings;
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": --report: cannot make the folder");
+    checkFitReport(dir, shots.size());
     std::ostringstream text;
     text << "weave " << describeWeave(result.params.pattern) << ", repeat " << result.params.repeat.x << " x "
          << result.params.repeat.y << " per UV unit, loss " << result.loss << ", " << result.evaluations << " renders";
@@ -48,7 +62,7 @@ std::vector<std::string> writeFitReport(const std::string& dir, const std::vecto
     text << "\n";
     for (size_t i = 0; i < shots.size() && i < result.shots.size(); ++i) {
         const ShotFit& f = result.shots[i];
-        const std::string png = "shot_" + std::to_string(i) + ".png";
+        const std::string png = shotPng(i);
         if (!f.render.pixels.empty())
             writePng((fs::path(dir) / png).string(), sideBySide(shots[i].image, f.render), {0.0f, ToneMap::Clamp});
         text << "\n" << shots[i].path << " (" << png << ": photo left, fit right)\n";

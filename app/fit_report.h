@@ -10,6 +10,10 @@
 
 namespace woven {
 
+// Makes the folder `dir` and checks each file the report of `shots` shots writes there as an
+// output (output_path.h): what `woven fit` does before it fits. Throws FileWriteError naming it.
+void checkFitReport(const std::string& dir, size_t shots);
+
 // Throws std::runtime_error naming the file it could not write. Returns the lines of warning it
 // has (gnuplot missing).
 std::vector<std::string> writeFitReport(const std::string& dir, const std::vector<Shot>& shots, const FitResult& result);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "file_reading.h"
 #include "parse_errors.h"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,8 @@ int main(int argc, char** argv) {
     woven::addSubmitCommand(app);
     woven::addExportCommands(app);
     woven::addFitCommand(app);
+    // Every file the command reads is an input none of its outputs may replace (output_path.h).
+    woven::rememberInputs(true);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -11,8 +11,13 @@ namespace woven {
 
 std::string formatDuration(double seconds) {
     if (!std::isfinite(seconds) || seconds < 0.0) return "?";
-    const long s = std::lround(seconds);
     char buffer[32];
+    // Beyond about three years hours and minutes mean nothing (and 1e300 s overflows a long).
+    if (seconds >= 1e8) {
+        std::snprintf(buffer, sizeof buffer, "%.3g s", seconds);
+        return buffer;
+    }
+    const long s = std::lround(seconds);
     if (s >= 3600) std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
     else std::snprintf(buffer, sizeof buffer, "%ld:%02ld", s / 60, s % 60);
     return buffer;

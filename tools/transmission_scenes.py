@@ -52,7 +52,7 @@ def gltf(meshes, materials):
         indices = add([i for t in triangles for i in t], "I", 3 * len(triangles), "SCALAR", 34963)
         gl_meshes.append({"name": name, "primitives": [{"attributes": attributes, "indices": indices, "material": material}]})
         nodes.append({"name": name, "mesh": len(gl_meshes) - 1})
-    return {
+    doc = {
         "asset": {"version": "2.0", "generator": "woven tools/transmission_scenes.py"},
         "scene": 0,
         "scenes": [{"nodes": list(range(len(nodes)))}],
@@ -64,6 +64,11 @@ def gltf(meshes, materials):
         "bufferViews": views,
         "accessors": accessors,
     }
+    # Every extension a material uses is declared, as the specification requires.
+    used = sorted({name for m in materials for name in m.get("extensions", {})})
+    if used:
+        doc["extensionsUsed"] = used
+    return doc
 
 
 def grid(nu, nv, point, normal, uv):
@@ -160,9 +165,7 @@ def coloured_shadow():
     leaf["extensions"] = {"KHR_materials_diffuse_transmission": {"diffuseTransmissionFactor": 0.7,
                                                                  "diffuseTransmissionColorFactor": [0.2, 0.8, 0.3]}}
     materials = [plain("Voile", (0.8, 0.8, 0.8)), plain("Opaque", (0.8, 0.8, 0.8)), leaf, plain("Floor", (0.6, 0.6, 0.6))]
-    doc = gltf(meshes, materials)
-    doc["extensionsUsed"] = ["KHR_materials_diffuse_transmission"]
-    return doc
+    return gltf(meshes, materials)
 
 
 def main():

@@ -1,18 +1,17 @@
 #include "number_checks.h"
 
+#include "short_number.h"
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <string>
 
 namespace woven {
 
 namespace {
-
-std::string shortNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
 
 // The number `text` holds, if all of it is one; NaN and infinities included.
 bool parseNumber(const std::string& text, double& value) {
@@ -37,6 +36,25 @@ CLI::Validator finiteNumber(double lowest, double highest) {
             return std::string();
         },
         range.empty() ? "a finite number" : "a number " + range);
+}
+
+CLI::Validator wholeNumber(long long lowest, long long highest) {
+    const std::string range = highest == std::numeric_limits<long long>::max()
+                                  ? "at least " + std::to_string(lowest)
+                                  : "from " + std::to_string(lowest) + " to " + std::to_string(highest);
+    return CLI::Validator(
+        [=](std::string& text) {
+            char* end = nullptr;
+            errno = 0;
+            const long long value = std::strtoll(text.c_str(), &end, 10);
+            const bool whole = !text.empty() && end == text.c_str() + text.size();
+            double number = 0.0;
+            if (!whole && !parseNumber(text, number)) return "'" + text + "' is not a number";
+            if (!whole) return "'" + text + "' is not a whole number (it must be one " + range + ")";
+            if (errno == ERANGE || value < lowest || value > highest) return "'" + text + "' is outside the range: it must be " + range;
+            return std::string();
+        },
+        "a whole number " + range);
 }
 
 CLI::Validator positiveNumber() {

@@ -17,4 +17,8 @@ CLI::Validator finiteNumber(double lowest = -std::numeric_limits<double>::infini
 // A finite number above zero (a time, a scale).
 CLI::Validator positiveNumber();
 
+// A whole number from `lowest` to `highest`, for the options that count (pixels, samples,
+// threads): "'2.5' is not a whole number", "'-1' is outside the range: it must be at least 0".
+CLI::Validator wholeNumber(long long lowest, long long highest = std::numeric_limits<long long>::max());
+
 }  // namespace woven

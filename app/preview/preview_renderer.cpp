@@ -167,6 +167,16 @@ void PreviewRenderer::updateShadows(const SceneDescription& scene, const Preview
 void PreviewRenderer::ensureTarget(glm::ivec2 size) {
     if (size == size_) return;
     if (size.x < 1 || size.y < 1) throw GlError("preview size must be positive");
+    // Past the implementation's largest image the framebuffer is only "incomplete": say the limit.
+    GLint texture = 0, renderbuffer = 0, viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    const int largest = std::min({texture, renderbuffer, viewport[0], viewport[1]});
+    if (largest > 0 && (size.x > largest || size.y > largest))
+        throw GlError("the preview is " + std::to_string(size.x) + " x " + std::to_string(size.y) +
+                      " pixels: this OpenGL implementation draws at most " + std::to_string(largest) +
+                      " a side (--width, --height; the Render button's frame, --final, has no such limit)");
     size_ = size;
     if (!framebuffer_) {
         glGenFramebuffers(1, &framebuffer_);

@@ -112,10 +112,13 @@ nlohmann::json withPreset(const nlohmann::json& material, Fabric& fabric) {
         throw std::invalid_argument("'preset' = " + preset.dump() + ": need a fabric's name (woven fabrics lists them)");
     fabric = readFabric(preset.get<std::string>());
     nlohmann::json merged = fabric.material;
+    // A key given replaces the preset's keys it contradicts, never another key given: a pair of
+    // those (yarn_width with weft_count) is left for the checks to refuse, as without a preset.
     for (const auto& [key, value] : material.items()) {
         if (key == "preset") continue;
         if (const auto replaced = replacedKeys().find(key); replaced != replacedKeys().end())
-            for (const std::string& r : replaced->second) merged.erase(r);
+            for (const std::string& r : replaced->second)
+                if (!material.contains(r)) merged.erase(r);
         merged[key] = value;
     }
     return merged;

@@ -6,12 +6,15 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "short_number.h"
+
 namespace woven {
 
 namespace {
 
-// The finest silks have about 200 threads per cm; beyond this a count is a typing mistake.
-constexpr double kMaxThreadsPerCm = 1000.0;
+// The finest silks have about 200 threads per cm; beyond this a count is a typing mistake. Below
+// a thread a metre the repeat is past any cloth, and its cover and weight no numbers (inf, nan).
+constexpr double kMinThreadsPerCm = 0.01, kMaxThreadsPerCm = 1000.0;
 // Yarn counts from a single fine filament to a rope: woven's bounds in tex.
 constexpr double kMinTex = 0.01, kMaxTex = 10000.0;
 
@@ -25,10 +28,11 @@ std::optional<double> threadsPerCm(const nlohmann::json& j, const std::string& s
     if (!j.contains(key)) return std::nullopt;
     const double perUnit = j[key].is_number() ? j[key].get<double>() : NAN;
     const double perCm = key == inch ? perUnit / kCmPerInch : perUnit;
-    if (!(perCm > 0.0 && perCm <= kMaxThreadsPerCm))
-        throw std::invalid_argument(q(key) + " = " + j[key].dump() + ": need a number of threads above 0 and at most " +
-                                    std::to_string(int(kMaxThreadsPerCm)) + " per cm (" +
-                                    std::to_string(int(kMaxThreadsPerCm * kCmPerInch)) + " per inch)");
+    if (!(perCm >= kMinThreadsPerCm && perCm <= kMaxThreadsPerCm))
+        throw std::invalid_argument(q(key) + " = " + j[key].dump() + ": need a number of threads from " +
+                                    shortNumber(kMinThreadsPerCm) + " to " + shortNumber(kMaxThreadsPerCm) + " per cm (" +
+                                    shortNumber(kMinThreadsPerCm * kCmPerInch) + " to " +
+                                    shortNumber(kMaxThreadsPerCm * kCmPerInch) + " per inch)");
     return perCm;
 }
 

@@ -1,12 +1,12 @@
 #include "scene_export.h"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 
 #include "gltf_writer.h"
+#include "output_path.h"
 #include "scene_camera.h"
 #include "woven_params_json.h"
 
@@ -14,17 +14,17 @@ namespace woven {
 
 namespace {
 
-// Whether the file could be created: its folder exists and may be written, and it is not a folder.
-void checkWritable(const std::string& path) {
+// Whether the file could be created: a glTF name that may be an output (output_path.h).
+void checkExportName(const std::string& path) {
     namespace fs = std::filesystem;
     std::string extension = fs::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     if (extension != ".glb" && extension != ".gltf") throw ExportError(path + ": the file name must end in .glb or .gltf (glTF), .u3ma or .u3m (U3M)");
-    const fs::path folder = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec)) throw ExportError(path + ": cannot write there: the folder '" + folder.string() + "' does not exist");
-    if (::access(folder.c_str(), W_OK) != 0) throw ExportError(path + ": cannot write there: the folder '" + folder.string() + "' is not writable");
-    if (fs::is_directory(path, ec)) throw ExportError(path + ": is a folder");
+    try {
+        checkOutput(path);
+    } catch (const FileWriteError& e) {
+        throw ExportError(e.what());
+    }
 }
 
 }  // namespace
@@ -67,7 +67,7 @@ SceneDescription bakedScene(const SceneDescription& scene, const ExportOptions& 
 
 std::vector<std::string> exportScene(const SceneDescription& scene, const std::string& path, const ExportOptions& options,
                                      std::vector<MaterialBake>* bakes) {
-    checkWritable(path);
+    checkExportName(path);
     std::vector<MaterialBake> made;
     const SceneDescription out = bakedScene(scene, options, &made);
     std::vector<std::string> warnings;

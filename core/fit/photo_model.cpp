@@ -1,8 +1,11 @@
 #include "photo_model.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "image_io.h"
+#include "short_number.h"
 
 namespace woven {
 
@@ -13,14 +16,33 @@ bool holdsFloats(const std::string& path) {
     return ext == ".exr" || ext == ".hdr" || ext == ".EXR" || ext == ".HDR";
 }
 
+// Throws ImageError when `image` holds nothing to fit (readPhoto()).
+void checkSignal(const Image& image, const std::string& path) {
+    double lowest = INFINITY, highest = -INFINITY, sum = 0.0;
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const glm::vec3& p = image.pixels[i];
+        if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b))
+            throw ImageError(path + ": pixel (" + std::to_string(i % size_t(image.width)) + ", " +
+                             std::to_string(i / size_t(image.width)) + ") is not a finite number: a photo to fit holds none");
+        const double l = luminance(p);
+        lowest = std::min(lowest, l);
+        highest = std::max(highest, l);
+        sum += l;
+    }
+    const double mean = image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
+    if (!(highest - lowest > 0.01 * mean))
+        throw ImageError(path + ": every pixel is within 1% of the mean (" + shortNumber(mean) +
+                         "): the photo shows no weave to fit (a uniform or all-clipped image)");
+}
+
 }  // namespace
 
 Image readPhoto(const ShotPhoto& photo) {
-    if (photo.encoding == ShotPhoto::Encoding::Srgb) return readImage(photo.image, ChannelEncoding::Srgb);
-    Image image = readImage(photo.image, ChannelEncoding::Linear);
+    Image image = readImage(photo.image, photo.encoding == ShotPhoto::Encoding::Srgb ? ChannelEncoding::Srgb : ChannelEncoding::Linear);
     // A float file holds linear values whatever the key says; only 8- and 16-bit ones are encoded.
     if (photo.encoding == ShotPhoto::Encoding::Gamma22 && !holdsFloats(photo.image))
         for (glm::vec3& p : image.pixels) p = glm::pow(glm::max(p, glm::vec3(0.0f)), glm::vec3(2.2f));
+    checkSignal(image, photo.image);
     return image;
 }
 

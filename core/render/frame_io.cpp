@@ -9,7 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "atomic_file.h"
+#include "output_path.h"
 #include "integrators.h"
 #include "opened_image.h"
 #include "sampler.h"
@@ -398,12 +398,7 @@ void checkFrameFileName(const std::string& path) {
     const std::string extension = lowerExtension(path);
     if (extension != ".exr" && extension != ".png")
         fail(path, "unknown image type '" + extension + "' (expected .exr or .png)");
-    checkWritable(path);
-}
-
-std::string partialFrameName(const std::string& path) {
-    const std::filesystem::path p(path);
-    return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
+    checkOutput(path);
 }
 
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png) {

@@ -63,11 +63,8 @@ std::string lowerExtension(const std::string& path);
 // A rendered frame, by its file's extension (either case): .exr keeps the linear radiance in
 // 32-bit floats and the sample counts; .png is display-transformed. Others throw ImageError.
 void writeFrame(const std::string& path, const ExrImage& frame, const DisplayTransform& png);
-// Throws the ImageError writeFrame would for `path`'s extension, or the FileWriteError for a
-// folder that is missing or not writable (atomic_file.h): check before a long render.
+// Throws the ImageError writeFrame would for `path`'s extension, or the FileWriteError of an
+// output it may not be (checkOutput(), output_path.h): check before a long render.
 void checkFrameFileName(const std::string& path);
-// "out.exr" -> "out.partial.exr": where an unfinished frame goes, so it never takes the name of
-// a finished one.
-std::string partialFrameName(const std::string& path);
 
 }  // namespace woven

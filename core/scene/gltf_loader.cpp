@@ -174,7 +174,9 @@ private:
     }
 
     // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
-    // Nesting deeper than woven reads is refused here, before tinygltf walks it.
+    // What tinygltf would read other than as written (untrusted_json.h: nesting deeper than woven
+    // reads, a NUL byte, a key twice, U+0000 in a string; glTF's JSON forbids them) is refused
+    // here, before tinygltf walks it.
     nlohmann::json jsonPart(const std::vector<unsigned char>& file) const {
         std::string_view bytes(reinterpret_cast<const char*>(file.data()), file.size());
         if (bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0) {
@@ -184,8 +186,9 @@ private:
         }
         try {
             return parseUntrustedJson(bytes);
-        } catch (const std::invalid_argument& e) {
-            if (jsonDepth(bytes) > kMaxJsonDepth) fail(e.what());
+        } catch (const JsonAsWrittenError& e) {
+            fail(e.what());
+        } catch (const std::invalid_argument&) {
             return nlohmann::json();  // tinygltf names what is malformed
         }
     }
@@ -584,6 +587,10 @@ private:
         if (flat)
             warn("node '" + nodeName + "': " + std::to_string(flat) + " of its " + std::to_string(flat + kept) +
                  " EXT_mesh_gpu_instancing instances have a zero scale (or flattened axes) and are not drawn");
+        if (const size_t repeated = dropCopies(*instances))
+            warn("node '" + nodeName + "': " + std::to_string(repeated) + " of its EXT_mesh_gpu_instancing instances repeat "
+                 "another's matrix exactly (the same triangles in the same place) and are drawn once");
+        kept = instances->size();
         if (kept == 0) {
             scene_.meshes.resize(first);
             return;

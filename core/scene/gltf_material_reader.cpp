@@ -4,7 +4,9 @@
 #include <filesystem>
 
 #include "image_io.h"
+#include "light_limits.h"
 #include "scene_loader.h"
+#include "short_number.h"
 #include "woven_params_json.h"
 
 namespace woven {
@@ -59,8 +61,8 @@ float GltfMaterialReader::number(const json& object, const char* key, float fall
     if (!v.is_number() || !std::isfinite(v.get<double>())) fail(where + "." + key, "must be a finite number");
     const double x = v.get<double>();
     if (x < lo - kRangeSlack || x > hi + kRangeSlack) {
-        const std::string range = std::isinf(hi) ? ">= " + std::to_string(lo) : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-        fail(where + "." + key, "is " + std::to_string(x) + ", must be " + range);
+        const std::string range = std::isinf(hi) ? ">= " + shortNumber(lo) : "in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]";
+        fail(where + "." + key, "is " + shortNumber(x) + ", must be " + range);
     }
     return std::clamp(float(x), lo, hi);
 }
@@ -147,6 +149,9 @@ Material GltfMaterialReader::readMaterial(const json& source, const std::string&
     }
 
     readExtensions(member(source, "extensions"), m, name, scene);
+    // An emitter is a light: held to the lights' limit (light_limits.h), factor and strength together.
+    if (const std::string problem = lightValueProblem(m.emission); !problem.empty())
+        fail(where, "its emission (emissiveFactor x KHR_materials_emissive_strength) " + problem);
 
     const json& extras = member(source, "extras");
     const json* woven = nullptr;
@@ -170,8 +175,8 @@ void GltfMaterialReader::readExtensions(const json& extensions, Material& m, con
     if (!extensions.is_object()) fail(where, "must be a JSON object");
 
     if (const json& e = member(extensions, "KHR_materials_emissive_strength"); !e.is_null())
-        m.emission *= number(e, "emissiveStrength", 1.0f, 0.0f, std::numeric_limits<float>::infinity(),
-                             where + ".KHR_materials_emissive_strength");
+        m.emission *= number(e, "emissiveStrength", 1.0f, 0.0f, kMaxLightValue, where + ".KHR_materials_emissive_strength");
+
     if (const json& e = member(extensions, "KHR_materials_ior"); !e.is_null()) {
         m.ior = number(e, "ior", 1.5f, 0.0f, std::numeric_limits<float>::infinity(), where + ".KHR_materials_ior");
         if (m.ior > 0.0f && m.ior < 1.0f) fail(where + ".KHR_materials_ior.ior", "must be 0 or at least 1");

@@ -1,6 +1,10 @@
 #include "mesh_instances.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <numeric>
 
 #include "coordinate_limits.h"
 
@@ -27,10 +31,28 @@ MeshBox worldBox(const Mesh& mesh) {
 }
 
 bool invertible(const glm::mat4& placement) {
-    const glm::mat3 linear(placement);
-    const float axes = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
-    const float det = glm::determinant(linear);
-    return std::abs(det) > 1e-6f * axes && std::isfinite(det);
+    // In double: a scale of 1e30 has a determinant of 1e90, past a float, and is no zero scale.
+    const glm::dmat3 linear{glm::mat3(placement)};
+    const double axes = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+    const double det = glm::determinant(linear);
+    return std::abs(det) > 1e-6 * axes && std::isfinite(det);
+}
+
+size_t dropCopies(std::vector<glm::mat4>& placements) {
+    const auto bytes = [&](uint32_t i) { return reinterpret_cast<const char*>(&placements[i]); };
+    std::vector<uint32_t> order(placements.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return std::memcmp(bytes(a), bytes(b), sizeof(glm::mat4)) < 0; });
+    std::vector<bool> copy(placements.size(), false);
+    for (size_t i = 1; i < order.size(); ++i)
+        copy[order[i]] = std::memcmp(bytes(order[i]), bytes(order[i - 1]), sizeof(glm::mat4)) == 0;
+    size_t kept = 0;
+    for (size_t i = 0; i < placements.size(); ++i)
+        if (!copy[i]) placements[kept++] = placements[i];
+    const size_t dropped = placements.size() - kept;
+    placements.resize(kept);
+    return dropped;
 }
 
 std::string placementProblem(const glm::mat4& placement, const MeshBox& box) {

@@ -15,6 +15,7 @@
 #include "scene_camera.h"
 #include "scene_lighting.h"
 #include "scene_loader.h"
+#include "short_number.h"
 #include "woven_params_json.h"
 
 namespace woven {
@@ -103,6 +104,15 @@ private:
         if (!v.is_number() || !std::isfinite(v.get<double>()) || !std::isfinite(v.get<float>()))
             fail(where, "must be a finite number");
         return v.get<float>();
+    }
+
+    // A finite number from `lo` to `hi`, judged as written: 1e-300 is no "0" (as a float it is).
+    float numberIn(const json& v, const std::string& where, double lo, double hi) const {
+        const float x = number(v, where);
+        const double written = v.get<double>();
+        if (!(written >= lo && written <= hi))
+            fail(where, "is " + shortNumber(written) + ", must be from " + shortNumber(lo) + " to " + shortNumber(hi));
+        return x;
     }
 
     int positiveInt(const json& v, const std::string& where, int max) const {
@@ -260,16 +270,16 @@ private:
             else fail("photo.encoding", "must be \"srgb\", \"gamma2.2\" or \"linear\", not \"" + e + "\"");
         }
         if (photo.contains("vignette_sigma_px")) {
-            shot.vignetteSigmaPx = number(photo["vignette_sigma_px"], "photo.vignette_sigma_px");
-            if (!(shot.vignetteSigmaPx > 0.0f)) fail("photo.vignette_sigma_px", "must be positive");
+            // Under a pixel the render would be black but for its centre.
+            shot.vignetteSigmaPx = numberIn(photo["vignette_sigma_px"], "photo.vignette_sigma_px", 1.0, 1e6);
         }
         if (photo.contains("exposure")) {
             const json& e = photo["exposure"];
             if (e.is_string() && e.get<std::string>() == "free") shot.exposure.reset();
             else if (!e.is_number()) fail("photo.exposure", "must be a positive number or \"free\"");
             else {
-                shot.exposure = number(e, "photo.exposure");
-                if (!(*shot.exposure > 0.0f)) fail("photo.exposure", "must be positive");
+                // Twenty stops either way: far past any camera's difference from a render.
+                shot.exposure = numberIn(e, "photo.exposure", 1e-6, 1e6);
             }
         }
         return shot;

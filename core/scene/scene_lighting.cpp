@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "environment_mapping.h"
 #include "image_io.h"
@@ -12,6 +13,7 @@
 #include "mesh_instances.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
+#include "srgb.h"
 
 namespace woven {
 
@@ -39,6 +41,29 @@ struct SoftBox {
     }
 };
 
+// The mean linear colour of a texture's texels (an emissive texture: sRGB-decoded where it is
+// sRGB): what it scales its factor by over the surface, taken as mapped evenly.
+glm::vec3 meanTexel(const TextureImage& image, bool srgb) {
+    glm::dvec3 sum(0.0);
+    for (const glm::u8vec4& t : image.bytes)
+        for (int c = 0; c < 3; ++c) sum[c] += srgb ? srgbToLinear(float(t[c]) / 255.0f) : float(t[c]) / 255.0f;
+    for (const glm::vec4& t : image.floats)
+        for (int c = 0; c < 3; ++c) sum[c] += std::isfinite(t[c]) ? std::max(t[c], 0.0f) : 0.0f;
+    const size_t n = image.bytes.size() + image.floats.size();
+    return n ? glm::vec3(sum / double(n)) : glm::vec3(1.0f);
+}
+
+// The radiance a material emits on average: its factor (with emissive_strength) times the mean
+// of its emissive texture. A texture that is mostly black (the lamps of a helmet, a label's
+// printing) emits a small part of what its factor says.
+float meanEmittedLuminance(const SceneDescription& scene, const Material& material) {
+    glm::vec3 emission = material.emission;
+    const TextureRef& texture = material.emissiveTexture;
+    if (texture && size_t(texture.image) < scene.textures.size())
+        emission *= meanTexel(scene.textures[size_t(texture.image)], texture.srgb);
+    return luminance(emission);
+}
+
 }  // namespace
 
 bool hasLightSources(const SceneDescription& scene) {
@@ -53,10 +78,13 @@ bool hasLightSources(const SceneDescription& scene) {
 
 float emitterIrradiance(const SceneDescription& scene, const glm::vec3& at) {
     double sum = 0.0;
+    std::vector<float> emitted(scene.materials.size(), -1.0f);  // each material's, once: a texture is read whole
     for (const Mesh& mesh : scene.meshes) {
         if (mesh.material < 0 || size_t(mesh.material) >= scene.materials.size()) continue;
         const Material& material = scene.materials[size_t(mesh.material)];
-        const float L = luminance(material.emission);
+        if (!material.emits()) continue;
+        float& L = emitted[size_t(mesh.material)];
+        if (L < 0.0f) L = meanEmittedLuminance(scene, material);
         if (!(L > 0.0f)) continue;
         const size_t n = copies(mesh);
         for (size_t copy = 0; copy < n; ++copy) {

@@ -11,8 +11,8 @@
 namespace woven {
 
 // Whether the scene brings a light source: a punctual light of non-zero intensity, an
-// environment brighter than black, or emissive surfaces that light the scene's centre at least
-// kDimIrradiance (emitterIrradiance()), as a lamp does. Fainter emitters do not count: in glTF
+// environment brighter than black, or emissive surfaces that deliver at least kDimIrradiance to
+// the scene's centre (emitterIrradiance(): textured emission by its texture's mean), as a lamp does. Fainter emitters do not count: in glTF
 // files they are screens, LEDs and signs far more often than the light a scene is seen by.
 bool hasLightSources(const SceneDescription& scene);
 
@@ -22,8 +22,10 @@ bool hasLightSources(const SceneDescription& scene);
 // they are).
 float lightIrradianceAtCentre(const SceneDescription& scene);
 
-// The part of it from emissive surfaces (their materials' emission factors, textures ignored):
-// each triangle as a small area light, L A cos / d^2 with d^2 at least the triangle's area.
+// The part of it from emissive surfaces, by the light they deliver: each material's emission
+// factor (with emissive_strength) times the mean of its emissive texture, so a texture that is
+// mostly black (a helmet's lamps, a bottle's label) counts for the little it emits; each triangle
+// as a small area light, L A cos / d^2 with d^2 at least the triangle's area.
 float emitterIrradiance(const SceneDescription& scene, const glm::vec3& at);
 
 // The built-in studio environment (an equirectangular image, 512 x 256).
@@ -34,9 +36,11 @@ Environment studioEnvironment();
 // photometric units read as they are: a 3 lux sun gives 0.004 W/m^2).
 enum class DefaultLighting { None, NoLight, TooDim };
 
-// Irradiance (W/m^2) below which a scene counts as too dim: at exposure 0 such a frame is nearly
-// black, where the studio environment gives about 3.
-inline constexpr float kDimIrradiance = 0.05f;
+// Irradiance (W/m^2) below which a scene counts as too dim: half what a uniform environment of
+// radiance 1 gives (pi), and about half the studio environment's. glTF viewers add their
+// environment to a file's own lights, so a file its own lights give less is darker at the
+// defaults than any viewer shows it.
+inline constexpr float kDimIrradiance = 1.5f;
 
 // Adds studioEnvironment() to a scene that has no light source or is too dim, in place of its
 // environment and beside its punctual lights, unless a woven scene file chose its lighting;

@@ -83,6 +83,26 @@ std::optional<bool> takeKeepBaseColor(nlohmann::json& layer) {
     return value;
 }
 
+// A thread count has two sides, ends and picks, each its own key: a layer that gives one side
+// takes the other from the broader layers (the latest that gave it), so that the most specific
+// target wins key by key for the pair too. `given` holds each side's key and value so far; a
+// repeat or scale given replaces the counts, and clears them.
+void layerThreadCounts(nlohmann::json& layer, nlohmann::json& given) {
+    if (!layer.is_object()) return;
+    if (layer.contains("repeat") || layer.contains("scale")) {
+        given = nlohmann::json::object();
+        return;
+    }
+    const std::pair<const char*, const char*> sides[] = {{"ends_per_cm", "ends_per_inch"}, {"picks_per_cm", "picks_per_inch"}};
+    bool has[2] = {false, false};
+    for (int s = 0; s < 2; ++s)
+        for (const char* key : {sides[s].first, sides[s].second})
+            if (layer.contains(key)) has[s] = true, given[s == 0 ? "ends" : "picks"] = {{key, layer[key]}};
+    if (has[0] == has[1]) return;
+    const char* missing = has[0] ? "picks" : "ends";
+    if (given.contains(missing)) layer.update(given[missing]);
+}
+
 // Whether a layer gives the yarns colours of its own (a draft brings its threads' colours, a
 // library fabric its own), which then win over a glTF material's base colour factor.
 bool setsYarnColor(const nlohmann::json& layer) {
@@ -206,6 +226,7 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
         WovenParams params = material.woven.value_or(WovenParams{});
         std::optional<bool> keepBaseColor;
         bool colorKeys = false;
+        nlohmann::json threadCounts = nlohmann::json::object();
         std::string names;
         std::optional<Material> textured;  // another tool's U3M, which ends the layers
         for (size_t a : order) {
@@ -222,6 +243,7 @@ void assignWoven(SceneDescription& scene, const std::vector<WovenAssignment>& as
                 } else {
                     if (const auto keep = takeKeepBaseColor(layer)) keepBaseColor = keep;
                     colorKeys |= setsYarnColor(layer);
+                    layerThreadCounts(layer, threadCounts);
                     const MaterialJson read = materialFromJson(layer, params, assignments[a].directory, warnings);
                     params = scaledToMeshes(read, scene, meshes, warnings);
                     if (!read.wif.empty()) material.draft = read.wif;

@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -10,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+
+#include "output_path.h"
 
 namespace woven {
 
@@ -51,6 +52,7 @@ std::string temporaryPathFor(const std::string& path) {
 
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& write) {
+    checkOutput(path);
     removeStaleTemporaries(path);
     const std::string tmp = temporaryPathFor(path);
     try {
@@ -67,9 +69,6 @@ void writeFileAtomically(const std::string& path,
 }
 
 void checkWritable(const std::string& path) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
-        throw FileWriteError(path + ": is a directory, not a file name");
     const std::string tmp = temporaryPathFor(path);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd < 0) {

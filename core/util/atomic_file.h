@@ -17,14 +17,14 @@ struct FileWriteError : std::runtime_error {
 // The temporary name used for `path` by this process.
 std::string temporaryPathFor(const std::string& path);
 
-// Calls write(tmpPath), then renames tmpPath to path. When `write` throws, or the rename fails,
-// the temporary file is removed and FileWriteError (naming `path`) is thrown.
+// Checks `path` as an output (checkOutput(), output_path.h), calls write(tmpPath), then renames
+// tmpPath to path. When the check or `write` throws, or the rename fails, the temporary file is
+// removed and FileWriteError (naming `path`) is thrown.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& write);
 
-// Throws the FileWriteError a write of `path` would meet for want of a folder or permission
-// (or a directory by that name), by creating and removing its temporary file: what a command
-// checks before a long render.
+// Throws the FileWriteError a write of `path` would meet for want of a folder or permission, by
+// creating and removing its temporary file (part of checkOutput()).
 void checkWritable(const std::string& path);
 
 }  // namespace woven

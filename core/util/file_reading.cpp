@@ -6,6 +6,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <mutex>
+#include <set>
+#include <utility>
 
 namespace woven {
 
@@ -16,7 +19,31 @@ std::string byteSize(size_t bytes) {
     if (bytes >= (size_t(1) << 20) && bytes % (size_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
     return std::to_string(bytes) + " bytes";
 }
+
+using FileId = std::pair<dev_t, ino_t>;
+
+std::mutex readFilesMutex;
+bool remembering = false;
+std::set<FileId> readFiles;
+
+void rememberRead(const struct stat& info) {
+    const std::lock_guard<std::mutex> lock(readFilesMutex);
+    if (remembering) readFiles.insert({info.st_dev, info.st_ino});
+}
 }  // namespace
+
+void rememberInputs(bool on) {
+    const std::lock_guard<std::mutex> lock(readFilesMutex);
+    remembering = on;
+    if (!on) readFiles.clear();
+}
+
+bool readAsInput(const std::string& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return false;
+    const std::lock_guard<std::mutex> lock(readFilesMutex);
+    return readFiles.count({info.st_dev, info.st_ino}) > 0;
+}
 
 std::vector<unsigned char> readRegularFile(const std::string& path, size_t maxBytes) {
     const auto fail = [&](const std::string& problem) { throw FileReadError(path + ": " + problem); };
@@ -32,6 +59,7 @@ std::vector<unsigned char> readRegularFile(const std::string& path, size_t maxBy
         ::close(fd);
         fail("larger than woven's limit of " + byteSize(maxBytes) + " (" + std::to_string(info.st_size) + " bytes)");
     }
+    rememberRead(info);
     std::vector<unsigned char> bytes(size_t(info.st_size));
     size_t done = 0;
     while (done < bytes.size()) {

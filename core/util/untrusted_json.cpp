@@ -1,8 +1,10 @@
 #include "untrusted_json.h"
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace woven {
 
@@ -25,12 +27,52 @@ size_t jsonDepth(std::string_view text) {
     return deepest;
 }
 
+namespace {
+
+// "key" as JSON writes it, so that a key holding quotes or control characters reads unambiguously.
+std::string quotedKey(const std::string& key) { return nlohmann::json(key).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+
+// The parser's callback: each object's keys so far, one set a nesting level, to find a key
+// written twice; and every key and string checked for U+0000.
+class AsWrittenCheck {
+public:
+    bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (event == Event::object_start) {
+            keys_.emplace_back();
+        } else if (event == Event::object_end) {
+            keys_.pop_back();
+        } else if (event == Event::key) {
+            const std::string& key = parsed.get_ref<const std::string&>();
+            if (key.find('\0') != std::string::npos)
+                throw JsonAsWrittenError("the key " + quotedKey(key) + " holds the character U+0000, which woven reads in no name");
+            if (!keys_.empty() && !keys_.back().insert(key).second)
+                throw JsonAsWrittenError("the key " + quotedKey(key) + " appears twice in one object (which one is meant?)");
+            lastKey_ = key;
+        } else if (event == Event::value && parsed.is_string() &&
+                   parsed.get_ref<const std::string&>().find('\0') != std::string::npos) {
+            throw JsonAsWrittenError("the string " + quotedKey(parsed.get<std::string>()) +
+                                     (lastKey_.empty() ? "" : " (near the key " + quotedKey(lastKey_) + ")") +
+                                     " holds the character U+0000, where a name or file name would end");
+        }
+        return true;
+    }
+
+private:
+    std::vector<std::set<std::string>> keys_;
+    std::string lastKey_;
+};
+
+}  // namespace
+
 nlohmann::json parseUntrustedJson(std::string_view text) {
     if (const size_t depth = jsonDepth(text); depth > kMaxJsonDepth)
-        throw std::invalid_argument("JSON nested " + std::to_string(depth) + " deep, more than the " +
-                                    std::to_string(kMaxJsonDepth) + " woven reads");
+        throw JsonAsWrittenError("JSON nested " + std::to_string(depth) + " deep, more than the " +
+                                 std::to_string(kMaxJsonDepth) + " woven reads");
+    if (const size_t nul = text.find('\0'); nul != std::string_view::npos)
+        throw JsonAsWrittenError("a NUL byte at byte " + std::to_string(nul) + ": JSON text holds none (the parser would stop there)");
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::json::parse(text, AsWrittenCheck());
     } catch (const nlohmann::json::exception& e) {
         throw std::invalid_argument("not valid JSON: " + jsonProblem(e.what()));
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "parse_errors.h"
+#include "progress_bar.h"
 #include "../common/run_woven.h"
 
 namespace woven {
@@ -67,7 +68,12 @@ TEST_F(NumberOptions, NonFiniteAndOutOfRangeNumbersAreRefusedNamingTheOption) {
              {"--time", "nan", "--time: 'nan' is not a finite number"},
              {"--time", "-1", "--time: '-1' must be above 0"},
              {"--noise-threshold", "nan", "--noise-threshold: 'nan' is not a finite number"},
-             {"--noise-threshold", "-0.5", "--noise-threshold: '-0.5' is outside the range: it must be at least 0"}}) {
+             {"--noise-threshold", "-0.5", "--noise-threshold: '-0.5' is outside the range: it must be at least 0"},
+             // Options that count take whole numbers, and say so.
+             {"--width", "2.5", "--width: '2.5' is not a whole number (it must be one from 1 to 32768)"},
+             {"--spp", "1e3", "--spp: '1e3' is not a whole number"},
+             {"--width", "40000", "--width: '40000' is outside the range: it must be from 1 to 32768"},
+             {"--threads", "-1", "--threads: '-1' is outside the range: it must be at least 0"}}) {
         const auto r = runWovenCommand("render " + kScene + " " + option + " " + value + " -o " + file("out.png"));
         EXPECT_NE(r.exitCode, 0) << option << " " << value;
         EXPECT_NE(r.out.find(says), std::string::npos) << r.out;
@@ -97,6 +103,23 @@ TEST_F(NumberOptions, JsonProblemsAreSaidWithoutTheParsersTags) {
     const auto eval = runWovenCommand("bsdf-eval < " + file("query.jsonl"));
     EXPECT_NE(eval.out.find("not valid JSON: the number 1e400"), std::string::npos) << eval.out;
     EXPECT_EQ(eval.out.find("json.exception"), std::string::npos) << eval.out;
+}
+
+// A preview wider than the OpenGL implementation draws was "float framebuffer is incomplete":
+// the limit is said by option, or (where the implementation draws it) the frame is written.
+TEST_F(NumberOptions, APreviewBeyondTheOpenGlLimitSaysTheLimit) {
+    const auto r = runWovenCommand("preview --headless --width 32768 --height 1 --screenshot " + file("wide.png"));
+    if (r.exitCode == 0) return;
+    EXPECT_NE(r.out.find("this OpenGL implementation draws at most"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("incomplete"), std::string::npos) << r.out;
+}
+
+// --time 1e300 printed a negative duration (the seconds overflowed a long).
+TEST(CommandLineMessages, DurationsBeyondYearsAreSaidInSeconds) {
+    EXPECT_EQ(formatDuration(75.0), "1:15");
+    EXPECT_EQ(formatDuration(3725.0), "1:02:05");
+    EXPECT_EQ(formatDuration(1e300), "1e+300 s");
+    EXPECT_EQ(formatDuration(-1.0), "?");
 }
 
 TEST(CommandLineMessages, ClosestNameTakesOnlyTyposOfTheWord) {

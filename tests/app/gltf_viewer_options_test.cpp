@@ -105,7 +105,7 @@ TEST_F(GltfViewerOptions, ListPrintsCamerasMaterialsMeshesAndLightsAndRendersNot
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_THAT(r.out, HasSubstr("cameras:\n  0  'Away'  node 'AwayNode'\n  1  'Front'  node 'FrontNode'\n"));
     EXPECT_THAT(r.out, HasSubstr("materials:\n  'Lamp'  glTF\n  'Black'  glTF\n"));
-    EXPECT_THAT(r.out, HasSubstr("meshes:\n  'node3/LampQuad/0'  2 triangles  material 'Lamp'  emissive: an area light\n"
+    EXPECT_THAT(r.out, HasSubstr("meshes:\n  'node3/LampQuad/0'  2 triangles  material 'Lamp'  emissive\n"
                                     "  'node4/CardQuad/0'  2 triangles  material 'Black'\n"));
     EXPECT_THAT(r.out, HasSubstr("lights:\n  point  'Bulb'  intensity 1 1 1 W/sr\n"));
     EXPECT_FALSE(fs::exists("two.exr"));  // no frame, not even under the default name

@@ -119,7 +119,7 @@ TEST_F(MergeCommand, PartsOfTheOlderLayoutMergeWithoutPasses) {
 
     r = run("merge " + paths[0] + " " + file("old_b.exr") + " -o " + file("mixed.exr"));
     EXPECT_NE(r.exitCode, 0);
-    EXPECT_THAT(r.out, testing::HasSubstr(file("old_b.exr") + " has no render passes (an older woven wrote it) and " +
+    EXPECT_THAT(r.out, testing::HasSubstr(file("old_b.exr") + " has no render passes (rendered with --no-passes, or by an older woven) and " +
                                           paths[0] + " has"));
     EXPECT_FALSE(fs::exists(file("mixed.exr")));
 }

@@ -206,7 +206,9 @@ TEST(SubmitCommand, BadRequestsFailBeforeAnythingIsSubmitted) {
     fails({"submit", scene, "--tasks", "2", "-o", dir.file("frame.png")}, "frame.png: woven submit writes EXR");
     fails({"submit", scene, scene, "--tasks", "2", "-o", out}, "with several frames, OUT needs a frame number field");
     fails({"submit", scene, "--frames", "1..3", "--tasks", "2", "-o", dir.file("f_%d.exr")}, "has no frame number field");
-    fails({"submit", scene, "--frames", "3..1", "--tasks", "2", "-o", dir.file("f_%d.exr")}, "expected A..B");
+    fails({"submit", scene, "--frames", "3..1", "--tasks", "2", "-o", dir.file("f_%d.exr")}, "the first frame is after the last");
+    fails({"submit", scene, "--frames", "0..1000000000000", "--tasks", "2", "-o", dir.file("f_%d.exr")},
+          "--frames 0..1000000000000: frame numbers are at most 999999999");
     fails({"submit", dir.file("missing.json"), "--tasks", "2", "-o", out}, "missing.json: no such scene file");
     fails({"submit", scene, "--tasks", "2", "--woven", "Nope={}", "-o", out}, "'Nope' names nothing");
     fails({"submit", scene, "--tasks", "2", "--first-sample", "3", "-o", out}, "--first-sample");

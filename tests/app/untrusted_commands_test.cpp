@@ -117,8 +117,9 @@ TEST_F(UntrustedCommands, MergeRefusesWhatCannotAddUp) {
     r = run("merge " + a + " " + b + " -o " + b);
     EXPECT_NE(r.exitCode, 0);
     EXPECT_THAT(r.out, HasSubstr("is both a part and the output"));
-    // Sample counts that are no count.
-    for (float n : {-1.0f, std::numeric_limits<float>::quiet_NaN()}) {
+    // Sample counts that are no count: negative, NaN, past the part's one sample, not whole, and 0
+    // beside a sum (the merged pixel would be divided by the other part's count alone).
+    for (float n : {-1.0f, std::numeric_limits<float>::quiet_NaN(), 1e30f, 0.5f, 0.0f}) {
         woven::ExrImage part = woven::readExr(b);
         part.sampleCount[3] = n;
         woven::writeExr(file("bad.exr"), part);

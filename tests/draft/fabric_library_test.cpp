@@ -87,7 +87,9 @@ TEST(TextileUnits, JammedYarnsFillTheirCellsWithAWarning) {
 }
 
 TEST(TextileUnits, MistakesNameTheKey) {
-    EXPECT_THAT(error({{"ends_per_cm", 0}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 0: need a number of threads above 0"));
+    EXPECT_THAT(error({{"ends_per_cm", 0}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 0: need a number of threads from 0.01 to 1000 per cm"));
+    // 1e-300 gave a repeat of "inf cm" and a weight of "-nan g/m2".
+    EXPECT_THAT(error({{"ends_per_cm", 1e-300}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = 1e-300: need a number of threads from 0.01"));
     EXPECT_THAT(error({{"ends_per_cm", 8}, {"picks_per_cm", -1}}), HasSubstr("'picks_per_cm' = -1"));
     EXPECT_THAT(error({{"ends_per_cm", "8"}, {"picks_per_cm", 1}}), HasSubstr("'ends_per_cm' = \"8\""));
     EXPECT_THAT(error({{"ends_per_cm", 8}, {"ends_per_inch", 20}, {"picks_per_cm", 1}}),
@@ -121,6 +123,14 @@ TEST(FabricLibrary, PresetsAndTheirOverrides) {
     EXPECT_THAT(error({{"preset", "denimm"}}), HasSubstr("'preset': \"denimm\" is no fabric in"));
     EXPECT_THAT(error({{"preset", "denimm"}}), HasSubstr("the library has canvas, chambray, denim"));
     EXPECT_THAT(error({{"preset", "../drafts/denim"}}), HasSubstr("'preset' = \"../drafts/denim\": need a fabric's name"));
+    // Two keys given that contradict each other are refused with a preset as without one: a
+    // given key replaces only the preset's keys, never another given key.
+    EXPECT_THAT(error({{"preset", "denim"}, {"yarn_width", 0.3}, {"weft_count", "20 tex"}}),
+                HasSubstr("'weft_count' and 'yarn_width' both set the yarn's width"));
+    EXPECT_THAT(error({{"preset", "denim"}, {"ends_per_cm", 20}, {"ends_per_inch", 50}}),
+                HasSubstr("'ends_per_cm' and 'ends_per_inch' both give the ends"));
+    EXPECT_THAT(error({{"preset", "denim"}, {"repeat", {10, 20}}, {"ends_per_cm", 20}, {"picks_per_cm", 16}}),
+                HasSubstr("'ends_per_cm' and 'repeat' both set the repeat"));
 }
 
 // A weave given beside a draft replaces the draft's weave, its threads keeping their colours by
@@ -162,7 +172,7 @@ TEST(FabricLibrary, AFabricFilesMistakeNamesTheFile) {
     ASSERT_EQ(setenv("WOVEN_FABRIC_DIR", dir.path().c_str(), 1), 0);
     const std::string bad = error({{"preset", "bad"}}), misnamed = error({{"preset", "misnamed"}});
     unsetenv("WOVEN_FABRIC_DIR");
-    EXPECT_EQ(bad, dir.file("bad.json") + ": 'ends_per_cm' = 0: need a number of threads above 0 and at most 1000 per cm (2540 per inch)");
+    EXPECT_EQ(bad, dir.file("bad.json") + ": 'ends_per_cm' = 0: need a number of threads from 0.01 to 1000 per cm (0.0254 to 2540 per inch)");
     EXPECT_EQ(misnamed, dir.file("misnamed.json") + ": 'name' is \"other\", not its file's name");
 }
 

@@ -206,7 +206,7 @@ TEST(ExportCommand, AnUnwritablePathGetsAClearMessageAndNoFile) {
     const std::string scene = quoted(std::string(WOVEN_ASSETS_DIR) + "/paper_d_satin.json");
     const auto missing = runWoven("export " + scene + " -o " + quoted(dir.file("missing/out.glb")) + " 2>&1");
     EXPECT_EQ(missing.exitCode, 1);
-    EXPECT_NE(missing.out.find(dir.file("missing/out.glb") + ": cannot write there: the folder"), std::string::npos) << missing.out;
+    EXPECT_NE(missing.out.find(dir.file("missing/out.glb") + ": cannot write in the folder"), std::string::npos) << missing.out;
     const auto extension = runWoven("export " + scene + " -o " + quoted(dir.file("out.usd")) + " 2>&1");
     EXPECT_EQ(extension.exitCode, 1);
     EXPECT_NE(extension.out.find("must end in .glb or .gltf"), std::string::npos) << extension.out;

@@ -3,16 +3,21 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
 #include "capture_rig.h"
+#include "frame_io.h"
+#include "image_io.h"
 #include "run_woven.h"
 
 namespace woven::test {
@@ -86,6 +91,11 @@ TEST_F(FitCommand, BadPhotoKeysAreNamed) {
     const RunResult r = fit(path);
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find(path + ": photo.encoding: "), std::string::npos) << r.out;
+    // 1e-300 was "must be positive" (it is, and a float makes it 0): the range is said.
+    const std::string tiny = writeShotFile(dir_.string(), "tiny", 64, "{\"image\": \"shot.png\", \"exposure\": 1e-300}");
+    const RunResult t = fit(tiny);
+    EXPECT_NE(t.exitCode, 0);
+    EXPECT_NE(t.out.find(tiny + ": photo.exposure: is 1e-300, must be from 1e-06 to 1e+06"), std::string::npos) << t.out;
 }
 
 // A budget that ends inside the weave search: the best fit so far, a warning, and the report.
@@ -141,9 +151,10 @@ TEST_F(FitCommand, RenderTakesAShotAndSaysItDoesNotUseThePhoto) {
     EXPECT_TRUE(std::filesystem::exists(file("frame.png")));
 }
 
-// Ctrl-C once the fit has reported progress: the best fit so far, exit status 130. The process is
-// started by fork and exec, as the signal needs its pid.
-TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
+// Ctrl-C once the fit has reported progress: the best fit so far, under the partial name (an
+// unfinished fit never takes the final one), exit status 130. The process is started by fork and
+// exec, as the signal needs its pid.
+TEST_F(FitCommand, InterruptWritesTheBestFitSoFarUnderThePartialName) {
     const std::string path = shot();
     const pid_t pid = fork();
     if (pid == 0) {
@@ -162,10 +173,66 @@ TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
     const std::string err = readText(file("stderr.txt"));
     ASSERT_TRUE(WIFEXITED(status)) << err;
     EXPECT_EQ(WEXITSTATUS(status), 130) << err;
-    EXPECT_NE(err.find("interrupted: wrote the best fit so far to " + file("out.json")), std::string::npos) << err;
-    std::ifstream in(file("out.json"));
+    EXPECT_NE(err.find("interrupted: wrote the best fit so far to " + file("out.partial.json")), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+    std::ifstream in(file("out.partial.json"));
     ASSERT_TRUE(in) << err;
     EXPECT_TRUE(nlohmann::json::parse(in).contains("pattern"));
+}
+
+// A photo with nothing to fit is refused, not fitted as some weave: a uniform grey (it was
+// "satin 7/1, 0.85 x 4.3 ends/picks per cm", exit 0) and one whose pixel is not a number.
+TEST_F(FitCommand, PhotosWithNoSignalAreRefused) {
+    TextureImage grey;
+    grey.width = grey.height = 64;
+    grey.bytes.assign(64 * 64, glm::u8vec4(128, 128, 128, 255));
+    writeTexturePng(file("grey.png"), grey);
+    const std::string path = writeShotFile(dir_.string(), "grey", 64, "{\"image\": \"grey.png\"}");
+    RunResult r = fit(path);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("grey.png: every pixel is within 1% of the mean"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+
+    Image nan;
+    nan.width = nan.height = 64;
+    nan.pixels.assign(64 * 64, glm::vec3(0.2f));
+    for (size_t i = 0; i < nan.pixels.size(); i += 3) nan.pixels[i] = glm::vec3(0.6f);
+    nan.pixels[65] = glm::vec3(std::nanf(""));
+    writeExr(file("nan.exr"), ExrImage{nan, {}});
+    const std::string nanShot = writeShotFile(dir_.string(), "nan", 64, "{\"image\": \"nan.exr\"}");
+    r = fit(nanShot);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("nan.exr: pixel (1, 1) is not a finite number"), std::string::npos) << r.out;
+}
+
+// Every output is checked before the fit (output_path.h): a FIFO, a read-only file, a report
+// "folder" that is a file, a report whose shot_0.png would replace the photo. Each is refused at
+// once, naming the file, and nothing is written.
+TEST_F(FitCommand, OutputsThatCannotBeWrittenAreRefusedBeforeTheFit) {
+    RigPhoto photo;
+    photo.size = 64;
+    photo.spp = 4;
+    const std::string path = writeCaptureShot(dir_.string(), "shot_0", photo);  // its photo: shot_0.png
+    const auto refused = [&](const std::string& options, const std::string& named, const std::string& problem) {
+        const auto start = std::chrono::steady_clock::now();
+        const RunResult r = runWovenCommand("fit '" + path + "' --target Swatch --time 600 " + options);
+        EXPECT_NE(r.exitCode, 0) << options;
+        EXPECT_NE(r.out.find(named + ": " + problem), std::string::npos) << r.out;
+        // Refused up front: the fit (600 s) never starts.
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30)) << options;
+    };
+    ASSERT_EQ(mkfifo(file("fifo.json").c_str(), 0644), 0);
+    refused("-o '" + file("fifo.json") + "'", file("fifo.json"), "is not a regular file");
+    std::ofstream(file("kept.json")) << "{}";
+    std::filesystem::permissions(file("kept.json"), std::filesystem::perms::owner_read);
+    refused("-o '" + file("kept.json") + "'", file("kept.json"), "is read-only");
+    EXPECT_EQ(readText(file("kept.json")), "{}");
+    std::ofstream(file("report.txt")) << "notes";
+    refused("-o '" + file("out.json") + "' --report '" + file("report.txt") + "'", file("report.txt"), "--report: is a file");
+    const std::string photoBefore = readText(file("shot_0.png"));
+    refused("-o '" + file("out.json") + "' --report '" + dir_.string() + "'", file("shot_0.png"), "is an input of this command");
+    EXPECT_EQ(readText(file("shot_0.png")), photoBefore);
+    EXPECT_FALSE(std::filesystem::exists(file("out.json")));
 }
 
 }  // namespace

@@ -63,10 +63,12 @@ Result runWoven(const std::vector<std::string>& args, const test::TempDir& dir) 
 
 // A floor quad of material "cloth" (woven through WOVEN_fabric-free glTF: made woven on the
 // command line) with texture coordinates `clothUv`, a ceiling lamp when `withLamp`, and a camera
-// looking at the floor. The lamp (1 m^2, 1 m above the scene's centre) has radiance `lampEmission`.
+// looking at the floor. The lamp (1 m^2, 1 m above the scene's centre) has radiance `lampEmission`
+// (KHR_materials_emissive_strength beyond 1), times its emissive texture `lampTexture` where one is
+// named (a PNG file beside the glTF file).
 const std::vector<glm::vec2> kQuadUv{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
 void writeScene(const std::string& path, bool withLamp, bool nanVertex = false, const nlohmann::json& clothWoven = {},
-                const std::vector<glm::vec2>& clothUv = kQuadUv, float lampEmission = 1.0f) {
+                const std::vector<glm::vec2>& clothUv = kQuadUv, float lampEmission = 4.0f, const std::string& lampTexture = "") {
     test::GltfBuilder b;
     auto addQuad = [&](std::vector<glm::vec3> p, int material, const std::vector<glm::vec2>& uv) {
         const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}, {"TEXCOORD_0", b.addVec2(uv)}}},
@@ -83,8 +85,20 @@ void writeScene(const std::string& path, bool withLamp, bool nanVertex = false, 
     const float nan = std::nanf("");
     std::vector<int> roots{addQuad({{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {nanVertex ? nan : -1.0f, 0, -1}}, cloth, clothUv)};
     if (withLamp) {
-        const int lamp = b.addMaterial({{"name", "lamp"}, {"emissiveFactor", {lampEmission, lampEmission, lampEmission}}});
-        roots.push_back(addQuad({{-0.5f, 2, -0.5f}, {0.5f, 2, -0.5f}, {0.5f, 2, 0.5f}, {-0.5f, 2, 0.5f}}, lamp, kQuadUv));  // facing down
+        const float factor = std::min(lampEmission, 1.0f);
+        nlohmann::json lampMaterial = {{"name", "lamp"}, {"emissiveFactor", {factor, factor, factor}}};
+        if (lampEmission > 1.0f) {
+            lampMaterial["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", lampEmission}}}};
+            b.useExtension("KHR_materials_emissive_strength");
+        }
+        if (!lampTexture.empty()) {
+            lampMaterial["emissiveTexture"] = {{"index", 0}};
+            b.json()["images"] = {{{"uri", lampTexture}}};
+            b.json()["textures"] = {{{"source", 0}}};
+        }
+        const int lamp = b.addMaterial(lampMaterial);
+        roots.push_back(addQuad({{-0.5f, 2, -0.5f}, {0.5f, 2, -0.5f}, {0.5f, 2, 0.5f}, {-0.5f, 2, 0.5f}}, lamp,
+                                {{0, 0}, {1, 0}, {1, 1}, {0, 1}}));  // facing down
     }
     b.json()["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}};
     // At (0, 1, 2.5) looking down the -z axis, tilted 25 degrees down towards the floor.
@@ -154,7 +168,7 @@ double meanRadiance(const std::string& exr) {
 }
 
 TEST(RenderCommand, AnEmissiveLampIsTheScenesLightAndAFaintScreenIsNot) {
-    // The lamp gives the scene's centre about 1 W/m^2 (radiance 1 x 1 m^2 / (1 m)^2), 20 times
+    // The lamp gives the scene's centre about 4 W/m^2 (radiance 4 x 1 m^2 / (1 m)^2), above
     // kDimIrradiance: the frame is the one its own light gives, bit for bit, with nothing added.
     test::TempDir dir;
     writeScene(dir.file("lamp.gltf"), true);
@@ -171,11 +185,53 @@ TEST(RenderCommand, AnEmissiveLampIsTheScenesLightAndAFaintScreenIsNot) {
     const Result own = render("lamp.gltf", "own.exr", {"--environment", "none"});
     ASSERT_EQ(own.exitCode, 0) << own.err;
     EXPECT_EQ(readExr(dir.file("lamp.exr")).image.pixels, readExr(dir.file("own.exr")).image.pixels);
-    // A screen of radiance 0.01 gives 0.01 W/m^2 there, a fifth of kDimIrradiance: the studio lights it.
+    // A screen of radiance 0.01 gives 0.01 W/m^2 there, far below kDimIrradiance: the studio lights it.
     writeScene(dir.file("screen.gltf"), true, false, {}, kQuadUv, 0.01f);
     const Result screen = render("screen.gltf", "screen.exr", {});
     ASSERT_EQ(screen.exitCode, 0) << screen.err;
     EXPECT_NE(screen.err.find("screen.gltf has no light source"), std::string::npos) << screen.err;
+}
+
+// An emitter is judged by the light it delivers, its emissive texture's mean included: the same
+// lamp with a texture that is black but for 4 of its 256 texels (a helmet's lamps, a label's
+// print) delivers 4 x 4/256 W/m^2, and the scene is lit by the studio, as glTF viewers light it:
+// the frame is more than 10 times as bright as the lamp alone makes it (measured: mean radiance
+// 0.17, and 0.41 under a uniform environment of radiance 1, its white background counted). A
+// white texture leaves the lamp the scene's light.
+TEST(RenderCommand, AnEmitterWhoseTextureIsMostlyBlackIsNotTheScenesLight) {
+    test::TempDir dir;
+    TextureImage texture;
+    texture.width = texture.height = 16;
+    texture.bytes.assign(256, glm::u8vec4(0, 0, 0, 255));
+    for (int y = 7; y < 9; ++y)
+        for (int x = 7; x < 9; ++x) texture.bytes[size_t(y * 16 + x)] = glm::u8vec4(255);
+    writeTexturePng(dir.file("dots.png"), texture);
+    texture.bytes.assign(256, glm::u8vec4(255));
+    writeTexturePng(dir.file("white.png"), texture);
+    const std::vector<std::string> frame{"--spp", "4", "--width", "16", "--height", "12", "--no-denoise"};
+    auto render = [&](const std::string& scene, const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args{"render", dir.file(scene), "--out", dir.file(out)};
+        args.insert(args.end(), frame.begin(), frame.end());
+        args.insert(args.end(), extra.begin(), extra.end());
+        return runWoven(args, dir);
+    };
+    writeScene(dir.file("dots.gltf"), true, false, {}, kQuadUv, 4.0f, "dots.png");
+    const Result dots = render("dots.gltf", "dots.exr", {});
+    ASSERT_EQ(dots.exitCode, 0) << dots.err;
+    EXPECT_NE(dots.err.find("dots.gltf has no light source"), std::string::npos) << dots.err;
+    // --list says so: the lamp is emissive, and gives too little to light the scene.
+    const Result list = runWoven({"render", dir.file("dots.gltf"), "--list"}, dir);
+    ASSERT_EQ(list.exitCode, 0) << list.err;
+    EXPECT_NE(list.out.find("emissive meshes: about 0.0"), std::string::npos) << list.out;
+    EXPECT_NE(list.out.find("W/m^2 at the scene's centre (too little to light it)"), std::string::npos) << list.out;
+    const Result own = render("dots.gltf", "own.exr", {"--environment", "none"});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    EXPECT_GT(meanRadiance(dir.file("dots.exr")), 10.0 * meanRadiance(dir.file("own.exr")));
+
+    writeScene(dir.file("white.gltf"), true, false, {}, kQuadUv, 4.0f, "white.png");
+    const Result white = render("white.gltf", "white.exr", {});
+    ASSERT_EQ(white.exitCode, 0) << white.err;
+    EXPECT_EQ(white.err.find("studio"), std::string::npos) << white.err;
 }
 
 TEST(RenderCommand, SceneFilesThatChooseNoLightingAreLitAsTheirGltfIs) {

@@ -87,6 +87,23 @@ TEST(TextileScale, FiveCentimetreSwatchAt8EndsAnd12PicksPerCmHas40By60Threads) {
     }
 }
 
+// "*" sets both thread counts, "Swatch" only the ends: the ends are Swatch's and the picks the
+// broader target's, key by key (it was refused: "'ends_per_cm' needs 'picks_per_cm'"). A repeat
+// in the narrower target replaces both counts.
+TEST(TextileScale, ANarrowerTargetSettingOneSideKeepsTheBroaderOnesOther) {
+    TempDir dir;
+    SceneDescription scene = swatch(dir);
+    assignWoven(scene, {{"*", {{"ends_per_cm", 8}, {"picks_per_cm", 12}}, "materials.*", ""},
+                        {"Swatch", {{"ends_per_inch", 40.64}}, "materials.Swatch", ""}});
+    const WovenParams p = scene.materials[0].woven.value();
+    EXPECT_NEAR(p.repeat.x, 80.0f, 1e-3f);  // 16 ends per cm over 5 cm
+    EXPECT_NEAR(p.repeat.y, 60.0f, 1e-3f);  // 12 picks per cm, from "*"
+    SceneDescription replaced = swatch(dir);
+    assignWoven(replaced, {{"*", {{"ends_per_cm", 8}, {"picks_per_cm", 12}}, "materials.*", ""},
+                           {"Swatch", {{"repeat", {10, 20}}}, "materials.Swatch", ""}});
+    EXPECT_EQ(replaced.materials[0].woven->repeat, glm::vec2(10.0f, 20.0f));
+}
+
 TEST(TextileScale, UnevenUvsWarnOnce) {
     TempDir dir;
     // The second triangle's UVs squeezed to 0.5 along u: its length per UV unit is twice the first's.

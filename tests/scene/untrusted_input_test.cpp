@@ -36,6 +36,42 @@ TEST(UntrustedJson, DepthIsFoundWithoutRecursionAndRefused) {
     EXPECT_THROW(parseUntrustedJson(nested(80000)), std::invalid_argument);
 }
 
+// JSON read exactly as written: a NUL byte (the parser stopped there), a key written twice (the
+// last was kept), U+0000 in a string (a file name ended there) are refused, naming the key.
+TEST(UntrustedJson, NulBytesDuplicateKeysAndU0000AreRefusedNamingTheKey) {
+    using ::testing::ThrowsMessage;
+    EXPECT_THAT([] { parseUntrustedJson(std::string("{\"a\": 1}\0 trailing", 18)); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("a NUL byte at byte 8")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a": {"b": 1, "c": 2, "b": 3}})"); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("the key \"b\" appears twice")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"gltf": "cloth.gltf\u0000.missing"})"); },
+                ThrowsMessage<JsonAsWrittenError>(HasSubstr("(near the key \"gltf\") holds the character U+0000")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a\u0000b": 1})"); }, ThrowsMessage<JsonAsWrittenError>(HasSubstr("U+0000")));
+    EXPECT_THAT([] { parseUntrustedJson(R"({"a": 1} {"b": 2})"); }, ThrowsMessage<std::invalid_argument>(HasSubstr("not valid JSON")));
+    // The same key in two objects, or in objects of an array, is no duplicate.
+    EXPECT_NO_THROW(parseUntrustedJson(R"({"a": {"k": 1}, "b": {"k": 2}, "c": [{"k": 1}, {"k": 2}], "k": 0})"));
+}
+
+TEST(UntrustedJson, EveryFileWovenReadsIsReadAsWritten) {
+    TempDir dir;
+    GltfBuilder b;
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    b.setScene({b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", b.addPositions(p)}}}})}})});
+    b.writeGltf(dir.file("cloth.gltf"));
+    std::ofstream(dir.file("nul.json"), std::ios::binary) << R"({"gltf": "cloth.gltf\u0000.missing"})";
+    EXPECT_THAT(loadError(dir.file("nul.json")), HasSubstr("nul.json: the string \"cloth.gltf\\u0000.missing\""));
+    std::ofstream(dir.file("after.json"), std::ios::binary) << std::string("{\"gltf\": \"cloth.gltf\"}\0{", 24);
+    EXPECT_THAT(loadError(dir.file("after.json")), HasSubstr("after.json: a NUL byte at byte 22"));
+    std::ofstream(dir.file("twice.json")) << R"({"gltf": "cloth.gltf", "gltf": "other.gltf"})";
+    EXPECT_THAT(loadError(dir.file("twice.json")), HasSubstr("twice.json: the key \"gltf\" appears twice"));
+    // glTF's JSON forbids duplicate keys: refused before tinygltf keeps one of them.
+    std::ifstream in(dir.file("cloth.gltf"));
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.insert(text.rfind('}'), R"(, "scene": 0, "scene": 0)");
+    std::ofstream(dir.file("twice.gltf")) << text;
+    EXPECT_THAT(loadError(dir.file("twice.gltf")), HasSubstr("twice.gltf: the key \"scene\" appears twice"));
+}
+
 TEST(UntrustedGltf, ExtrasNestedDeepAreRefusedBeforeParsing) {
     TempDir dir;
     GltfBuilder b;
@@ -148,6 +184,35 @@ TEST(UntrustedGltf, CoincidentCopiesOfATriangleAreDroppedAndCountedInOneLine) {
     for (const Mesh& m : scene.meshes) EXPECT_EQ(m.triangles, (std::vector<glm::uvec3>{{0, 1, 2}, {0, 2, 1}}));
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_EQ(scene.warnings[0], "dropped 399998 duplicate triangles in 2 primitives ('a/pile/0', 'b/pile/0')");
+}
+
+// A million instances in one place hung a 32 x 24 render (every ray tests every copy): copies of
+// another's matrix are dropped in one warning, as coincident triangles are. A scale of 1e30 is
+// no "zero scale": it is refused as past the coordinate limit.
+TEST(UntrustedGltf, CoincidentInstancesAreDrawnOnceAndAHugeScaleIsNoZeroScale) {
+    TempDir dir;
+    const auto write = [&](const std::string& name, const nlohmann::json& attributes, GltfBuilder& b) {
+        const int mesh = b.addMesh({{"attributes", {{"POSITION", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})}}}}, "leaf");
+        b.useExtension("EXT_mesh_gpu_instancing", true);
+        b.setScene({b.addNode({{"mesh", mesh}, {"name", "tree"}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", attributes}}}}}})});
+        b.writeGlb(dir.file(name));
+    };
+    GltfBuilder pile;
+    std::vector<glm::vec3> t(1000000, glm::vec3(0.0f));
+    t[500000] = glm::vec3(5.0f, 0.0f, 0.0f);
+    write("pile.glb", {{"TRANSLATION", pile.addVec3(t)}}, pile);
+    const SceneDescription scene = loadScene(dir.file("pile.glb"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.meshes[0].instances->size(), 2u);
+    EXPECT_EQ((*scene.meshes[0].instances)[1][3], glm::vec4(5.0f, 0.0f, 0.0f, 1.0f));
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_THAT(scene.warnings[0], HasSubstr("node 'tree': 999998 of its EXT_mesh_gpu_instancing instances repeat another's matrix"));
+
+    GltfBuilder huge;
+    write("huge.glb", {{"SCALE", huge.addVec3({glm::vec3(1e30f)})}}, huge);
+    const std::string error = loadError(dir.file("huge.glb"));
+    EXPECT_THAT(error, HasSubstr("huge.glb: node 'tree': EXT_mesh_gpu_instancing instance 0: "));
+    EXPECT_THAT(error, ::testing::Not(HasSubstr("zero scale")));
 }
 
 // fuzz_gltf's find: a .glb one byte short, whose binary chunk then claims a byte past the file's
