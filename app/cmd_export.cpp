@@ -166,7 +166,7 @@ void runU3mExport(ExportCommand o) {
     const auto bar = std::make_shared<ProgressBar>("bake");
     showBakeProgress(o.u3m.bake, bar);
     const SceneDescription scene = loadWithEdits(o);
-    refuseOverwritingInputs(o.out, scene.inputFiles);
+    checkOutput(o.out);
     std::cerr << "export: baking the front and back of a woven material of " << o.scene << "\n";
     const U3mExport u = exportU3m(scene, o.out, o.u3m);
     bar->finish();
@@ -212,7 +212,7 @@ void runShare(ExportCommand o) {
     showBakeProgress(o.share.exportOptions.bake, bar);
     const SceneDescription scene = loadWithEdits(o);
     for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
-        refuseOverwritingInputs((std::filesystem::path(o.out) / file).string(), scene.inputFiles);
+        checkOutput((std::filesystem::path(o.out) / file).string());
     std::cerr << "share: baking the woven materials of " << o.scene << ", then woven's render for the poster\n";
     const std::vector<std::string> warnings = writeSharePage(scene, o.out, o.share);
     bar->finish();
