@@ -168,5 +168,34 @@ TEST_F(FitCommand, InterruptWritesTheBestFitSoFar) {
     EXPECT_TRUE(nlohmann::json::parse(in).contains("pattern"));
 }
 
+// The example shot of docs/FIT.md ("Try it"), as documented there, with a short budget: one
+// flash photo of the library's denim (25 ends and 16 picks per cm), made by woven
+// (assets/fit/make_photo.sh). Its thread counts come from stage 1, inside any budget; the
+// exposure is free, so it is folded into the material, and with no backlit shot the
+// transmission is said to be unfitted, on stderr and in the material's comment, which scene files
+// accept.
+TEST_F(FitCommand, ExampleShotFitsAsDocumented) {
+    const RunResult r = runWovenCommand("fit '" WOVEN_ASSETS_DIR "/fit/denim_flash.json' --target Swatch -o '" +
+                                        file("denim_fit.json") + "' --time 10");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("transmission not fitted"), std::string::npos) << r.out;
+    std::ifstream in(file("denim_fit.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j.contains("comment")) << j.dump();
+    const std::string comment = j["comment"];
+    EXPECT_NE(comment.find("are not fitted: no shot is lit from behind"), std::string::npos) << comment;
+    EXPECT_NE(comment.find("exposure"), std::string::npos) << comment;
+    EXPECT_NEAR(j["ends_per_cm"].get<double>(), 25.0, 25.0 * 0.03) << j.dump();
+    EXPECT_NEAR(j["picks_per_cm"].get<double>(), 16.0, 16.0 * 0.03) << j.dump();
+    // The fitted material as a scene file's: it renders in the example's rig.
+    nlohmann::json scene = nlohmann::json::parse(readText(WOVEN_ASSETS_DIR "/fit/denim_scene.json"));
+    scene["gltf"] = WOVEN_ASSETS_DIR "/fit/swatch.gltf";
+    scene["materials"]["Swatch"] = j;
+    std::ofstream(file("scene.json")) << scene.dump();
+    const RunResult render = runWovenCommand("render '" + file("scene.json") + "' --spp 1 -o '" + file("fit.png") + "'");
+    EXPECT_EQ(render.exitCode, 0) << render.out;
+}
+
 }  // namespace
 }  // namespace woven::test
