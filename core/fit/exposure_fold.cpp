@@ -83,7 +83,7 @@ ExposureFold foldExposure(const WovenParams& fitted, double exposure) {
                              std::all_of(p.weft_colors.begin(), p.weft_colors.end(), withinOne) &&
                              std::all_of(p.warp_colors.begin(), p.warp_colors.end(), withinOne);
     if (!withinRange) {
-        out.note = formatted("the photos are brighter than any material with colours up to 1 renders under the shots' "
+        out.note = formatted("the photos are brighter than any material with colours, rs and transmission up to 1 renders under the shots' "
                              "light: the light was about %.4g times brighter than the shots state, so the material is "
                              "kept as fitted, to be rendered with the lights %.4g times as bright",
                              exposure);
