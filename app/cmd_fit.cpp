@@ -85,12 +85,12 @@ int runFit(const FitCommand& o) {
         notes.push_back(s.str());
     }
     nlohmann::json material = fittedMaterialJson(fold.params, shots[0]);
-    std::string comment = "woven fit";
+    std::string comment;
     for (const std::string& note : notes) {
         std::cerr << "fit: " << note << "\n";
-        comment += (comment == "woven fit" ? ": " : "; ") + note;
+        comment += (comment.empty() ? "woven fit: " : "; ") + note;
     }
-    if (!notes.empty()) material["comment"] = comment;
+    if (!comment.empty()) material["comment"] = comment;
     writeJson(o.out, material);
     std::cerr << (wasInterrupted ? "interrupted: wrote the best fit so far to " : "wrote ") << o.out << "\n";
 

@@ -222,7 +222,8 @@ Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, floa
 
 void RenderScene::Impl::buildGeometry() {
     // WOVEN_EMBREE_CONFIG is Embree's device configuration (for example "isa=sse4.2" or
-    // "isa=avx2"): the test suite runs on two CPUs' kernels with it (README.md, "Tests").
+    // "isa=avx2"): the test suite runs on two CPUs' kernels with it (README.md, "Tests on two
+    // CPUs' kernels").
     const char* config = std::getenv("WOVEN_EMBREE_CONFIG");
     device = rtcNewDevice(config);
     if (!device)
