@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "exposure_fold.h"
 #include "fabric_fit.h"
 #include "fit_output.h"
 #include "fit_report.h"
@@ -71,9 +72,26 @@ int runFit(const FitCommand& o) {
     if (!result.complete && !wasInterrupted)
         std::cerr << "warning: fit: --time " << o.time << " s ran out before the fit finished its stages; "
                   << o.out << " holds the best fit so far (docs/FIT.md says how long a fit takes)\n";
+    const bool anyBacklit = std::any_of(shots.begin(), shots.end(), [](const Shot& s) { return s.backlit; });
+    const ExposureFold fold = foldFittedExposure(shots, result);
+    std::vector<std::string> notes;
+    if (!fold.note.empty()) notes.push_back(fold.note);
+    if (!anyBacklit) {
+        std::ostringstream s;
+        s << "transmission " << fold.params.transmission << " and transmission_gloss " << fold.params.transmission_gloss
+          << " are not fitted: no shot is lit from behind, so they keep the shots' material's values";
+        notes.push_back(s.str());
+    }
+    nlohmann::json material = fittedMaterialJson(fold.params, shots[0]);
+    std::string comment;
+    for (const std::string& note : notes) {
+        std::cerr << "fit: " << note << "\n";
+        comment += (comment.empty() ? "woven fit: " : "; ") + note;
+    }
+    if (!comment.empty()) material["comment"] = comment;
     // An interrupted fit is unfinished: it never takes the final name (as render's .partial.exr).
     const std::string out = wasInterrupted ? partialName(o.out) : o.out;
-    writeJson(out, fittedMaterialJson(result.params, shots[0]));
+    writeJson(out, material);
     std::cerr << (wasInterrupted ? "interrupted: wrote the best fit so far to " : "wrote ") << out << "\n";
 
     std::cout << "weave " << describeWeave(result.params.pattern);
@@ -83,10 +101,13 @@ int runFit(const FitCommand& o) {
         std::cout << ", repeat " << result.params.repeat.x << " x " << result.params.repeat.y << " per UV unit";
     std::cout << ", loss " << std::setprecision(4) << result.loss << ", " << result.evaluations << " renders";
     if (!result.history.empty()) std::cout << " in " << std::setprecision(3) << result.history.back().first << " s";
-    if (result.exposure != 1.0) std::cout << ", exposure " << std::setprecision(4) << result.exposure;
-    if (std::any_of(shots.begin(), shots.end(), [](const Shot& s) { return s.backlit; }))
-        std::cout << ", transmission " << std::setprecision(3) << result.params.transmission << " (gloss "
-                  << result.params.transmission_gloss << ") from the backlit shots";
+    if (result.exposure != 1.0)
+        std::cout << ", exposure " << std::setprecision(4) << result.exposure << (fold.folded ? " (folded into the colours)" : "");
+    if (anyBacklit)
+        std::cout << ", transmission " << std::setprecision(3) << fold.params.transmission << " (gloss "
+                  << fold.params.transmission_gloss << ") from the backlit shots";
+    else
+        std::cout << ", transmission not fitted";
     std::cout << "\n";
     if (!o.report.empty()) {
         for (const std::string& w : writeFitReport(o.report, shots, result)) std::cerr << "warning: fit: " << w << "\n";

@@ -1,5 +1,6 @@
 #include "fit_job.h"
 
+#include "exposure_fold.h"
 #include "fit_output.h"
 #include "shot.h"
 
@@ -27,6 +28,10 @@ void FitJob::start(const std::vector<std::string>& shotPaths, const std::string&
             progress_ = p;
             history_.push_back(float(p.bestLoss));
         });
+        // The edited material renders as the photos look under the shots' own light.
+        const ExposureFold fold = foldFittedExposure(shots, fitted.fit);
+        fitted.fit.params = fold.params;
+        if (!fold.note.empty()) fitted.fit.warnings.push_back(fold.note);
         fitted.threadsPerCm = threadsPerCm(shots[0], fitted.fit.params.repeat);
         std::lock_guard<std::mutex> lock(mutex_);
         result_ = std::move(fitted);

@@ -88,6 +88,11 @@ MaterialJson materialFromJson(const nlohmann::json& given, const WovenParams& ba
     out.textile = readTextileKeys(j);
     nlohmann::json rest = j;
     for (const char* key : textileKeyNames()) rest.erase(key);
+    if (j.contains("comment")) {
+        // A note for people (woven fit writes how the exposure was folded in); the material ignores it.
+        if (!j["comment"].is_string()) throw std::invalid_argument("'comment' must be a string");
+        rest.erase("comment");
+    }
     std::optional<Draft> draft;
     if (j.contains("wif")) {
         if (!j["wif"].is_string() || j["wif"].get<std::string>().empty())

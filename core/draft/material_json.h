@@ -13,6 +13,8 @@
 //                       does; "warp_count" / "weft_count" set warp_width / yarn_width from the
 //                       yarn's diameter (textile_units.h, docs/FABRICS.md).
 //   "preset": NAME      a fabric of the library (fabric_library.h) under the other keys.
+//   "comment": "..."    a note for people (woven fit says there how it folded the exposure in);
+//                       ignored.
 #include <nlohmann/json.hpp>
 
 #include <optional>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -220,8 +221,14 @@ Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, floa
 }  // namespace
 
 void RenderScene::Impl::buildGeometry() {
-    device = rtcNewDevice(nullptr);
-    if (!device) fail("cannot create the Embree device");
+    // WOVEN_EMBREE_CONFIG is Embree's device configuration (for example "isa=sse4.2" or
+    // "isa=avx2"): the test suite runs on two CPUs' kernels with it (README.md, "Tests on two
+    // CPUs' kernels").
+    const char* config = std::getenv("WOVEN_EMBREE_CONFIG");
+    device = rtcNewDevice(config);
+    if (!device)
+        fail(config ? std::string("cannot create the Embree device with WOVEN_EMBREE_CONFIG=\"") + config + "\""
+                    : std::string("cannot create the Embree device"));
     rtcSetDeviceErrorFunction(device, embreeError, &embreeMessage);
     rtcScene = rtcNewScene(device);
     culls = std::any_of(scene->meshes.begin(), scene->meshes.end(), [&](const Mesh& mesh) { return singleSided(mesh); });

@@ -214,12 +214,10 @@ TEST_F(FitCommand, OutputsThatCannotBeWrittenAreRefusedBeforeTheFit) {
     photo.spp = 4;
     const std::string path = writeCaptureShot(dir_.string(), "shot_0", photo);  // its photo: shot_0.png
     const auto refused = [&](const std::string& options, const std::string& named, const std::string& problem) {
-        const auto start = std::chrono::steady_clock::now();
         const RunResult r = runWovenCommand("fit '" + path + "' --target Swatch --time 600 " + options);
         EXPECT_NE(r.exitCode, 0) << options;
         EXPECT_NE(r.out.find(named + ": " + problem), std::string::npos) << r.out;
-        // Refused up front: the fit (600 s) never starts.
-        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30)) << options;
+        // Refused up front: a fit that started would run its 600 s past the test's timeout.
     };
     ASSERT_EQ(mkfifo(file("fifo.json").c_str(), 0644), 0);
     refused("-o '" + file("fifo.json") + "'", file("fifo.json"), "is not a regular file");
@@ -233,6 +231,34 @@ TEST_F(FitCommand, OutputsThatCannotBeWrittenAreRefusedBeforeTheFit) {
     refused("-o '" + file("out.json") + "' --report '" + dir_.string() + "'", file("shot_0.png"), "is an input of this command");
     EXPECT_EQ(readText(file("shot_0.png")), photoBefore);
     EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+
+// The example shot of docs/FIT.md ("Try it"), as documented there, with a short budget: one
+// flash photo of the library's denim (25 ends and 16 picks per cm), made by woven
+// (assets/fit/make_photo.sh). Its thread counts come from stage 1, inside any budget; the
+// exposure is free, so it is folded into the material, and with no backlit shot the
+// transmission is said to be unfitted, on stderr and in the material's comment, which scene files
+// accept.
+TEST_F(FitCommand, ExampleShotFitsAsDocumented) {
+    const RunResult r = runWovenCommand("fit '" WOVEN_ASSETS_DIR "/fit/denim_flash.json' --target Swatch -o '" +
+                                        file("denim_fit.json") + "' --time 10");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("transmission not fitted"), std::string::npos) << r.out;
+    std::ifstream in(file("denim_fit.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j.contains("comment")) << j.dump();
+    const std::string comment = j["comment"];
+    EXPECT_NE(comment.find("are not fitted: no shot is lit from behind"), std::string::npos) << comment;
+    EXPECT_NE(comment.find("exposure"), std::string::npos) << comment;
+    EXPECT_NEAR(j["ends_per_cm"].get<double>(), 25.0, 25.0 * 0.03) << j.dump();
+    EXPECT_NEAR(j["picks_per_cm"].get<double>(), 16.0, 16.0 * 0.03) << j.dump();
+    // The fitted material as a scene file's: it renders in the example's rig.
+    nlohmann::json scene = nlohmann::json::parse(readText(WOVEN_ASSETS_DIR "/fit/denim_scene.json"));
+    scene["gltf"] = WOVEN_ASSETS_DIR "/fit/swatch.gltf";
+    scene["materials"]["Swatch"] = j;
+    std::ofstream(file("scene.json")) << scene.dump();
+    const RunResult render = runWovenCommand("render '" + file("scene.json") + "' --spp 1 -o '" + file("fit.png") + "'");
+    EXPECT_EQ(render.exitCode, 0) << render.out;
 }
 
 }  // namespace
