@@ -3,7 +3,6 @@
 // with --report the bake's error against the model (docs/EXPORT.md).
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -206,8 +205,6 @@ void runShare(ExportCommand o) {
     o.share.exportOptions = o.options;
     o.share.exportOptions.bake.sheen = !o.noSheen;
     o.share.exportOptions.bake.anisotropy = !o.isotropic;
-    const char* viewer = std::getenv("WOVEN_MODEL_VIEWER");
-    o.share.modelViewer = viewer && *viewer ? viewer : WOVEN_MODEL_VIEWER_JS;
     const auto bar = std::make_shared<ProgressBar>("bake");
     showBakeProgress(o.share.exportOptions.bake, bar);
     const SceneDescription scene = loadWithEdits(o);

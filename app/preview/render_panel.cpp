@@ -11,6 +11,7 @@
 #include "integrators.h"
 #include "preview_window_impl.h"
 #include "scene_export.h"
+#include "share_page.h"
 #include "u3m_export.h"
 
 namespace woven {
@@ -63,9 +64,14 @@ void PreviewWindow::drawRenderControls() {
         shown.camera = camera_.camera();
         shown.hasCamera = true;
         try {
-            // By the file's extension: the edited cloth as a U3M, else the scene as glTF.
+            // By the path: a folder (ending in /) the share page, the edited cloth as a U3M, else
+            // the scene as glTF.
             const std::string path = exportPath_;
-            if (hasExtension(path, ".u3ma") || hasExtension(path, ".u3m")) {
+            if (!path.empty() && path.back() == '/') {
+                const std::vector<std::string> warnings = writeSharePage(shown, path, ShareOptions{});
+                for (const std::string& w : warnings) std::cerr << "warning: " << path << ": " << w << "\n";
+                status_ = "wrote the page " + path + "index.html";
+            } else if (hasExtension(path, ".u3ma") || hasExtension(path, ".u3m")) {
                 U3mOptions options;
                 if (editIndex_ >= 0) {
                     const int m = edits_->materialOf(edits_->edits()[size_t(editIndex_)].target);
@@ -88,7 +94,7 @@ void PreviewWindow::drawRenderControls() {
     ui::InputText("##export file", exportPath_, sizeof exportPath_);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("scene.glb or .gltf: the scene for other renderers; cloth.u3ma or .u3m: the edited cloth for "
-                          "fashion tools (docs/EXPORT.md); a page to share: woven share on the command line");
+                          "fashion tools; page/ (a folder): a web page that shows the cloth (docs/EXPORT.md)");
     if (final_.running() || finalImage_)
         ImGui::ProgressBar(final_.fractionDone(), ImVec2(-1.0f, 0.0f), final_.progressText().c_str());
     if (!final_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", final_.error().c_str());

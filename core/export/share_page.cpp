@@ -1,5 +1,6 @@
 #include "share_page.h"
 
+#include <cstdlib>
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
@@ -138,6 +139,11 @@ std::string fabricLines(const SceneDescription& scene) {
 }
 
 }  // namespace
+
+std::string defaultModelViewer() {
+    const char* viewer = std::getenv("WOVEN_MODEL_VIEWER");
+    return viewer && *viewer ? viewer : WOVEN_MODEL_VIEWER_JS;
+}
 
 std::vector<std::string> writeSharePage(const SceneDescription& scene, const std::string& folder, const ShareOptions& options) {
     std::string viewer;

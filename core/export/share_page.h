@@ -20,9 +20,13 @@ struct ShareError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// model-viewer-umd.min.js from npm's @google/model-viewer: $WOVEN_MODEL_VIEWER, else where
+// tools/install-deps.sh installs it (found when woven was built).
+std::string defaultModelViewer();
+
 struct ShareOptions {
     ExportOptions exportOptions;
-    std::string modelViewer;  // model-viewer-umd.min.js from @google/model-viewer's dist/
+    std::string modelViewer = defaultModelViewer();  // model-viewer-umd.min.js from @google/model-viewer's dist/
     int posterSize = 640;     // pixels along the poster's longer side
     int posterSpp = 64;
 };

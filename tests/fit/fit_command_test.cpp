@@ -231,6 +231,7 @@ TEST_F(FitCommand, OutputsThatCannotBeWrittenAreRefusedBeforeTheFit) {
     refused("-o '" + file("out.json") + "' --report '" + dir_.string() + "'", file("shot_0.png"), "is an input of this command");
     EXPECT_EQ(readText(file("shot_0.png")), photoBefore);
     EXPECT_FALSE(std::filesystem::exists(file("out.json")));
+}
 
 // The example shot of docs/FIT.md ("Try it"), as documented there, with a short budget: one
 // flash photo of the library's denim (25 ends and 16 picks per cm), made by woven
