@@ -208,8 +208,12 @@ void runShare(ExportCommand o) {
     const auto bar = std::make_shared<ProgressBar>("bake");
     showBakeProgress(o.share.exportOptions.bake, bar);
     const SceneDescription scene = loadWithEdits(o);
-    for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
-        checkOutput((std::filesystem::path(o.out) / file).string());
+    // A page folder not made yet is made by writeSharePage (its parent must exist); one that is
+    // there has each file checked up front.
+    std::error_code ec;
+    if (std::filesystem::is_directory(o.out, ec))
+        for (const char* file : {"index.html", "scene.glb", "poster.png", "environment.hdr", "model-viewer.min.js"})
+            checkOutput((std::filesystem::path(o.out) / file).string());
     std::cerr << "share: baking the woven materials of " << o.scene << ", then woven's render for the poster\n";
     const std::vector<std::string> warnings = writeSharePage(scene, o.out, o.share);
     bar->finish();

@@ -30,7 +30,9 @@ void checkSignal(const Image& image, const std::string& path) {
         sum += l;
     }
     const double mean = image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
-    if (!(highest - lowest > 0.01 * mean))
+    // All black is data (an opaque cloth lit from behind passes nothing); any other uniform image
+    // holds no weave.
+    if (highest > 0.0 && !(highest - lowest > 0.01 * mean))
         throw ImageError(path + ": every pixel is within 1% of the mean (" + shortNumber(mean) +
                          "): the photo shows no weave to fit (a uniform or all-clipped image)");
 }

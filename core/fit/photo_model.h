@@ -11,7 +11,8 @@ namespace woven {
 // The photo's pixels as linear RGB: sRGB or gamma 2.2 decoded, or taken as they are
 // ("linear"; float formats always). Throws ImageError naming the file, also for a photo with
 // nothing to fit: a pixel that is not a finite number (the loss would be inf), or every pixel
-// within 1% of the mean (a uniform grey, or all clipped, was fitted as some weave).
+// within 1% of the mean (a uniform grey, or all clipped, was fitted as some weave); all black is
+// data (an opaque cloth lit from behind).
 Image readPhoto(const ShotPhoto& photo);
 
 // The largest value the photo's file can hold: 1 where it is 8- or 16-bit (a highlight brighter

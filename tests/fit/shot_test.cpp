@@ -22,7 +22,9 @@ protected:
         TempDirTest::SetUp();
         Image photo;
         photo.width = photo.height = 32;
+        // Stripes: a photo with no signal at all is refused as nothing to fit.
         photo.pixels.assign(32 * 32, glm::vec3(0.2f));
+        for (size_t i = 0; i < photo.pixels.size(); i += 2) photo.pixels[i] = glm::vec3(0.4f);
         writePng((dir_ / "photo.png").string(), photo, {0.0f, ToneMap::Clamp});
     }
     // The rig's swatch and camera, no punctual light, and a 10 cm light box `height` metres above
