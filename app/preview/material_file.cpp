@@ -39,20 +39,27 @@ std::string gltfFromSceneFile(const std::string& gltf, const std::string& path) 
     return !ec && !relative.empty() ? relative.generic_string() : fs::absolute(gltf, ec).generic_string();
 }
 
-void saveMaterialJson(const std::string& path, const std::string& materialName, const nlohmann::json& material,
-                      const std::string& gltf, const nlohmann::json& camera = nullptr) {
+using NamedMaterials = std::vector<std::pair<std::string, nlohmann::json>>;
+
+// Reads the file once, sets every material (and the camera, where given), writes it once.
+void saveMaterialsJson(const std::string& path, const NamedMaterials& materials, const std::string& gltf,
+                       const nlohmann::json& camera = nullptr) {
     nlohmann::json file;
     if (std::filesystem::exists(path)) {
         file = readJson(path);
         if (!file.is_object() || !file.contains("gltf"))
             throw std::runtime_error(path + ": not a woven scene file (no \"gltf\" key); not overwriting it");
-        file["materials"][materialName] = material;
     } else if (!gltf.empty()) {
-        file = {{"gltf", gltfFromSceneFile(gltf, path)}, {"materials", {{materialName, material}}}};
+        file = {{"gltf", gltfFromSceneFile(gltf, path)}};
+    } else if (materials.size() == 1) {
+        file = materials.front().second;  // the procedural cloth's one material, as a bare object
     } else {
-        file = material;
+        throw std::runtime_error(path + ": several materials need a scene file, and the procedural cloth has no glTF");
     }
-    if (!camera.is_null() && file.contains("gltf")) file["camera"] = camera;
+    if (file.contains("gltf")) {
+        for (const auto& [name, material] : materials) file["materials"][name] = material;
+        if (!camera.is_null()) file["camera"] = camera;
+    }
     writeFileAtomically(path, [&](const std::string& tmp) {
         std::ofstream out(tmp);
         out << file.dump(2) << "\n";
@@ -64,7 +71,7 @@ void saveMaterialJson(const std::string& path, const std::string& materialName, 
 
 void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
                   const std::string& gltf) {
-    saveMaterialJson(path, materialName, paramsToJson(params), gltf);
+    saveMaterialsJson(path, {{materialName, paramsToJson(params)}}, gltf);
 }
 
 void saveScene(const std::string& path, const std::vector<std::pair<std::string, WovenParams>>& materials,
@@ -75,7 +82,9 @@ void saveScene(const std::string& path, const std::vector<std::pair<std::string,
                                  {"target", {target.x, target.y, target.z}},
                                  {"up", {up.x, up.y, up.z}},
                                  {"yfov_degrees", glm::degrees(double(camera.yfov))}};
-    for (const auto& [target, params] : materials) saveMaterialJson(path, target, paramsToJson(params), gltf, view);
+    NamedMaterials named;
+    for (const auto& [name, params] : materials) named.emplace_back(name, paramsToJson(params));
+    saveMaterialsJson(path, named, gltf, view);
 }
 
 std::string sceneGltf(const std::string& scenePath) {
@@ -101,7 +110,7 @@ std::string saveMaterialWithDraft(const std::string& path, const std::string& ma
     }
     material["wif"] = wif.filename().string();  // beside the material file
     draft.save(wif.string());
-    saveMaterialJson(path, materialName, material, gltf);
+    saveMaterialsJson(path, {{materialName, material}}, gltf);
     return wif.string();
 }
 
