@@ -87,7 +87,7 @@ void PreviewWindow::applyFinishedFit() {
     editIndex_ = int(edit - edits.begin());
     edits_->params(editIndex_) = params;
     chosenFabric_.reset();
-    showFinal_ = false;  // the rendered frame is of the old cloth
+    materialEdited();
     applyEdits();
     fitApplied_ = true;
     std::ostringstream s;

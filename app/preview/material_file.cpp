@@ -30,27 +30,56 @@ nlohmann::json readJson(const std::string& path) {
     }
 }
 
-// `gltf` as the scene file at `path` names it: relative to that file's folder where it can be.
-std::string gltfFromSceneFile(const std::string& gltf, const std::string& path) {
+bool isSceneFile(const std::string& path) {
+    return path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+}
+
+// `file` (a path as given, or relative to the working directory) as the scene file at `path`
+// names it: relative to that file's folder where it can be.
+std::string pathFromSceneFile(const std::string& file, const std::string& path) {
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path folder = fs::absolute(path, ec).parent_path();
-    const fs::path relative = fs::absolute(gltf, ec).lexically_relative(folder);
-    return !ec && !relative.empty() ? relative.generic_string() : fs::absolute(gltf, ec).generic_string();
+    const fs::path relative = fs::absolute(file, ec).lexically_relative(folder);
+    return !ec && !relative.empty() ? relative.generic_string() : fs::absolute(file, ec).generic_string();
+}
+
+// The scene file `from` as a file at `to` says it: each relative path it holds (its glTF, its
+// environment image, its materials' drafts and U3M files, its photo) rebased to `to`'s folder.
+nlohmann::json rebasedSceneFile(const std::string& from, const std::string& to) {
+    nlohmann::json file = readJson(from);
+    if (!file.is_object() || !file.contains("gltf"))
+        throw std::runtime_error(from + ": not a woven scene file (no \"gltf\" key)");
+    const std::filesystem::path folder = std::filesystem::path(from).parent_path();
+    const auto rebase = [&](nlohmann::json& value) {
+        if (!value.is_string()) return;  // the reader says what is wrong with it
+        const std::filesystem::path given(value.get<std::string>());
+        value = pathFromSceneFile(given.is_absolute() ? given.string() : (folder / given).string(), to);
+    };
+    rebase(file["gltf"]);
+    for (const char* key : {"environment", "photo"})
+        if (file.contains(key) && file[key].is_object() && file[key].contains("image")) rebase(file[key]["image"]);
+    if (file.contains("materials") && file["materials"].is_object())
+        for (auto& [name, material] : file["materials"].items())
+            for (const char* key : {"wif", "u3m"})
+                if (material.is_object() && material.contains(key)) rebase(material[key]);
+    return file;
 }
 
 using NamedMaterials = std::vector<std::pair<std::string, nlohmann::json>>;
 
-// Reads the file once, sets every material (and the camera, where given), writes it once.
-void saveMaterialsJson(const std::string& path, const NamedMaterials& materials, const std::string& gltf,
-                       const nlohmann::json& camera = nullptr) {
+// Reads the file once, sets every material (and the rest `save` holds, where given), writes it once.
+void saveMaterialsJson(const std::string& path, const NamedMaterials& materials, const std::string& scenePath,
+                       const SceneSave* save = nullptr) {
     nlohmann::json file;
     if (std::filesystem::exists(path)) {
         file = readJson(path);
         if (!file.is_object() || !file.contains("gltf"))
             throw std::runtime_error(path + ": not a woven scene file (no \"gltf\" key); not overwriting it");
-    } else if (!gltf.empty()) {
-        file = {{"gltf", gltfFromSceneFile(gltf, path)}};
+    } else if (isSceneFile(scenePath)) {
+        file = rebasedSceneFile(scenePath, path);
+    } else if (!scenePath.empty()) {
+        file = {{"gltf", pathFromSceneFile(scenePath, path)}};
     } else if (materials.size() == 1) {
         file = materials.front().second;  // the procedural cloth's one material, as a bare object
     } else {
@@ -58,7 +87,22 @@ void saveMaterialsJson(const std::string& path, const NamedMaterials& materials,
     }
     if (file.contains("gltf")) {
         for (const auto& [name, material] : materials) file["materials"][name] = material;
-        if (!camera.is_null()) file["camera"] = camera;
+        if (save) {
+            if (const auto& view = save->camera)
+                file["camera"] = {{"position", {view->position.x, view->position.y, view->position.z}},
+                                  {"target", {view->target.x, view->target.y, view->target.z}},
+                                  {"up", {view->up.x, view->up.y, view->up.z}},
+                                  {"yfov_degrees", view->yfovDegrees}};
+            nlohmann::json& render = file["render"];
+            const RenderHints& hints = save->render;
+            if (hints.width > 0) render["width"] = hints.width;
+            if (hints.height > 0) render["height"] = hints.height;
+            if (hints.spp > 0) render["spp"] = hints.spp;
+            if (!hints.integrator.empty()) render["integrator"] = hints.integrator;
+            if (!hints.sampler.empty()) render["sampler"] = hints.sampler;
+            if (hints.noiseThreshold) render["noise_threshold"] = *hints.noiseThreshold;
+            if (const auto& c = save->environmentColor) file["environment"]["color"] = {c->x, c->y, c->z};
+        }
     }
     writeFileAtomically(path, [&](const std::string& tmp) {
         std::ofstream out(tmp);
@@ -74,21 +118,14 @@ void saveMaterial(const std::string& path, const std::string& materialName, cons
     saveMaterialsJson(path, {{materialName, paramsToJson(params)}}, gltf);
 }
 
-void saveScene(const std::string& path, const std::vector<std::pair<std::string, WovenParams>>& materials,
-               const std::string& gltf, const Camera& camera) {
-    const glm::vec3 position(camera.cameraToWorld[3]), forward(-camera.cameraToWorld[2]), up(camera.cameraToWorld[1]);
-    const glm::vec3 target = position + forward;
-    const nlohmann::json view = {{"position", {position.x, position.y, position.z}},
-                                 {"target", {target.x, target.y, target.z}},
-                                 {"up", {up.x, up.y, up.z}},
-                                 {"yfov_degrees", glm::degrees(double(camera.yfov))}};
+void saveScene(const std::string& path, const std::string& scenePath, const SceneSave& save) {
     NamedMaterials named;
-    for (const auto& [name, params] : materials) named.emplace_back(name, paramsToJson(params));
-    saveMaterialsJson(path, named, gltf, view);
+    for (const auto& [name, params] : save.materials) named.emplace_back(name, paramsToJson(params));
+    saveMaterialsJson(path, named, scenePath, &save);
 }
 
 std::string sceneGltf(const std::string& scenePath) {
-    if (scenePath.size() < 5 || scenePath.compare(scenePath.size() - 5, 5, ".json") != 0) return scenePath;
+    if (!isSceneFile(scenePath)) return scenePath;
     const nlohmann::json scene = readJson(scenePath);
     if (!scene.is_object() || !scene.contains("gltf") || !scene["gltf"].is_string())
         throw std::runtime_error(scenePath + ": not a woven scene file (no \"gltf\" key)");

@@ -2,11 +2,13 @@
 // The material being tuned, saved into a woven scene file (docs/SCENE_FORMAT.md) and read back,
 // through core's paramsToJson and materialFromJson, with or beside its draft. Errors throw
 // std::runtime_error naming the file.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "draft_editor.h"
 #include "material_json.h"
+#include "scene_camera.h"
 #include "scene_description.h"
 
 namespace woven {
@@ -17,11 +19,21 @@ namespace woven {
 void saveMaterial(const std::string& path, const std::string& materialName, const WovenParams& params,
                   const std::string& gltf);
 
-// Every edit (target, parameters) into the woven scene file at `path`, with `camera` as its
-// "camera": a new file names `gltf` (relative to the file's folder where it can be), an existing
-// scene file keeps everything else it has; saved again, it is overwritten the same way.
-void saveScene(const std::string& path, const std::vector<std::pair<std::string, WovenParams>>& materials,
-               const std::string& gltf, const Camera& camera);
+// What the window's Save writes into a woven scene file: what a render of that file needs to be
+// the Render button's frame.
+struct SceneSave {
+    std::vector<std::pair<std::string, WovenParams>> materials;  // every edit: target, parameters
+    std::optional<CameraView> camera;  // the view, where it was moved from the scene's camera
+    RenderHints render;                // the Render button's settings
+    std::optional<glm::vec3> environmentColor;  // where the window changed it
+};
+
+// `save` into the woven scene file at `path`. An existing scene file keeps everything else it
+// has (saved again, it is overwritten the same way); a new one starts as the scene the window
+// opened (`scenePath`): a copy of that scene file, its relative paths rebased to `path`'s folder,
+// or a scene file naming that glTF. The procedural cloth (no `scenePath`) saves its one material
+// as a bare parameter object.
+void saveScene(const std::string& path, const std::string& scenePath, const SceneSave& save);
 
 // The glTF file a scene path stands for: itself, or the one a woven scene file (.json) names,
 // resolved against its folder; empty for none (the procedural cloth).

@@ -23,18 +23,16 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
     const std::string target = edits_->edits()[size_t(editIndex_)].target;
     const auto chosenHere = [&] { return chosenFabric_ && chosenFabric_->target == target ? &*chosenFabric_ : nullptr; };
     if (const std::string name = fabricMenu_->draw("fabric", chosenHere() ? chosenHere()->name : ""); !name.empty()) {
-        try {
+        attempt([&] {
             std::vector<std::string> warnings;
             ChosenFabric chosen = chooseFabric(target, name, scene(), edits_->meshesOf(target), warnings);
             p = chosen.params;
-            showFinal_ = false;  // the rendered frame is of the old cloth
+            materialEdited();
             showDraftOf(chosen.wif, warnings);
             chosenFabric_ = std::move(chosen);
             status_ = "fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")");
             for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     measuresLine_.clear();
     const std::optional<glm::dvec2>& scale = metresPerUvOf(target);
@@ -217,31 +215,22 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
 
     ui::InputText("scene file", materialPath_, sizeof materialPath_);
     const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-    if (ui::Button("Save materials")) {
-        // Every edit under its target, as a scene file's "materials" says it, and the view.
-        try {
-            std::vector<std::pair<std::string, WovenParams>> materials;
-            for (const WovenEdit& e : edits_->edits()) materials.emplace_back(e.target, e.params);
-            Camera view = camera_.camera();
-            saveScene(materialPath_, materials, scenePath_.empty() ? "" : sceneGltf(scenePath_), view);
-            status_ = std::string("saved ") + materialPath_;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
+    if (ui::Button("Save")) attempt([&] { saveSceneFile(); });
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Ctrl+S: every woven material, the view and the render settings into the scene file, which "
+                          "woven render renders as the Render button does");
     ImGui::SameLine();
     if (ui::Button("Load material")) {
-        try {
+        attempt([&] {
             std::vector<std::string> warnings;
             const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
             p = scaledToMeshes(read, scene(), edits_->meshesOf(target), warnings);
             if (chosenFabric_ && chosenFabric_->target == target) chosenFabric_.reset();
+            materialEdited();
             status_ = std::string("loaded ") + materialPath_;
             if (!read.wif.empty()) showDraftOf(read.wif, warnings);
             for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     drawDraftControls(p);
 }
@@ -250,11 +239,9 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     ImGui::Separator();
     ui::InputText("draft file", draftPath_, sizeof draftPath_);
     if (ui::Button("Open draft")) {
-        try {
+        attempt([&] {
             openDraft(draftPath_);
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     if (!draft_ || draftEdit_ != editIndex_) {
         ImGui::SameLine();
@@ -263,36 +250,31 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     }
     ImGui::SameLine();
     if (ui::Button("Save WIF")) {
-        try {
+        attempt([&] {
             draft_->save(draftPath_);
             status_ = std::string("saved ") + draftPath_;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     ImGui::SameLine();
     // "scale": "draft": the draft's threads per centimetre on this mesh.
     if (ui::Button("Real scale")) {
-        try {
+        attempt([&] {
             const std::string& target = edits_->edits()[size_t(editIndex_)].target;
             p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
                                              draftThreadsPerCm(draft_->draft(), draft_->name()));
             validate(p);
+            materialEdited();
             status_ = "repeat from the draft's spacing";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     if (ui::Button("Save material with draft")) {
-        try {
+        attempt([&] {
             const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
             const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
                                                           gltf ? scenePath_ : "", *draft_);
             copyToBuffer(draftPath_, wif);
             status_ = std::string("saved ") + materialPath_ + " and " + wif;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
 }
 
@@ -307,15 +289,13 @@ void PreviewWindow::drawDraftWindow() {
     ImGui::SetNextWindowPos(ImVec2(left, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(std::max(display.x - left - 8.0f, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
     ImGui::Begin("Draft");
-    try {
+    attempt([&] {
         if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
             *woven = draft_->material(*woven);
-            showFinal_ = false;  // the rendered frame is of the old cloth
+            materialEdited();
             applyEdits();
         }
-    } catch (const std::exception& e) {
-        status_ = e.what();
-    }
+    });
     ImGui::End();
 }
 
@@ -341,13 +321,12 @@ void PreviewWindow::drawSelection() {
     }
     const std::string& target = targets[size_t(targetChoice_)];
     if (ui::Button("Make woven")) {
-        try {
+        attempt([&] {
             editIndex_ = edits_->makeWoven(target);
+            materialEdited();
             applyEdits();
             status_ = "made " + target + " woven";
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     ImGui::SameLine();
     if (ui::Button("Revert")) {
@@ -356,6 +335,7 @@ void PreviewWindow::drawSelection() {
             editIndex_ = -1;
             for (size_t i = 0; i < edits_->edits().size(); ++i)
                 if (edits_->edits()[i].target == current) editIndex_ = int(i);
+            materialEdited();
             applyEdits();
             status_ = "reverted " + target;
         } else {

@@ -23,6 +23,8 @@ public:
     void zoom(float factor);               // distance *= factor
 
     Camera camera() const;
+    // Whether it was orbited, panned or zoomed since it started (else camera() is the scene's own).
+    bool moved() const { return !initial_; }
     const glm::vec3& pivot() const { return pivot_; }
     float distance() const { return distance_; }
 

@@ -117,11 +117,12 @@ void PreviewWindow::drawPanel() {
                 if (ui::Selectable(edits[i].target.c_str(), int(i) == editIndex_)) editIndex_ = int(i);
             ui::EndCombo();
         }
+        drawUndoButtons();
         if (WovenParams* p = editedParams()) {
             const size_t changesBefore = widgets_.valueChanges();
             drawMaterialControls(*p);
             // The rendered frame is of the old cloth: any edit goes back to the live preview.
-            if (widgets_.valueChanges() != changesBefore) showFinal_ = false;
+            if (widgets_.valueChanges() != changesBefore) materialEdited();
             applyEdits();
         }
         ImGui::PopID();

@@ -149,6 +149,10 @@ void PreviewWindow::openScene(const std::string& path) {
             break;
         }
     showFinal_ = false;
+    loadedEnvironment_ = scene().environment.color;
+    history_.clear();
+    committed_ = materialState();
+    editPending_ = false;
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
     render_ = frameSettings(scene(), options_.frame);
@@ -168,6 +172,7 @@ void PreviewWindow::openDraft(const std::string& path) {
     *p = editor.material(*p);
     draft_ = std::move(editor);
     draftEdit_ = editIndex_;
+    materialEdited();
     applyEdits();
     copyToBuffer(draftPath_, path);
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
@@ -185,14 +190,12 @@ WovenParams* PreviewWindow::editedParams() {
 // The scene's materials from the edits, after any change; the meshes go to the GPU again only
 // when a primitive's material index changed (a split, a revert).
 void PreviewWindow::applyEdits() {
-    try {
+    attempt([&] {
         if (edits_->apply()) {
             renderer_->setMeshes(scene());
             picker_.reset();
         }
-    } catch (const std::exception& e) {
-        status_ = e.what();
-    }
+    });
 }
 
 // A click: select the primitive under the cursor, as core's renderer sees the preview's view.
@@ -382,6 +385,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         material = {{"target", target},
                     {"fabric", chosen ? nlohmann::json(chosenFabric_->name) : nlohmann::json(nullptr)},
                     {"repeat", {p->repeat.x, p->repeat.y}},
+                    {"ex", p->ex},
                     {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
                     {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
                     {"tile_rows", p->tile.size()},
@@ -395,6 +399,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
         {"material", material},
+        {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
                     {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
         {"fit", {{"running", fit_.running()}, {"stage", fit_.progress().stage}, {"evaluations", fit_.progress().evaluations},
@@ -463,12 +468,10 @@ void PreviewWindow::run() {
         std::vector<std::string> dropped;
         dropped.swap(droppedPaths_);
         for (const std::string& path : dropped) {
-            try {
+            attempt([&] {
                 if (isDraftFile(path)) openDraft(path);
                 else openScene(path);
-            } catch (const std::exception& e) {
-                status_ = e.what();
-            }
+            });
         }
         // The job stores its last snapshot before it stops running: once it was seen stopped,
         // the snapshot taken next is its last.
@@ -484,10 +487,12 @@ void PreviewWindow::run() {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         releaseDeferredKeys();
+        handleShortcuts();
         widgets_.beginFrame();
         setCurrentWidgetMap(&widgets_);
         drawPanel();
         drawDraftWindow();
+        commitCompletedEdit();
         setCurrentWidgetMap(nullptr);
         widgets_.warnClashes();
         drawFinalImage();
@@ -506,15 +511,13 @@ void PreviewWindow::run() {
             PreviewOptions preview;
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
-            try {
+            attempt([&] {
                 // A focused text field is no interaction: the view stays sharp while typing.
                 interacting_ = steering_ || panelInteracting();
                 renderer_->render(scene(), lights_, camera, resolution_.frameSize({width, height}, interacting_, now),
                                   preview);
                 renderer_->display(0, {0, 0}, {width, height}, display_);
-            } catch (const std::exception& e) {
-                status_ = e.what();  // e.g. a shader variant that fails to compile
-            }
+            });
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, width, height);
         }

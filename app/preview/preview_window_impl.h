@@ -26,6 +26,7 @@
 #include "preview_renderer.h"
 #include "preview_window.h"
 #include "scene_picker.h"
+#include "undo_history.h"
 #include "widget_map.h"
 #include "woven_edits.h"
 
@@ -41,6 +42,15 @@ inline bool hasExtension(const std::string& path, const char* ext) {
     const size_t n = std::char_traits<char>::length(ext);
     return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
 }
+
+// What an undo restores: every edit, the edit the panel tunes, and the draft being edited.
+struct MaterialState {
+    std::vector<WovenEdit> edits;
+    int editIndex = -1;
+    std::optional<DraftEditor> draft;
+    int draftEdit = -1;
+    std::optional<ChosenFabric> chosenFabric;
+};
 
 class PreviewWindow {
 public:
@@ -68,6 +78,30 @@ private:
     void showDraftOf(const std::string& wif, std::vector<std::string>& warnings);
     void drawDraftWindow();
     void applyEdits();
+    // Any change of a material: the shown final frame is of the old cloth, and the change is
+    // one undo step once no control is held (commitCompletedEdit(), at the end of each frame).
+    void materialEdited();
+    void commitCompletedEdit();
+    MaterialState materialState() const;
+    void restore(MaterialState state);
+    void undo();
+    void redo();
+    // Ctrl+Z, Ctrl+Shift+Z (or Ctrl+Y), Ctrl+S: unless a text field takes the keys.
+    void handleShortcuts();
+    void drawUndoButtons();
+    // The scene file at the panel's path: every edit, the view and the Render button's settings.
+    void saveSceneFile();
+    // The Render button's camera: the one a scene file saved now renders through.
+    Camera renderCamera() const;
+    // Runs `step`; an exception it throws becomes the status line.
+    template <typename Step>
+    void attempt(Step&& step) {
+        try {
+            step();
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
     void drawLightControls();
     void drawRenderControls();
     void drawFitControls();
@@ -123,6 +157,11 @@ private:
     InteractiveResolution resolution_;
     std::string status_;
     char materialPath_[512] = "material.json";
+    glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
+
+    UndoHistory<MaterialState> history_;
+    MaterialState committed_;    // the state after the last completed edit
+    bool editPending_ = false;  // a material changed since
     char imagePath_[512] = "render.png";
     char exportPath_[512] = "scene.glb";
 

@@ -47,7 +47,7 @@ void PreviewWindow::drawRenderControls() {
     }
     if (ui::Button("Render")) {
         RenderSettings settings = render_;
-        settings.camera = camera_.camera();
+        settings.camera = renderCamera();
         final_.start(scene(), settings, options_.frame.denoise);
         finalImage_.reset();
         finalDone_ = false;
@@ -63,7 +63,7 @@ void PreviewWindow::drawRenderControls() {
         SceneDescription shown = scene();
         shown.camera = camera_.camera();
         shown.hasCamera = true;
-        try {
+        attempt([&] {
             // By the path: a folder (ending in /) the share page, the edited cloth as a U3M, else
             // the scene as glTF.
             const std::string path = exportPath_;
@@ -85,9 +85,7 @@ void PreviewWindow::drawRenderControls() {
                 for (const std::string& w : warnings) std::cerr << "warning: " << path << ": " << w << "\n";
                 status_ = "exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
             }
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
@@ -108,12 +106,10 @@ void PreviewWindow::drawRenderControls() {
         std::string path = imagePath_;
         const size_t dot = path.find_last_of('.');
         path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
-        try {
+        attempt([&] {
             writeFrame(path, finalImage_->exr(), display_);
             status_ = "saved " + path;
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
+        });
     }
 }
 

@@ -37,6 +37,8 @@ public:
     bool revert(const std::string& target);
 
     const std::vector<WovenEdit>& edits() const { return edits_; }
+    // Every edit at once (an undo), then apply().
+    void restore(std::vector<WovenEdit> edits) { edits_ = std::move(edits); }
     // The panel's sliders: change the parameters, then apply().
     WovenParams& params(int edit) { return edits_.at(size_t(edit)).params; }
     // Rebuilds the scene's materials from the loaded ones and the edits; returns whether any

@@ -168,6 +168,7 @@ RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     if (scene.render.width > 0) settings.width = scene.render.width;
     if (scene.render.height > 0) settings.height = scene.render.height;
     if (scene.render.spp > 0) settings.spp = scene.render.spp;
+    if (scene.render.noiseThreshold) settings.noiseThreshold = *scene.render.noiseThreshold;
     if (!scene.render.integrator.empty()) {
         if (!findIntegrator(scene.render.integrator))
             throw SceneError(scene.source + ": render.integrator: must be " + integratorChoices("\"") + ", not \"" +

@@ -33,6 +33,19 @@ Camera lookAt(const glm::vec3& position, const glm::vec3& target, const glm::vec
     return camera;
 }
 
+CameraView viewOf(const Camera& camera) {
+    CameraView view;
+    view.position = glm::vec3(camera.cameraToWorld[3]);
+    view.target = view.position - glm::vec3(camera.cameraToWorld[2]);
+    view.up = glm::vec3(camera.cameraToWorld[1]);
+    view.yfovDegrees = glm::degrees(camera.yfov);
+    return view;
+}
+
+Camera cameraOf(const CameraView& view) {
+    return lookAt(view.position, view.target, view.up, glm::radians(view.yfovDegrees));
+}
+
 Camera framingCamera(const SceneBox& box, float yfov) {
     constexpr float kPitch = -0.5f;  // radians: looking slightly down
     const float distance = std::max(box.radius(), 1e-3f) / std::sin(0.5f * yfov) * 1.05f;

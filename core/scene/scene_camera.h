@@ -21,6 +21,16 @@ SceneBox sceneBounds(const SceneDescription& scene);
 // parallel to the view direction). The glTF convention: it looks down its -z axis.
 Camera lookAt(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float yfov);
 
+// A camera as a woven scene file's "camera" says it. viewOf() is a camera's view (the target one
+// unit ahead); cameraOf() is what the scene file's reader makes of a view, so a camera passed
+// through both is, bit for bit, the one a scene file saved with that view renders through.
+struct CameraView {
+    glm::vec3 position{0.0f}, target{0.0f, 0.0f, -1.0f}, up{0.0f, 1.0f, 0.0f};
+    float yfovDegrees = 39.6f;
+};
+CameraView viewOf(const Camera& camera);
+Camera cameraOf(const CameraView& view);
+
 // Looks at the whole box from the front (-z), slightly above, the bounding sphere filling the
 // vertical field of view with a little margin.
 Camera framingCamera(const SceneBox& box, float yfov);

@@ -223,6 +223,7 @@ struct RenderHints {
     int spp = 0;
     std::string integrator;  // a name in integrators.h's table, checked where a render takes it
     std::string sampler;     // a name in sampler.h's kSamplerNames, checked where a render takes it
+    std::optional<double> noiseThreshold;  // 0 to 1
 };
 
 // A shot's photograph (docs/FIT.md): the scene file's "photo" key, which `woven fit` compares

@@ -225,19 +225,19 @@ private:
         if (!(glm::length(glm::dvec3(up)) > 0.0)) fail("camera.up", "must not be zero");
         if (!(glm::length(glm::cross(glm::normalize(glm::dvec3(up)), glm::normalize(back))) > 1e-6))
             fail("camera.up", "must not be parallel to the view direction");
-        float yfov = scene.camera.yfov;
         if (cam.contains("yfov_degrees")) {
             const float degrees = number(cam["yfov_degrees"], "camera.yfov_degrees");
             if (!(degrees > 0.0f && degrees < 180.0f)) fail("camera.yfov_degrees", "must be between 0 and 180");
-            yfov = glm::radians(degrees);
+            scene.camera = cameraOf({position, target, up, degrees});  // as the previewer saves it
+        } else {
+            scene.camera = lookAt(position, target, up, scene.camera.yfov);  // the glTF camera's field of view
         }
-        scene.camera = lookAt(position, target, up, yfov);
         scene.camera.aspect = 0.0f;  // the image decides
         scene.hasCamera = true;
     }
 
     void readRender(const json& render, RenderHints& hints) const {
-        requireKeys(render, "render", {"width", "height", "spp", "integrator", "sampler"});
+        requireKeys(render, "render", {"width", "height", "spp", "integrator", "sampler", "noise_threshold"});
         if (render.contains("width")) hints.width = positiveInt(render["width"], "render.width", 16384);
         if (render.contains("height")) hints.height = positiveInt(render["height"], "render.height", 16384);
         if (render.contains("spp")) hints.spp = positiveInt(render["spp"], "render.spp", 1 << 20);
@@ -246,6 +246,13 @@ private:
         if (render.contains("integrator")) hints.integrator = string(render["integrator"], "render.integrator");
         // "sobol" (the default) or "independent", as --sampler; checked as the integrator is.
         if (render.contains("sampler")) hints.sampler = string(render["sampler"], "render.sampler");
+        // As --noise-threshold, in double: the previewer saves its Render button's value exactly.
+        if (render.contains("noise_threshold")) {
+            const json& v = render["noise_threshold"];
+            if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1.0))
+                fail("render.noise_threshold", "must be a number from 0 to 1");
+            hints.noiseThreshold = v.get<double>();
+        }
     }
 
     // A shot's photograph, for `woven fit` (docs/FIT.md):

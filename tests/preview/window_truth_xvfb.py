@@ -6,7 +6,9 @@ drives it (issue: "what you tune is what you get"):
 - a weave chosen in the panel replaces the draft's weave (the draft view closes and the status
   line says so; that the Render button's frame follows is held by test_draft's layering test,
   through the same materialFromJson());
-- a slider moved after a render hides the stale final frame.
+- a slider moved after a render hides the stale final frame;
+- Ctrl+Z and Ctrl+Shift+Z undo and redo a material edit;
+- Save, twice, writes a scene file that `woven render` renders bit for bit as the Render button.
 
 Usage: window_truth_xvfb.py WOVEN_BINARY ASSETS_DIR
 """
@@ -63,9 +65,14 @@ def render_and_save(window, tmp, name):
     scroll_to(window, 'Render', 'button')
     window.click('Render', 'button')
     window.wait('the final frame', lambda m: m['state']['final']['done'] and m['state']['final']['shown'], 180)
+    scroll_to(window, 'image file', 'input')
+    window.click('image file', 'input')
+    window.key('ctrl+a')
+    path = os.path.join(tmp, name)
+    window.type(path)
+    window.key('Return')
     scroll_to(window, 'Save PNG', 'button')
     window.click('Save PNG', 'button')
-    path = os.path.join(tmp, name)
     window.wait(f'"saved {name}"', lambda m: m['state']['status'] == f'saved {path}', 30)
     return png_pixels(path)[2]
 
@@ -132,12 +139,24 @@ def main(woven, assets):
         check('replaces the draft' in m['state']['status'], f'status "{m["state"]["status"]}"')
         print('sateen chosen over the denim draft: the draft replaced, and said so')
 
-        # Save, twice: a woven scene file beside the scene, naming its glTF, with the view and the
-        # sateen, that `woven render` renders.
+        # Undo and redo (Ctrl+Z, Ctrl+Shift+Z): the draft's weave, and its view, come back; then the sateen.
+        window.key('ctrl+z')
+        m = window.wait('the draft back', lambda m: m['state']['material']['tile_rows'] > 0, 30)
+        check(m['state']['material']['draft_open'] and m['state']['history']['redo'],
+              f'undo did not bring the draft back: {m["state"]["material"]}, {m["state"]["history"]}')
+        window.key('ctrl+shift+z')
+        m = window.wait('the sateen again', lambda m: m['state']['material']['pattern'] == [1, 4, 2] and
+                        m['state']['material']['tile_rows'] == 0, 30)
+        print('Ctrl+Z brought the draft back, Ctrl+Shift+Z the sateen')
+
+        # The Render button's frame of the sateen, then Save, twice: a woven scene file beside the
+        # scene, naming its glTF, with the sateen and the Render button's settings, that `woven
+        # render` renders bit for bit as the button did.
+        button = render_and_save(window, tmp, 'sateen-render.png')
         saved = os.path.join(tmp, 'denim-tuned.json')
         for time_ in ('first', 'second'):
-            scroll_to(window, 'Save materials', 'button')
-            window.click('Save materials', 'button')
+            scroll_to(window, 'Save', 'button')
+            window.click('Save', 'button')
             window.wait(f'the {time_} save', lambda m: m['state']['status'] == f'saved {saved}', 30)
             with open(saved) as f:
                 written = json.load(f)
@@ -145,13 +164,15 @@ def main(woven, assets):
                   f'{saved} names a glTF that is not there: {written["gltf"]}')
             check(written['materials']['Cloth']['pattern'] == [1, 4, 2] and 'tile' not in written['materials']['Cloth'],
                   f'{saved} does not hold the sateen: {written["materials"]["Cloth"]}')
-            check('camera' in written, f'{saved} has no camera')
+            check(written['render']['spp'] == 2 and written['render']['integrator'] == 'path',
+                  f'{saved} does not hold the Render button\'s settings: {written["render"]}')
             window.frames()
-        result = subprocess.run([woven, 'render', saved, '--width', '32', '--height', '24', '--spp', '1', '-o',
-                                 os.path.join(tmp, 'saved.png')], capture_output=True, text=True, timeout=120)
+        result = subprocess.run([woven, 'render', saved, '-o', os.path.join(tmp, 'saved.png')],
+                                capture_output=True, text=True, timeout=300)
         check(result.returncode == 0, f'woven render {saved} failed: {result.stderr}')
-        print(f'saved twice to {os.path.basename(saved)}, which woven render renders')
-
+        rendered = png_pixels(os.path.join(tmp, 'saved.png'))[2]
+        check(rendered == button, f'woven render {os.path.basename(saved)} differs from the Render button\'s frame')
+        print(f'saved twice to {os.path.basename(saved)}, which woven render renders as the Render button did')
 
 if __name__ == '__main__':
     run(main, sys.argv[1], sys.argv[2])

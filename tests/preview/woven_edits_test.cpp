@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <filesystem>
+#include <fstream>
 
 #include "../scene/gltf_builder.h"
 #include "../scene/temp_dir.h"
 #include "material_file.h"
 #include "orbit_camera.h"
 #include "render_job.h"
+#include "scene_camera.h"
 #include "scene_loader.h"
 #include "scene_picker.h"
 #include "woven_assignment.h"
@@ -160,6 +163,47 @@ TEST(WovenEdits, WhatTheWindowSavesRendersAsTheWindowsScene) {
     double sum = 0.0;
     for (const glm::vec3& p : a.radiance.pixels) sum += p.g;
     EXPECT_GT(sum, 0.0);
+}
+
+// Save from the window: a scene file copied from the one opened (its paths rebased to the new
+// folder), with a moved view and the Render button's settings, renders as the Render button does:
+// through renderCamera()'s cameraOf(viewOf()), at the saved noise threshold, bit for bit.
+TEST(WovenEdits, ASavedSceneFileRendersAsTheRenderButton) {
+    ThreeQuads q;
+    const std::string opened = q.dir.file("opened.json");
+    {
+        std::ofstream out(opened);
+        out << json{{"gltf", "quads.gltf"}, {"environment", {{"color", {0.5, 0.5, 0.5}}}}}.dump();
+    }
+    WovenEdits edits(loadScene(opened));
+    edits.params(edits.makeWoven("node:Group")).pattern = {1, 3, 1};
+    edits.apply();
+
+    Camera moved = lookAt({0.3f, 0.2f, 2.1f}, {0.05f, -0.1f, 0.0f}, {0.1f, 1.0f, 0.0f}, 0.7f);
+    SceneSave save;
+    for (const WovenEdit& e : edits.edits()) save.materials.emplace_back(e.target, e.params);
+    save.camera = viewOf(moved);
+    save.render.noiseThreshold = 0.037;
+    save.render.spp = 3;
+    std::filesystem::create_directories(q.dir.file("elsewhere"));
+    const std::string saved = q.dir.file("elsewhere/tuned.json");
+    saveScene(saved, opened, save);
+    saveScene(saved, opened, save);  // again: overwritten the same way
+
+    SceneDescription reloaded = loadScene(saved);
+    EXPECT_EQ(reloaded.environment.color, glm::vec3(0.5f)) << "the opened scene file's keys were not kept";
+    ASSERT_TRUE(reloaded.render.noiseThreshold);
+    EXPECT_EQ(*reloaded.render.noiseThreshold, 0.037);
+    EXPECT_EQ(defaultRenderSettings(reloaded).spp, 3);
+    const Camera button = cameraOf(viewOf(moved));
+    EXPECT_TRUE(reloaded.camera.cameraToWorld == button.cameraToWorld && reloaded.camera.yfov == button.yfov)
+        << "the saved view is not the Render button's camera";
+
+    SceneDescription window = edits.scene();
+    window.camera = button;
+    window.hasCamera = true;
+    const FilmImage a = render(window), b = render(reloaded);
+    EXPECT_TRUE(a.radiance.pixels == b.radiance.pixels) << "the saved scene renders differently from the window's";
 }
 
 }  // namespace

@@ -1,0 +1,96 @@
+// The window's undo and redo of material edits, its keyboard shortcuts, and Save: the edits as a
+// woven scene file that `woven render` renders as the Render button does.
+#include <imgui.h>
+
+#include "material_file.h"
+#include "preview_window_impl.h"
+#include "sampler.h"
+
+namespace woven {
+
+void PreviewWindow::materialEdited() {
+    showFinal_ = false;  // the rendered frame is of the old cloth
+    editPending_ = true;
+}
+
+// A drag is one step, not one a frame: the step is taken once the control is let go.
+void PreviewWindow::commitCompletedEdit() {
+    if (!editPending_ || ImGui::IsAnyItemActive()) return;
+    history_.commit(std::move(committed_));
+    committed_ = materialState();
+    editPending_ = false;
+}
+
+MaterialState PreviewWindow::materialState() const {
+    return {edits_->edits(), editIndex_, draft_, draftEdit_, chosenFabric_};
+}
+
+void PreviewWindow::restore(MaterialState state) {
+    edits_->restore(std::move(state.edits));
+    editIndex_ = state.editIndex;
+    draft_ = std::move(state.draft);
+    draftEdit_ = state.draftEdit;
+    chosenFabric_ = std::move(state.chosenFabric);
+    if (draft_) copyToBuffer(draftPath_, draft_->name());
+    showFinal_ = false;
+    applyEdits();
+}
+
+void PreviewWindow::undo() {
+    commitCompletedEdit();
+    if (std::optional<MaterialState> before = history_.undo(materialState())) {
+        restore(*before);
+        committed_ = std::move(*before);
+        status_ = "undone";
+    } else {
+        status_ = "nothing to undo";
+    }
+}
+
+void PreviewWindow::redo() {
+    if (std::optional<MaterialState> after = history_.redo(materialState())) {
+        restore(*after);
+        committed_ = std::move(*after);
+        status_ = "redone";
+    } else {
+        status_ = "nothing to redo";
+    }
+}
+
+void PreviewWindow::handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.KeyCtrl || io.WantTextInput) return;  // a text field has its own undo
+    if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? redo() : undo();
+    else if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
+    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) attempt([&] { saveSceneFile(); });
+}
+
+void PreviewWindow::drawUndoButtons() {
+    ImGui::BeginDisabled(!history_.canUndo() && !editPending_);
+    if (ui::Button("Undo")) undo();
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Z: the last material edit");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!history_.canRedo());
+    if (ui::Button("Redo")) redo();
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
+}
+
+void PreviewWindow::saveSceneFile() {
+    SceneSave save;
+    for (const WovenEdit& e : edits_->edits()) save.materials.emplace_back(e.target, e.params);
+    if (camera_.moved()) save.camera = viewOf(camera_.camera());
+    save.render = {render_.width, render_.height, render_.spp, render_.integrator, samplerName(render_.sampler),
+                   render_.noiseThreshold};
+    if (scene().environment.color != loadedEnvironment_) save.environmentColor = scene().environment.color;
+    saveScene(materialPath_, scenePath_, save);
+    status_ = std::string("saved ") + materialPath_;
+}
+
+// Unmoved, the scene's own camera, which the saved file keeps; moved, the view the file is given.
+Camera PreviewWindow::renderCamera() const {
+    return camera_.moved() ? cameraOf(viewOf(camera_.camera())) : camera_.camera();
+}
+
+}  // namespace woven
