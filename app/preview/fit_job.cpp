@@ -1,5 +1,7 @@
 #include "fit_job.h"
 
+#include <cmath>
+
 #include "exposure_fold.h"
 #include "fit_output.h"
 #include "shot.h"
@@ -26,7 +28,8 @@ void FitJob::start(const std::vector<std::string>& shotPaths, const std::string&
         fitted.fit = fitFabric(shots, options, cancel, [&](const FitProgress& p) {
             std::lock_guard<std::mutex> lock(mutex_);
             progress_ = p;
-            history_.push_back(float(p.bestLoss));
+            // Before the first finished render the best loss is no number to plot.
+            if (std::isfinite(float(p.bestLoss)) && p.bestLoss > 0.0) history_.push_back(float(p.bestLoss));
         });
         // The edited material renders as the photos look under the shots' own light.
         const ExposureFold fold = foldFittedExposure(shots, fitted.fit);

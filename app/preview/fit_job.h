@@ -32,7 +32,7 @@ public:
 
     bool running() const { return task_.running(); }
     FitProgress progress() const;
-    std::vector<float> lossHistory() const;  // the best loss after each render
+    std::vector<float> lossHistory() const;  // the best loss after each render (finite, positive)
     // The finished (or cancelled) fit, once; nullopt while it runs, after a failure, or when taken.
     std::optional<FittedFabric> takeResult();
     std::string error() const;  // why the last fit failed, empty if it did not

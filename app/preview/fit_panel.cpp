@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -23,6 +24,18 @@ std::vector<std::string> splitPaths(const std::string& text) {
     std::vector<std::string> paths;
     for (std::string path; in >> path;) paths.push_back(path);
     return paths;
+}
+
+// The best loss after each render, on a log scale: the first renders' loss is orders of magnitude
+// above the last ones', which a linear plot flattens onto its floor.
+void drawLossPlot(const std::vector<float>& history) {
+    if (history.empty()) return;
+    std::vector<float> logLoss;
+    for (float loss : history) logLoss.push_back(std::log10(loss));
+    if (logLoss.size() == 1) logLoss.push_back(logLoss.front());  // a line needs two points
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "best loss %.4g (log scale)", std::pow(10.0, double(logLoss.back())));
+    ImGui::PlotLines("##loss", logLoss.data(), int(logLoss.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(-1.0f, 60.0f));
 }
 
 }  // namespace
@@ -53,8 +66,7 @@ void PreviewWindow::drawFitControls() {
         std::snprintf(text, sizeof text, "%s, %d renders, loss %.4g", p.stage.c_str(), p.evaluations, p.bestLoss);
         ImGui::ProgressBar(p.budget > 0.0 ? float(std::min(1.0, p.elapsed / p.budget)) : 0.0f, ImVec2(-1.0f, 0.0f), text);
     }
-    if (const std::vector<float> losses = fit_.lossHistory(); !losses.empty())
-        ImGui::PlotLines("##loss", losses.data(), int(losses.size()), 0, "best loss", 0.0f, FLT_MAX, ImVec2(-1.0f, 60.0f));
+    drawLossPlot(fit_.lossHistory());
     if (!fit_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", fit_.error().c_str());
 }
 
@@ -96,7 +108,7 @@ void PreviewWindow::applyFinishedFit() {
       << fitted->fit.evaluations << " renders" << (fitted->fit.complete ? "" : " (the best so far)") << ", applied to "
       << fitTarget_;
     status_ = s.str();
-    for (const std::string& w : fitted->fit.warnings) std::cerr << "warning: fit: " << w << "\n";
+    for (const std::string& w : fitted->fit.warnings) warn("fit: " + w);
     fitTarget_.clear();
 }
 

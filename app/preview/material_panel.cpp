@@ -31,7 +31,7 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
             showDraftOf(chosen.wif, warnings);
             chosenFabric_ = std::move(chosen);
             status_ = "fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")");
-            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+            for (const std::string& w : warnings) warn(w);
         });
     }
     measuresLine_.clear();
@@ -229,7 +229,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             materialEdited();
             status_ = std::string("loaded ") + materialPath_;
             if (!read.wif.empty()) showDraftOf(read.wif, warnings);
-            for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+            for (const std::string& w : warnings) warn(w);
         });
     }
     drawDraftControls(p);

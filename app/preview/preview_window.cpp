@@ -121,6 +121,7 @@ void PreviewWindow::openScene(const std::string& path) {
     if (path != options_.scene) sceneOptions.woven.clear();
     applySceneOptions(loaded, sceneOptions);
     final_.cancel();
+    messages_ = loaded.warnings;  // printed on stderr as the scene was read
     edits_.emplace(std::move(loaded));
     scenePath_ = path;
     copyToBuffer(materialPath_, besideScene(path, "-tuned.json", "material.json"));
@@ -175,7 +176,7 @@ void PreviewWindow::openDraft(const std::string& path) {
     materialEdited();
     applyEdits();
     copyToBuffer(draftPath_, path);
-    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : warnings) warn(w);
     status_ = "opened " + path;
     if (!warnings.empty())
         status_ += " (" + std::to_string(warnings.size()) + " warning" + (warnings.size() > 1 ? "s" : "") + ": " +
@@ -396,6 +397,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"frame", frame_},
         {"window", {{"pos", {x, y}}, {"size", {width, height}}}},
         {"status", status_},
+        {"messages", messages_},
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
         {"material", material},
@@ -403,7 +405,8 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
                     {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
         {"fit", {{"running", fit_.running()}, {"stage", fit_.progress().stage}, {"evaluations", fit_.progress().evaluations},
-                 {"error", fit_.error()}, {"applied", fitApplied_}}},
+                 {"error", fit_.error()}, {"applied", fitApplied_},
+                 {"loss_points", fit_.lossHistory().size()}}},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
                    {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image},
                    {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},

@@ -93,6 +93,9 @@ private:
     void saveSceneFile();
     // The Render button's camera: the one a scene file saved now renders through.
     Camera renderCamera() const;
+    // A warning: on stderr as the commands print it, and in the panel's Messages.
+    void warn(const std::string& line);
+    void drawMessages();
     // Runs `step`; an exception it throws becomes the status line.
     template <typename Step>
     void attempt(Step&& step) {
@@ -156,6 +159,7 @@ private:
     bool steering_ = false;                // the camera is being dragged or zoomed
     InteractiveResolution resolution_;
     std::string status_;
+    std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
     char materialPath_[512] = "material.json";
     glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
 

@@ -69,7 +69,7 @@ void PreviewWindow::drawRenderControls() {
             const std::string path = exportPath_;
             if (!path.empty() && path.back() == '/') {
                 const std::vector<std::string> warnings = writeSharePage(shown, path, ShareOptions{});
-                for (const std::string& w : warnings) std::cerr << "warning: " << path << ": " << w << "\n";
+                for (const std::string& w : warnings) warn(path + ": " + w);
                 status_ = "wrote the page " + path + "index.html";
             } else if (hasExtension(path, ".u3ma") || hasExtension(path, ".u3m")) {
                 U3mOptions options;
@@ -78,12 +78,12 @@ void PreviewWindow::drawRenderControls() {
                     if (m >= 0) options.material = shown.materials[size_t(m)].name;
                 }
                 const U3mExport u3m = exportU3m(shown, path, options);
-                for (const std::string& n : u3m.notes) std::cerr << "note: " << path << ": " << n << "\n";
+                for (const std::string& n : u3m.notes) warn(path + ": " + n);
                 status_ = "exported " + u3m.material + " to " + path;
             } else {
                 const std::vector<std::string> warnings = exportScene(shown, path, ExportOptions{});
-                for (const std::string& w : warnings) std::cerr << "warning: " << path << ": " << w << "\n";
-                status_ = "exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings on stderr)");
+                for (const std::string& w : warnings) warn(path + ": " + w);
+                status_ = "exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings: see Messages)");
             }
         });
     }

@@ -58,6 +58,7 @@ def fit_in_window(window, rig):
     m = window.wait('the fit applied', lambda m: m['state']['fit']['applied'], 120)
     state = m['state']
     check(not state['fit']['error'], f'the fit failed: {state["fit"]["error"]}')
+    check(state['fit']['loss_points'] >= 2, f'the loss plot has {state["fit"]["loss_points"]} points to draw')
     repeat = state['material']['repeat']
     # One UV unit of the rig's swatch is a metre: threads per cm x 100.
     expected = [100 * n for n in rig['threads_per_cm']]

@@ -8,7 +8,8 @@ drives it (issue: "what you tune is what you get"):
   through the same materialFromJson());
 - a slider moved after a render hides the stale final frame;
 - Ctrl+Z and Ctrl+Shift+Z undo and redo a material edit;
-- Save, twice, writes a scene file that `woven render` renders bit for bit as the Render button.
+- Save, twice, writes a scene file that `woven render` renders bit for bit as the Render button;
+- Export's warnings are listed in the window's Messages.
 
 Usage: window_truth_xvfb.py WOVEN_BINARY ASSETS_DIR
 """
@@ -173,6 +174,20 @@ def main(woven, assets):
         rendered = png_pixels(os.path.join(tmp, 'saved.png'))[2]
         check(rendered == button, f'woven render {os.path.basename(saved)} differs from the Render button\'s frame')
         print(f'saved twice to {os.path.basename(saved)}, which woven render renders as the Render button did')
+
+        # Export: what the command line would warn of is in the window's Messages, not only on stderr.
+        exported = os.path.join(tmp, 'sateen.glb')
+        scroll_to(window, '##export file', 'input')
+        window.click('##export file', 'input')
+        window.key('ctrl+a')
+        window.type(exported)
+        window.key('Return')
+        window.click('Export', 'button')
+        m = window.wait('the export', lambda m: m['state']['status'].startswith(f'exported {exported}'), 120)
+        check('see Messages' in m['state']['status'] and any(exported in line for line in m['state']['messages']),
+              f'the export\'s warnings are not in the window: status "{m["state"]["status"]}", {m["state"]["messages"]}')
+        check(any(i['label'].startswith('Messages (') for i in m['items']), 'no Messages header in the panel')
+        print(f'exported with {len(m["state"]["messages"])} warnings shown under Messages')
 
 if __name__ == '__main__':
     run(main, sys.argv[1], sys.argv[2])
