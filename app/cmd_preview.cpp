@@ -85,7 +85,7 @@ void runHeadless(const PreviewCommandOptions& o) {
     // The size the Render button's frame would have, so both frame the scene alike.
     const RenderSettings settings = frameSettings(scene, o.frame);
     const glm::ivec2 size(settings.width, settings.height);
-    renderer.render(scene, PreviewLights::fromScene(scene), camera, size, options);
+    renderer.renderRefined(scene, PreviewLights::fromScene(scene), camera, size, options);  // as a resting window shows it
     writeFrame(o.screenshot, {renderer.radiance(), {}}, o.frame.display);
 }
 

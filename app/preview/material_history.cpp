@@ -11,6 +11,7 @@ namespace woven {
 void PreviewWindow::materialEdited() {
     showFinal_ = false;  // the rendered frame is of the old cloth
     editPending_ = true;
+    ++sceneGeneration_;
 }
 
 // A drag is one step, not one a frame: the step is taken once the control is let go.
@@ -33,6 +34,7 @@ void PreviewWindow::restore(MaterialState state) {
     chosenFabric_ = std::move(state.chosenFabric);
     if (draft_) copyToBuffer(draftPath_, draft_->name());
     showFinal_ = false;
+    ++sceneGeneration_;
     applyEdits();
 }
 

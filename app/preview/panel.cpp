@@ -52,7 +52,10 @@ void PreviewWindow::drawLightControls() {
     }
     changed |= ui::ColorEdit3("environment", &scene().environment.color.x,
                               ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    if (changed) lights_ = PreviewLights::fromScene(scene());
+    if (changed) {
+        lights_ = PreviewLights::fromScene(scene());
+        ++sceneGeneration_;
+    }
 }
 
 void PreviewWindow::drawPanel() {

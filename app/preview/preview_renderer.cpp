@@ -60,6 +60,8 @@ PreviewRenderer::PreviewRenderer() {
                                                       std::vector<std::string>{"display.frag"});
     environmentProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
                                                           std::vector<std::string>{"environment.frag"});
+    accumulateProgram_ = std::make_unique<ShaderProgram>(std::vector<std::string>{"fullscreen.vert"},
+                                                         std::vector<std::string>{"accumulate.frag"});
     glGenVertexArrays(1, &emptyVao_);
     shadows_ = std::make_unique<ShadowMaps>();
     // Core's sheen albedo table, texel centres at its grid points so bilinear filtering matches.
@@ -77,6 +79,8 @@ PreviewRenderer::PreviewRenderer() {
 PreviewRenderer::~PreviewRenderer() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteTextures(1, &colour_);
+    glDeleteFramebuffers(1, &meanFramebuffer_);
+    glDeleteTextures(1, &mean_);
     glDeleteRenderbuffers(1, &depth_);
     glDeleteVertexArrays(1, &emptyVao_);
     glDeleteTextures(1, &sheenAlbedoTable_);
@@ -182,7 +186,17 @@ void PreviewRenderer::ensureTarget(glm::ivec2 size) {
         glGenFramebuffers(1, &framebuffer_);
         glGenTextures(1, &colour_);
         glGenRenderbuffers(1, &depth_);
+        glGenFramebuffers(1, &meanFramebuffer_);
+        glGenTextures(1, &mean_);
     }
+    glBindTexture(GL_TEXTURE_2D, mean_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, meanFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, mean_, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw GlError("the preview's float framebuffer is incomplete on this OpenGL implementation");
     glBindTexture(GL_TEXTURE_2D, colour_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -224,8 +238,11 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     const float zFar = distance + radius * 1.01f;
     const float zNear = std::max(distance - radius * 1.01f, zFar * 1e-4f);
     const float aspect = camera.aspect > 0.0f ? camera.aspect : float(size.x) / float(size.y);
-    const glm::mat4 viewProjection =
-        glm::perspective(camera.yfov, aspect, zNear, zFar) * glm::inverse(camera.cameraToWorld);
+    // The refinement's sample point within each pixel: the image shifted by the opposite offset.
+    const glm::vec2 shift = -2.0f * options.pixelOffset / glm::vec2(size);
+    const glm::mat4 viewProjection = glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0f)) *
+                                     glm::perspective(camera.yfov, aspect, zNear, zFar) *
+                                     glm::inverse(camera.cameraToWorld);
 
     const Material fallback;
     for (const auto& mesh : meshes_) {
@@ -235,7 +252,37 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
                  options, shadows);
     }
     glDisable(GL_CULL_FACE);
+    accumulate(options.refinement);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PreviewRenderer::renderRefined(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
+                                    glm::ivec2 size, PreviewOptions options) {
+    for (int frame = 0; frame < kRefinementFrames; ++frame) {
+        options.refinement = frame;
+        options.pixelOffset = refinementOffset(frame);
+        render(scene, lights, camera, size, options);
+    }
+}
+
+void PreviewRenderer::accumulate(int refinement) {
+    glBindFramebuffer(GL_FRAMEBUFFER, meanFramebuffer_);
+    glViewport(0, 0, size_.x, size_.y);
+    glDisable(GL_DEPTH_TEST);
+    // Frame 0 replaces the mean, whatever it held (a texture's first contents are undefined).
+    if (refinement > 0) {
+        glEnable(GL_BLEND);
+        glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / float(refinement + 1));
+        glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    }
+    glUseProgram(accumulateProgram_->id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, colour_);
+    glUniform1i(accumulateProgram_->uniform("frame"), 0);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
 }
 
 void PreviewRenderer::drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size) {
@@ -302,7 +349,7 @@ void PreviewRenderer::display(GLuint framebuffer, glm::ivec2 origin, glm::ivec2 
     glDisable(GL_BLEND);
     glUseProgram(displayProgram_->id());
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, colour_);
+    glBindTexture(GL_TEXTURE_2D, mean_);
     glUniform1i(displayProgram_->uniform("radianceImage"), 0);
     glUniform1f(displayProgram_->uniform("exposureScale"), std::exp2(transform.exposure));
     glUniform1i(displayProgram_->uniform("toneMap"), int(transform.toneMap));
@@ -318,7 +365,7 @@ Image PreviewRenderer::radiance() const {
     image.width = size_.x;
     image.height = size_.y;
     std::vector<glm::vec4> rgba(size_t(size_.x) * size_.y);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, meanFramebuffer_);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rgba.data());

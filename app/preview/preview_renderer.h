@@ -14,6 +14,7 @@
 #include "preview_lights.h"
 #include "shadow_maps.h"
 #include "shader_program.h"
+#include "view_refinement.h"
 #include "woven_gl_material.h"
 
 namespace woven {
@@ -21,6 +22,10 @@ namespace woven {
 struct PreviewOptions {
     bool filterWeave = true;   // fade to the element-averaged reflectance where the weave is finer than a pixel
     bool shadows = true;       // occlude the strongest lights (ShadowMaps)
+    // Progressive refinement (view_refinement.h): this frame is the running mean's frame number
+    // `refinement`, sampling each pixel `pixelOffset` pixels from its centre. 0: a frame of its own.
+    int refinement = 0;
+    glm::vec2 pixelOffset{0.0f};
 };
 
 class PreviewRenderer {
@@ -34,14 +39,19 @@ public:
     // environment's colour and rotation are read at every render()).
     void setMeshes(const SceneDescription& scene);
 
-    // Renders the radiance image of `camera` at `size` into the internal target.
+    // Renders the radiance image of `camera` at `size` into the internal target (into the running
+    // mean of the frames before it, for options.refinement > 0).
     void render(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera, glm::ivec2 size,
                 const PreviewOptions& options);
+    // render() of every frame of the progressive refinement (view_refinement.h): the view a
+    // resting window settles to.
+    void renderRefined(const SceneDescription& scene, const PreviewLights& lights, const Camera& camera,
+                       glm::ivec2 size, PreviewOptions options);
     // Draws the last radiance image into `framebuffer`, filling the `size` pixels from `origin`,
     // through `transform` (as core's displayColor()). At the size it was rendered, pixel for
     // pixel; at another (a frame rendered smaller while interacting), scaled bilinearly.
     void display(GLuint framebuffer, glm::ivec2 origin, glm::ivec2 size, const DisplayTransform& transform);
-    // The last radiance image, row 0 at the top.
+    // The last radiance image (the running mean), row 0 at the top.
     Image radiance() const;
 
     // The program a material is drawn with (compiled on first use, then cached).
@@ -65,13 +75,16 @@ private:
     std::map<int, std::unique_ptr<WeaveTextures>> weaves_;    // by material index
     GpuTextures textures_;                                    // SceneDescription::textures
     GLuint sheenAlbedoTable_ = 0;
-    std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_;
+    std::unique_ptr<ShaderProgram> displayProgram_, environmentProgram_, accumulateProgram_;
     GLuint environmentTexture_ = 0;  // 0: a constant environment, drawn by the clear colour
     std::unique_ptr<ShadowMaps> shadows_;
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
     unsigned meshGeneration_ = 0;
     SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
+    void accumulate(int refinement);
+
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0, emptyVao_ = 0;
+    GLuint meanFramebuffer_ = 0, mean_ = 0;  // the running mean of the refinement's frames
     glm::ivec2 size_{0, 0};
 };
 

@@ -151,6 +151,7 @@ void PreviewWindow::openScene(const std::string& path) {
         }
     showFinal_ = false;
     loadedEnvironment_ = scene().environment.color;
+    ++sceneGeneration_;
     history_.clear();
     committed_ = materialState();
     editPending_ = false;
@@ -400,6 +401,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"messages", messages_},
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
+        {"refinement", std::min(refinement_ + 1, kRefinementFrames)},
         {"material", material},
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
@@ -423,7 +425,8 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
 // Whether the next frame may differ from the last with no input: a render or fit under way, the
 // view still at a reduced size, a drag held, or a counted run (--frames).
 bool PreviewWindow::busy() const {
-    return final_.running() || fit_.running() || interacting_ || resolution_.scale() < 1.0f || options_.frames > 0 ||
+    const bool refining = refinement_ < kRefinementFrames - 1 && !(showFinal_ && finalImage_);
+    return final_.running() || fit_.running() || interacting_ || refining || resolution_.scale() < 1.0f || options_.frames > 0 ||
            !deferredReleases_.empty() || !deferredModifierReleases_.empty();
 }
 
@@ -517,8 +520,16 @@ void PreviewWindow::run() {
             attempt([&] {
                 // A focused text field is no interaction: the view stays sharp while typing.
                 interacting_ = steering_ || panelInteracting();
-                renderer_->render(scene(), lights_, camera, resolution_.frameSize({width, height}, interacting_, now),
-                                  preview);
+                const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
+                const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
+                refinement_ = !interacting_ && view == refinedView_ ? refinement_ + 1 : 0;
+                refinedView_ = view;
+                // Once the mean is complete the view is shown again as it is, not rendered.
+                if (refinement_ < kRefinementFrames) {
+                    preview.refinement = refinement_;
+                    preview.pixelOffset = refinementOffset(refinement_);
+                    renderer_->render(scene(), lights_, camera, size, preview);
+                }
                 renderer_->display(0, {0, 0}, {width, height}, display_);
             });
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -27,6 +27,7 @@
 #include "preview_window.h"
 #include "scene_picker.h"
 #include "undo_history.h"
+#include "view_refinement.h"
 #include "widget_map.h"
 #include "woven_edits.h"
 
@@ -50,6 +51,20 @@ struct MaterialState {
     std::optional<DraftEditor> draft;
     int draftEdit = -1;
     std::optional<ChosenFabric> chosenFabric;
+};
+
+// What the view's progressive refinement depends on beyond the scene's generation: a frame of
+// another view starts it anew.
+struct RefinedView {
+    glm::mat4 cameraToWorld{0.0f};
+    float yfov = 0.0f;
+    glm::ivec2 size{0};
+    uint64_t sceneGeneration = 0;
+    bool filterWeave = false, shadows = false;
+    bool operator==(const RefinedView& o) const {
+        return cameraToWorld == o.cameraToWorld && yfov == o.yfov && size == o.size &&
+               sceneGeneration == o.sceneGeneration && filterWeave == o.filterWeave && shadows == o.shadows;
+    }
 };
 
 class PreviewWindow {
@@ -158,6 +173,11 @@ private:
     std::optional<glm::dvec2> pressedAt_;  // where the left button went down, while it is down
     bool steering_ = false;                // the camera is being dragged or zoomed
     InteractiveResolution resolution_;
+    // Counts the changes of what the view shows (materials, lights, the scene): each starts the
+    // view's refinement anew, as does another camera or size (refinedView_).
+    uint64_t sceneGeneration_ = 0;
+    RefinedView refinedView_;
+    int refinement_ = 0;  // the frame of the running mean last rendered
     std::string status_;
     std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
     char materialPath_[512] = "material.json";

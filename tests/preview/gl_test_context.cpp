@@ -9,7 +9,7 @@ void ensureHeadlessGl() {
 }
 
 Image previewRadiance(const SceneDescription& scene, int width, int height, bool filterWeave, bool ambient,
-                      bool shadows) {
+                      bool shadows, bool refined) {
     ensureHeadlessGl();
     PreviewRenderer renderer;
     renderer.setMeshes(scene);
@@ -18,7 +18,8 @@ Image previewRadiance(const SceneDescription& scene, int width, int height, bool
     options.shadows = shadows;
     PreviewLights lights = PreviewLights::fromScene(scene);
     if (!ambient) lights.ambient = glm::vec3(0.0f);
-    renderer.render(scene, lights, scene.camera, {width, height}, options);
+    if (refined) renderer.renderRefined(scene, lights, scene.camera, {width, height}, options);
+    else renderer.render(scene, lights, scene.camera, {width, height}, options);
     return renderer.radiance();
 }
 

@@ -11,8 +11,9 @@ void ensureHeadlessGl();
 
 // The preview frame of `scene` from its own camera, filter on unless told otherwise. With
 // `ambient` false the environment lights nothing (it still shows where the cloth is not),
-// as in a direct-lighting image. `shadows` as PreviewOptions::shadows.
+// as in a direct-lighting image. `shadows` as PreviewOptions::shadows. `refined`: the mean of
+// the progressive refinement's frames, as a resting window shows it; else its first frame alone.
 Image previewRadiance(const SceneDescription& scene, int width, int height, bool filterWeave = true,
-                      bool ambient = true, bool shadows = true);
+                      bool ambient = true, bool shadows = true, bool refined = false);
 
 }  // namespace woven::test

@@ -62,19 +62,15 @@ def scroll_to(window, label, kind):
     raise Failure(f'"{label}" could not be scrolled into view')
 
 
-def render_and_save(window, tmp, name):
+def render_and_save(window, tmp):
+    """The Render button's frame, saved by Save PNG to its default path beside the scene: its pixels."""
     scroll_to(window, 'Render', 'button')
     window.click('Render', 'button')
     window.wait('the final frame', lambda m: m['state']['final']['done'] and m['state']['final']['shown'], 180)
-    scroll_to(window, 'image file', 'input')
-    window.click('image file', 'input')
-    window.key('ctrl+a')
-    path = os.path.join(tmp, name)
-    window.type(path)
-    window.key('Return')
     scroll_to(window, 'Save PNG', 'button')
     window.click('Save PNG', 'button')
-    window.wait(f'"saved {name}"', lambda m: m['state']['status'] == f'saved {path}', 30)
+    path = os.path.join(tmp, 'denim-render.png')
+    window.wait('"saved denim-render.png"', lambda m: m['state']['status'] == f'saved {path}', 30)
     return png_pixels(path)[2]
 
 
@@ -109,7 +105,7 @@ def main(woven, assets):
         print(f'idle: {used:.1%} of a core, frame {window.frame()}')
         check(used < IDLE_CPU_LIMIT, f'the resting window used {used:.1%} of a core (at most {IDLE_CPU_LIMIT:.0%})')
 
-        render_and_save(window, tmp, 'denim-render.png')
+        render_and_save(window, tmp)
 
         # A slider moved: the denim's final frame is stale, and hidden.
         scroll_to(window, 'weft e_x (along yarn)', 'drag')
@@ -153,7 +149,7 @@ def main(woven, assets):
         # The Render button's frame of the sateen, then Save, twice: a woven scene file beside the
         # scene, naming its glTF, with the sateen and the Render button's settings, that `woven
         # render` renders bit for bit as the button did.
-        button = render_and_save(window, tmp, 'sateen-render.png')
+        button = render_and_save(window, tmp)
         saved = os.path.join(tmp, 'denim-tuned.json')
         for time_ in ('first', 'second'):
             scroll_to(window, 'Save', 'button')
@@ -176,17 +172,13 @@ def main(woven, assets):
         print(f'saved twice to {os.path.basename(saved)}, which woven render renders as the Render button did')
 
         # Export: what the command line would warn of is in the window's Messages, not only on stderr.
-        exported = os.path.join(tmp, 'sateen.glb')
-        scroll_to(window, '##export file', 'input')
-        window.click('##export file', 'input')
-        window.key('ctrl+a')
-        window.type(exported)
-        window.key('Return')
+        exported = os.path.join(tmp, 'denim-export.glb')  # the default: beside the scene
+        scroll_to(window, 'Export', 'button')
         window.click('Export', 'button')
         m = window.wait('the export', lambda m: m['state']['status'].startswith(f'exported {exported}'), 120)
         check('see Messages' in m['state']['status'] and any(exported in line for line in m['state']['messages']),
               f'the export\'s warnings are not in the window: status "{m["state"]["status"]}", {m["state"]["messages"]}')
-        check(any(i['label'].startswith('Messages (') for i in m['items']), 'no Messages header in the panel')
+        window.wait('the Messages header', lambda m: any(i['label'].startswith('Messages (') for i in m['items']), 30)
         print(f'exported with {len(m["state"]["messages"])} warnings shown under Messages')
 
 if __name__ == '__main__':

@@ -1,0 +1,155 @@
+// The preview against core on everything woven ships: every fabric of the library and every draft
+// of assets/drafts, on the flat cloth of the GLSL-versus-core tests, seen near (threads of about
+// 10 pixels), mid (about 3) and far (about half a pixel). The images are compared by 8 x 8 block
+// means over the cloth: what a user sees of a fabric at each distance, not each pixel's rounding.
+// Core's image is averaged over sub-pixel positions (more the finer the weave), so that it is the
+// pixel's true mean that the preview's far field must approach.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include "fabric_library.h"
+#include "flat_cloth.h"
+#include "gl_test_context.h"
+#include "material_json.h"
+
+namespace woven::test {
+namespace {
+
+struct Distance {
+    const char* name;
+    float threadsPerUv;  // the mean of the two sides' repeat; the cloth spans about 200 pixels per uv unit
+    int subPixels;       // core's samples per pixel side
+};
+constexpr Distance kDistances[] = {{"near", 20.0f, 8}, {"mid", 70.0f, 8}, {"far", 400.0f, 8}};
+
+struct Subject {
+    std::string name;
+    nlohmann::json material;
+};
+
+std::vector<Subject> subjects() {
+    std::vector<Subject> all;
+    for (const std::string& name : fabricNames()) all.push_back({name, {{"preset", name}}});
+    std::vector<std::string> drafts;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(WOVEN_ASSETS_DIR) + "/drafts"))
+        if (entry.path().extension() == ".wif") drafts.push_back(entry.path().string());
+    std::sort(drafts.begin(), drafts.end());
+    for (const std::string& wif : drafts)
+        all.push_back({"draft_" + std::filesystem::path(wif).stem().string(), {{"wif", wif}}});
+    return all;
+}
+
+struct Case {
+    Subject subject;
+    Distance distance;
+};
+void PrintTo(const Case& c, std::ostream* os) { *os << c.subject.name << "_" << c.distance.name; }
+
+std::vector<Case> cases() {
+    std::vector<Case> all;
+    for (const Subject& s : subjects())
+        for (const Distance& d : kDistances) all.push_back({s, d});
+    return all;
+}
+
+struct BlockErrors {
+    double median = 0.0, worst = 0.0;
+    size_t blocks = 0;
+};
+
+// |preview - core|_1 / (|core|_1 + floor) of each 8 x 8 block wholly on the cloth, the floor 2 %
+// of core's mean over those blocks (as relativeError()'s), so near-black blocks are not judged by
+// their rounding.
+BlockErrors blockErrors(const Image& preview, const Image& core, const std::vector<uint8_t>& onCloth) {
+    constexpr int kBlock = 8;
+    std::vector<std::pair<double, double>> sums;  // (|difference|_1, |core|_1) of each block's means
+    double coreTotal = 0.0;
+    for (int by = 0; by + kBlock <= core.height; by += kBlock)
+        for (int bx = 0; bx + kBlock <= core.width; bx += kBlock) {
+            glm::dvec3 p(0.0), c(0.0);
+            bool whole = true;
+            for (int y = by; y < by + kBlock; ++y)
+                for (int x = bx; x < bx + kBlock; ++x) {
+                    const size_t i = size_t(y) * size_t(core.width) + size_t(x);
+                    whole = whole && onCloth[i];
+                    p += glm::dvec3(preview.pixels[i]);
+                    c += glm::dvec3(core.pixels[i]);
+                }
+            if (!whole) continue;
+            const glm::dvec3 d = glm::abs(p - c);
+            sums.emplace_back(d.x + d.y + d.z, c.x + c.y + c.z);
+            coreTotal += c.x + c.y + c.z;
+        }
+    BlockErrors e;
+    e.blocks = sums.size();
+    if (sums.empty()) return e;
+    const double floor = 0.02 * coreTotal / double(sums.size());
+    std::vector<double> errors;
+    for (const auto& [difference, reference] : sums) errors.push_back(difference / (reference + floor));
+    std::sort(errors.begin(), errors.end());
+    e.median = errors[errors.size() / 2];
+    e.worst = errors.back();
+    return e;
+}
+
+// The cases that miss the bounds (median 5 %, worst block 15 %), measured on llvmpipe with the
+// refinement, each held at 1.3 x its measured figure so that it cannot get worse unseen
+// (docs/RESULTS.md, "The preview against core on everything woven ships"):
+// - houndstooth and the houndstooth draft mid and near (worst 0.31, 0.22, 0.19): its 2/2 twill
+//   of 4-and-4 colour blocks at 3 to 10 pixels a thread: the far field's fade starts while the
+//   colour blocks still alias in the 3 x 3 samples;
+// - voile mid and far (worst 0.17 and 0.34, median 0.067 far): an open weave whose gaps show the
+//   background, which the far field averages as coverage while core's pixels see it;
+// - tartan, silk shantung far (worst 0.159, 0.152): a block where stripes of very different
+//   colour meet at the far field's footprint;
+// - the denim draft near (worst 0.18): one block on the highlight of its steep twill.
+struct KnownMiss {
+    const char* name;
+    double median, worst;
+};
+constexpr KnownMiss kKnownMisses[] = {
+    {"houndstooth_mid", 0.05, 0.41},       {"draft_houndstooth_near", 0.05, 0.25},
+    {"draft_houndstooth_mid", 0.05, 0.29}, {"voile_mid", 0.05, 0.23},
+    {"voile_far", 0.087, 0.45},            {"tartan_far", 0.05, 0.21},
+    {"silk_shantung_far", 0.05, 0.2},      {"draft_denim_near", 0.05, 0.24},
+};
+
+class PreviewFidelity : public testing::TestWithParam<Case> {};
+
+TEST_P(PreviewFidelity, BlockMeansMatchCore) {
+    const Case& c = GetParam();
+    std::vector<std::string> warnings;
+    WovenParams p = materialFromJson(c.subject.material, WovenParams{}, "", warnings).params;
+    // The fabric's own ratio of ends to picks, at this distance's thread size.
+    p.repeat *= c.distance.threadsPerUv / (0.5f * (p.repeat.x + p.repeat.y));
+    const SceneDescription scene = flatClothScene(p);
+    constexpr int kWidth = 160, kHeight = 120;
+    // Where the cloth is, gaps included (those show what lies behind in both images): where an
+    // opaque cloth covers every pixel wholly.
+    std::vector<uint8_t> onCloth;
+    coreDirectLighting(flatClothScene(WovenParams{}), kWidth, kHeight, 2, &onCloth);
+    const Image core = coreDirectLighting(scene, kWidth, kHeight, c.distance.subPixels);
+    // As a resting window shows it: the mean of the refinement's 3 x 3 sample points a pixel.
+    const Image preview = previewRadiance(scene, kWidth, kHeight, true, false, true, true);
+    const BlockErrors e = blockErrors(preview, core, onCloth);
+    std::cout << "fidelity " << c.subject.name << " " << c.distance.name << ": " << e.blocks
+              << " blocks, median " << e.median << ", worst " << e.worst << "\n";
+    ASSERT_GT(e.blocks, size_t(50));
+    double medianBound = 0.05, worstBound = 0.15;
+    for (const KnownMiss& miss : kKnownMisses)
+        if (c.subject.name + "_" + c.distance.name == miss.name) medianBound = miss.median, worstBound = miss.worst;
+    EXPECT_LE(e.median, medianBound);
+    EXPECT_LE(e.worst, worstBound);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, PreviewFidelity, testing::ValuesIn(cases()), [](const testing::TestParamInfo<Case>& info) {
+    std::string name = info.param.subject.name + "_" + info.param.distance.name;
+    std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+    return name;
+});
+
+}  // namespace
+}  // namespace woven::test
