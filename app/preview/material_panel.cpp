@@ -79,12 +79,30 @@ float logDragSpeed(const ParamInfo& info) {
     return (info.max - info.min) / (decades * kPixelsPerDecade);
 }
 
-// The per-thread colour list that overrides a side's colour field, if it is set.
-const std::vector<glm::vec3>* threadColorsOver(const ParamInfo& info, const WovenParams& p) {
+// Whether any yarn type sets `field` to something other than 0.
+bool anyYarnSets(const WovenParams& p, YarnField field) {
+    return std::any_of(p.yarns.begin(), p.yarns.end(), [&](const YarnSpec& y) { return y.set[field] && y.value[field] != 0.0f; });
+}
+
+// Why a parameter changes nothing on this material (drawn disabled, the reason its tooltip), or
+// nothing: it acts.
+std::string inactiveBecause(const ParamInfo& info, const WovenParams& p) {
     const std::string name = info.name;
-    if (name == "weft_color" && !p.weft_colors.empty()) return &p.weft_colors;
-    if (name == "warp_color" && !p.warp_colors.empty()) return &p.warp_colors;
-    return nullptr;
+    for (const auto& [side, colours] : {std::pair{"weft_color", &p.weft_colors}, std::pair{"warp_color", &p.warp_colors}})
+        if (name == side && !colours->empty())
+            return "every thread of this side has its own colour: edit them in \"thread colours\" below (" +
+                   std::to_string(colours->size()) + " threads)";
+    if (name == "transmission_gloss" && p.transmission == 0.0f && !anyYarnSets(p, kYarnTransmission))
+        return "yarn transmission is 0: no light passes through the yarns to take this gloss";
+    if (name == "noise_scale" && p.noise == 0.0f && !anyYarnSets(p, kYarnNoise)) return "noise is 0: there is no noise to scale";
+    if (name == "backing_color") {
+        if (p.backing == 0) return "gaps are see-through (backing 0): set \"gaps show backing\" to 1 to see this colour";
+        const bool narrowYarns = p.yarn_width < 1.0f || p.warp_width < 1.0f ||
+                                 std::any_of(p.yarns.begin(), p.yarns.end(),
+                                             [](const YarnSpec& y) { return y.set[kYarnWidth] && y.value[kYarnWidth] < 1.0f; });
+        if (!narrowYarns) return "the yarns fill their cells (widths 1): no gap shows the backing";
+    }
+    return "";
 }
 
 // Every colour the threads have, in order of first use (ends, then picks): a side without
@@ -172,7 +190,8 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
         ImGui::PushID(info.name);
         const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp
                                                      : ImGuiSliderFlags_AlwaysClamp;
-        const std::vector<glm::vec3>* overriddenBy = nullptr;
+        const std::string inactive = inactiveBecause(info, p);
+        ImGui::BeginDisabled(!inactive.empty());
         switch (info.type) {
         case ParamType::Float:
             if (info.logScale)
@@ -188,21 +207,15 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             ui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
             break;
         case ParamType::Vec3:
-            overriddenBy = threadColorsOver(info, p);
-            ImGui::BeginDisabled(overriddenBy != nullptr);
             ui::ColorEdit3(info.label, reinterpret_cast<float*>(field), ImGuiColorEditFlags_Float);
-            ImGui::EndDisabled();
             break;
         default: break;
         }
+        ImGui::EndDisabled();
         // The scene-file key and its meaning, so what the panel tunes can be written by hand.
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            if (overriddenBy)
-                ImGui::SetTooltip("%s: every thread of this side has its own colour: edit them in \"thread colours\" "
-                                  "below (%zu threads)",
-                                  info.name, overriddenBy->size());
-            else
-                ImGui::SetTooltip("%s: %s\n(Ctrl+click to type a value)", info.name, info.description);
+            if (!inactive.empty()) ImGui::SetTooltip("%s: %s", info.name, inactive.c_str());
+            else ImGui::SetTooltip("%s: %s\n(Ctrl+click to type a value)", info.name, info.description);
         }
         ImGui::PopID();
     }

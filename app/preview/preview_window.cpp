@@ -30,6 +30,16 @@ namespace {
 std::atomic<bool> closeRequested{false};
 extern "C" void requestClose(int) { closeRequested = true; }
 
+// FNV-1a of an image's bytes, as hexadecimal (JSON's numbers do not hold 64 bits).
+std::string checksum(const Image& image) {
+    uint64_t hash = 1469598103934665603ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(image.pixels.data());
+    for (size_t i = 0; i < image.pixels.size() * sizeof(glm::vec3); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
 // Weaving programs write .wif and .WIF alike.
 bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
 
@@ -402,6 +412,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
         {"refinement", std::min(refinement_ + 1, kRefinementFrames)},
+        {"view_checksum", viewChecksum_},
         {"material", material},
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
@@ -529,6 +540,9 @@ void PreviewWindow::run() {
                     preview.refinement = refinement_;
                     preview.pixelOffset = refinementOffset(refinement_);
                     renderer_->render(scene(), lights_, camera, size, preview);
+                    // For the window tests: what the settled view shows, to tell whether an edit changed it.
+                    if (refinement_ == kRefinementFrames - 1 && !options_.widgetMap.empty())
+                        viewChecksum_ = checksum(renderer_->radiance());
                 }
                 renderer_->display(0, {0, 0}, {width, height}, display_);
             });

@@ -178,6 +178,7 @@ private:
     uint64_t sceneGeneration_ = 0;
     RefinedView refinedView_;
     int refinement_ = 0;  // the frame of the running mean last rendered
+    std::string viewChecksum_;  // of the last settled view, with --widget-map
     std::string status_;
     std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
     char materialPath_[512] = "material.json";

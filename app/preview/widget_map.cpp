@@ -55,6 +55,7 @@ void WidgetMap::record(const char* label, const char* kind) {
     item.frameMin = group ? item.min : g.LastItemData.NavRect.Min;
     item.frameMax = group ? item.max : g.LastItemData.NavRect.Max;
     item.visible = ImGui::IsItemVisible();
+    item.disabled = (g.CurrentItemFlags & ImGuiItemFlags_Disabled) != 0;
     items_.push_back(std::move(item));
     if (!windows_.contains(window->Name))
         windows_[window->Name] = {{"pos", point(window->Pos)},
@@ -93,7 +94,8 @@ nlohmann::json WidgetMap::json() const {
                          {"id", item.id},
                          {"rect", rect(item.min, item.max)},
                          {"frame", rect(item.frameMin, item.frameMax)},
-                         {"visible", item.visible}});
+                         {"visible", item.visible},
+                         {"disabled", item.disabled}});
     nlohmann::json clashList = nlohmann::json::array();
     for (const WidgetClash& clash : clashes()) {
         nlohmann::json labels = nlohmann::json::array();

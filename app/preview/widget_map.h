@@ -22,6 +22,7 @@ struct WidgetItem {
     ImVec2 min, max;     // the whole item, label included (ImGui::GetItemRectMin/Max)
     ImVec2 frameMin, frameMax;  // the part that takes a click (a field's frame, without its label)
     bool visible = false;       // not clipped away (scrolled out, a collapsed window)
+    bool disabled = false;      // drawn disabled (ImGui::BeginDisabled): it takes no input
 };
 
 namespace ui {
