@@ -68,8 +68,10 @@ void PreviewWindow::drawPanel() {
     // Fields end where the longest label still fits before the panel's edge, however wide it is.
     ImGui::PushItemWidth(-labels);
     ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
-    ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
-                100.0f * resolution_.scale());
+    if (renderedView_) ImGui::TextWrapped("%s", rendered_.statusText().c_str());
+    else
+        ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
+                    100.0f * resolution_.scale());
     static const char* const toneMaps[] = {"clamp", "reinhard", "aces"};  // core's ToneMap order
     int toneMap = int(display_.toneMap);
     const bool exposureChanged = ui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
@@ -79,6 +81,9 @@ void PreviewWindow::drawPanel() {
     ui::Checkbox("filter distant weave", &filterWeave_);
     ImGui::SameLine();
     ui::Checkbox("shadows", &shadows_);
+    bool rendered = renderedView_;
+    if (ui::Checkbox("rendered view (R)", &rendered)) setRenderedView(rendered);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the path tracer's progressive frame in place of the OpenGL preview");
     if (ui::Button("Frame scene")) {
         const SceneBox box = sceneBounds(scene());
         camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
