@@ -17,11 +17,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The denoiser's share of the viewport's time at most: it runs once the passes since the last
-// one took 1 / kDenoiseShare times what it costs.
+// The denoiser's share of the view's time at most (denoiseDue()).
 constexpr double kDenoiseShare = 0.15;
-// Before its cost is measured, the first denoised frame is made after this many passes.
-constexpr int kFirstDenoisePass = 4;
+// Before the denoiser's cost is measured it is taken as this many passes' time: it measured 1.3
+// at 640x360 on the default scene (docs/RESULTS.md, "Rendered view").
+constexpr double kUnmeasuredDenoisePasses = 2.0;
 // While interacting, a pass should take about this long, so the view follows the drag.
 constexpr double kInteractivePassSeconds = 0.08;
 // The interactive resolution's scale of the width and height before any pass was measured, and
@@ -39,6 +39,15 @@ bool sameFrame(const RenderSettings& a, const RenderSettings& b) {
            a.timeLimit == b.timeLimit && a.integrator == b.integrator && a.seed == b.seed && a.sampler == b.sampler &&
            a.threads == b.threads && a.maxDepth == b.maxDepth && a.noiseThreshold == b.noiseThreshold &&
            a.filterWeave == b.filterWeave && a.renderPasses == b.renderPasses && sameCamera(a.camera, b.camera);
+}
+
+// Whether to denoise after a pass other than the last, which always is: when the denoiser's time
+// with this one stays within kDenoiseShare of the passes' so far, and leaves room within
+// kDenoiseShare of all the passes' for the last one. `cost`: one denoising's seconds (estimated).
+bool denoiseDue(double cost, double denoisedSeconds, double renderedSeconds, int passesDone, int passes) {
+    const double allPasses = renderedSeconds / passesDone * passes;
+    return denoisedSeconds + cost <= kDenoiseShare * renderedSeconds &&
+           denoisedSeconds + 2.0 * cost <= kDenoiseShare * allPasses;
 }
 
 }  // namespace
@@ -173,6 +182,7 @@ void RenderedViewport::render(const Request& request) {
         ++progress_.restarts;
         progress_.samples = progress_.denoisedAt = 0;
         progress_.denoiseSeconds = 0.0;
+        progress_.denoisings = 0;
         progress_.target = request.settings.spp;
         progress_.width = request.settings.width;
         progress_.height = request.settings.height;
@@ -180,9 +190,9 @@ void RenderedViewport::render(const Request& request) {
         progress_.converged = false;
     }
     Clock::time_point passEnd = Clock::now();
-    double renderSinceDenoise = 0.0;
+    double renderedSeconds = 0.0, denoisedSeconds = 0.0;
     job.run(cancel_, [&](const RenderProgress& p) {
-        renderSinceDenoise += secondsSince(passEnd);
+        renderedSeconds += secondsSince(passEnd);
         FilmImage film = job.snapshot();
         const double pixels = double(request.settings.width) * request.settings.height;
         double perPixel = 0.0;
@@ -192,15 +202,16 @@ void RenderedViewport::render(const Request& request) {
             perPixel = denoiseSecondsPerPixel_;
         }
         const bool last = p.samplesDone == request.settings.spp;
-        const bool due = perPixel > 0.0 ? renderSinceDenoise * kDenoiseShare >= perPixel * pixels
-                                        : p.samplesDone == kFirstDenoisePass;
-        const bool denoise = request.denoise && !request.interacting && (last || due);
+        const double cost =
+            perPixel > 0.0 ? perPixel * pixels : kUnmeasuredDenoisePasses * renderedSeconds / p.samplesDone;
+        const bool denoise = request.denoise && !request.interacting &&
+                             (last || denoiseDue(cost, denoisedSeconds, renderedSeconds, p.samplesDone, request.settings.spp));
         double denoiseSeconds = 0.0;
         if (denoise) {
             const Clock::time_point denoiseStart = Clock::now();
             denoiseFilm(film);
-            renderSinceDenoise = 0.0;
             denoiseSeconds = secondsSince(denoiseStart);
+            denoisedSeconds += denoiseSeconds;
             std::lock_guard<std::mutex> lock(mutex_);
             denoiseSecondsPerPixel_ = denoiseSeconds / pixels;
         }
@@ -212,7 +223,10 @@ void RenderedViewport::render(const Request& request) {
             if (!current_.scene) return;
         }
         progress_.samples = p.samplesDone;
-        if (denoise) progress_.denoisedAt = p.samplesDone;
+        if (denoise) {
+            progress_.denoisedAt = p.samplesDone;
+            ++progress_.denoisings;
+        }
         progress_.denoiseSeconds += denoiseSeconds;
         progress_.seconds = secondsSince(start);
         progress_.converged = last;

@@ -34,6 +34,7 @@ struct ViewportProgress {
     int width = 0, height = 0;  // of the passes: less than the settings' while interacting
     double seconds = 0.0;  // since the restart
     double denoiseSeconds = 0.0;  // of those, in the denoiser
+    int denoisings = 0;           // how many frames of this restart it denoised
     bool converged = false;
     uint64_t restarts = 0;  // how many times the view started again
 };
