@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "preview_window_impl.h"
@@ -23,7 +24,8 @@ float PreviewWindow::labelWidth() {
     static const char* const labels[] = {"exposure",   "tone map",        "target",     "woven",    "fabric",  "weave preset",
                                          "scene file", "draft file",      "render size", "spp",     "noise threshold",
                                          "integrator", "image file",      "intensity",  "position", "direction",
-                                         "environment", "shot files",    "swatch",     "fit seconds"};
+                                         "environment", "shot files",    "swatch",     "fit seconds", "rotation",
+                                         "brightness"};
     float width = 0.0f;
     for (const char* label : labels) width = std::max(width, ImGui::CalcTextSize(label, nullptr, true).x);
     for (const ParamInfo& info : wovenParamTable())
@@ -51,6 +53,20 @@ void PreviewWindow::drawLightControls() {
     }
     changed |= ui::ColorEdit3("environment", &scene().environment.color.x,
                               ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    // Look development: the environment turned about +y, and brightened keeping its tint (the
+    // scene file's environment.rotation and environment.intensity).
+    Environment& env = scene().environment;
+    float degrees = std::remainder(glm::degrees(env.rotation), 360.0f);
+    if (ui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f degrees")) {
+        env.rotation = glm::radians(degrees);
+        changed = true;
+    }
+    const float before = std::max({env.color.r, env.color.g, env.color.b});
+    float brightness = before;
+    if (ui::SliderFloat("brightness", &brightness, 0.0f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic)) {
+        env.color = before > 0.0f ? env.color * (brightness / before) : glm::vec3(brightness);
+        changed = true;
+    }
     if (changed) lights_ = PreviewLights::fromScene(scene());
 }
 
