@@ -74,6 +74,11 @@ void RenderedViewport::show(const SceneDescription& scene, const RenderSettings&
                             bool denoise) {
     const std::string hash = sceneHash(scene, Camera{});
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!interacting) interactiveScale_ = 0.0f;  // the next drag measures again
+    const bool sameScene = current_.scene && hash == current_.sceneHash;
+    const bool sameAsked = sameScene && sameFrame(settings, current_.asked) && denoise == current_.denoise;
+    // Nothing changed; or nothing since a drag's change, which goes on.
+    if (sameAsked && (interacting || !current_.interacting)) return;
     RenderSettings wanted = settings;
     if (interacting) {
         // One scale a drag, so that the drag's frames differ by the camera or the value alone.
@@ -89,16 +94,11 @@ void RenderedViewport::show(const SceneDescription& scene, const RenderSettings&
         // The full frame's aspect, which rounding the size would change.
         if (wanted.camera && wanted.camera->aspect <= 0.0f)
             wanted.camera->aspect = float(settings.width) / float(settings.height);
-    } else {
-        interactiveScale_ = 0.0f;
     }
-    const bool sameScene = current_.scene && hash == current_.sceneHash;
-    if (sameScene && sameFrame(wanted, current_.settings) && interacting == current_.interacting &&
-        denoise == current_.denoise)
-        return;
     Request request;
     request.scene = sameScene ? current_.scene : std::make_shared<const SceneDescription>(scene);
     request.sceneHash = hash;
+    request.asked = settings;
     request.settings = wanted;
     request.interacting = interacting;
     request.denoise = denoise;
@@ -259,12 +259,16 @@ ViewportProgress RenderedViewport::progress() const {
 }
 
 std::string RenderedViewport::statusText() const {
-    const ViewportProgress p = progress();
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ViewportProgress& p = progress_;
     char text[96];
-    std::snprintf(text, sizeof text, "rendered: %d/%d spp at %dx%d, %.1f s", p.samples, p.target, p.width, p.height,
-                  p.seconds);
+    std::snprintf(text, sizeof text, "%d/%d spp", p.samples, p.target);
     std::string status = text;
-    if (p.denoisedAt > 0) status += ", denoised at " + std::to_string(p.denoisedAt) + " spp";
+    if (p.width != current_.asked.width || p.height != current_.asked.height)
+        status += " at " + std::to_string(p.width) + "x" + std::to_string(p.height);
+    std::snprintf(text, sizeof text, ", %.1f s", p.seconds);
+    status += text;
+    if (p.denoisedAt > 0) status += ", denoised";
     if (p.converged) status += ", converged";
     return status;
 }

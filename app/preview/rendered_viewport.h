@@ -48,8 +48,10 @@ public:
 
     // What the view is to show, called each frame: starts again when the scene, the camera or the
     // settings differ from what is being rendered (cancelling the passes in flight), else does
-    // nothing. `interacting`: the camera or a value is being dragged: passes at a lower
-    // resolution, not denoised. `denoise`: woven's denoiser every few passes, and on the last.
+    // nothing. `interacting`: the camera or a value is being dragged: a change then renders at a
+    // lower resolution, not denoised, and the end of the drag starts again at full size (a held
+    // button that changes nothing changes nothing). `denoise`: woven's denoiser every few passes,
+    // and on the last.
     void show(const SceneDescription& scene, const RenderSettings& settings, bool interacting, bool denoise);
     // Cancels the passes in flight and forgets the scene (the window left Rendered mode).
     void stop();
@@ -64,14 +66,16 @@ public:
     // denoised (always so once converged with `denoise`).
     std::optional<FilmImage> frame() const;
     ViewportProgress progress() const;
-    std::string statusText() const;  // "rendered: 12/64 spp, 3.2 s" or "... converged"
+    // "12/64 spp, 3.2 s", "1/64 spp at 160x90, 0.1 s", "64/64 spp, 20.5 s, denoised, converged"
+    std::string statusText() const;
     std::string error() const;       // why the last restart failed, empty if it did not
 
 private:
     struct Request {
         std::shared_ptr<const SceneDescription> scene;
         std::string sceneHash;
-        RenderSettings settings;
+        RenderSettings asked;     // as show() was given them
+        RenderSettings settings;  // as rendered: smaller while interacting
         bool interacting = false, denoise = false;
         uint64_t generation = 0;
     };
