@@ -173,6 +173,8 @@ void RenderedViewport::render(const Request& request) {
         builtHash_.clear();
         built_ = std::make_shared<const RenderScene>(request.scene);
         builtHash_ = request.sceneHash;
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++progress_.builds;
     }
     if (cancel_) return;
     RenderJob job(built_, request.settings);

@@ -37,6 +37,7 @@ struct ViewportProgress {
     int denoisings = 0;           // how many frames of this restart it denoised
     bool converged = false;
     uint64_t restarts = 0;  // how many times the view started again
+    uint64_t builds = 0;    // how many times it built a scene (BVH, materials, lights)
 };
 
 class RenderedViewport {

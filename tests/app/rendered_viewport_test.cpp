@@ -36,7 +36,7 @@ int run(const std::string& args, std::string* errors = nullptr) {
 const std::string kScene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
 const std::string kFrame = " --width 64 --height 48 --seed 5";
 
-TEST(RenderedViewport, UndenoisedFrameAfterNPassesIsWovenRendersOfNSamplesBitForBit) {
+TEST(RenderedViewCommand, UndenoisedFrameAfterNPassesIsWovenRendersOfNSamplesBitForBit) {
     TempDir dir;
     const std::string rendered = dir.file("render.exr"), view = dir.file("view.exr");
     // The view renders with the path tracer where the scene leaves the integrator to auto.
@@ -53,7 +53,7 @@ TEST(RenderedViewport, UndenoisedFrameAfterNPassesIsWovenRendersOfNSamplesBitFor
     EXPECT_FALSE(b.noisy.has_value());
 }
 
-TEST(RenderedViewport, DenoisedFrameKeepsTheRunningMeanBeside) {
+TEST(RenderedViewCommand, DenoisedFrameKeepsTheRunningMeanBeside) {
     TempDir dir;
     const std::string rendered = dir.file("render.exr"), view = dir.file("view.exr");
     ASSERT_EQ(run("render " + kScene + kFrame + " --spp 3 --noise-threshold 0 --no-denoise --integrator path -o " + rendered), 0);
@@ -64,7 +64,7 @@ TEST(RenderedViewport, DenoisedFrameKeepsTheRunningMeanBeside) {
     EXPECT_FALSE(b.image.pixels == a.image.pixels);
 }
 
-TEST(RenderedViewport, MisplacedOptionsAreRefusedByName) {
+TEST(RenderedViewCommand, MisplacedOptionsAreRefusedByName) {
     TempDir dir;
     std::string errors;
     EXPECT_NE(run("preview " + kScene + " --headless --passes 2 --screenshot " + dir.file("a.exr"), &errors), 0);
