@@ -20,7 +20,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // The denoiser's share of the view's time at most (denoiseDue()).
 constexpr double kDenoiseShare = 0.15;
 // Before the denoiser's cost is measured it is taken as this many passes' time: it measured 1.3
-// at 640x360 on the default scene (docs/RESULTS.md, "Rendered view").
+// at 640x360 on the default scene (docs/RESULTS.md, "The rendered view").
 constexpr double kUnmeasuredDenoisePasses = 2.0;
 // While interacting, a pass should take about this long, so the view follows the drag.
 constexpr double kInteractivePassSeconds = 0.08;
