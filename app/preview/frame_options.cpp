@@ -12,6 +12,7 @@
 #include "light_limits.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
+#include "studio_environments.h"
 #include "display_transform.h"
 
 namespace woven {
@@ -66,10 +67,11 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->type_name("N|NAME|auto");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
-                       "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
-                       "radiance (a number), instead of its own environment; none: no environment, and no studio light added "
+                       "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg), a uniform grey "
+                       "radiance (a number) or an environment woven generates (" + studioEnvironmentNames() +
+                       "), instead of its own environment; none: no environment, and no studio light added "
                        "to a scene whose lights are missing or too dim")
-        ->type_name("FILE|GREY|none");
+        ->type_name("FILE|GREY|NAME|none");
     command.add_option("--environment-rotation", o.environmentRotation,
                        "turn the environment this many degrees about +y (replaces the scene's environment.rotation)")
         ->check(finiteNumber(-3600.0, 3600.0));

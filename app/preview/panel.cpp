@@ -8,6 +8,7 @@
 
 #include "preview_window_impl.h"
 #include "scene_camera.h"
+#include "studio_environments.h"
 #include "woven_params.h"
 
 namespace woven {
@@ -25,7 +26,7 @@ float PreviewWindow::labelWidth() {
                                          "scene file", "draft file",      "render size", "spp",     "noise threshold",
                                          "integrator", "image file",      "intensity",  "position", "direction",
                                          "environment", "shot files",    "swatch",     "fit seconds", "rotation",
-                                         "brightness"};
+                                         "brightness", "studio light"};
     float width = 0.0f;
     for (const char* label : labels) width = std::max(width, ImGui::CalcTextSize(label, nullptr, true).x);
     for (const ParamInfo& info : wovenParamTable())
@@ -53,9 +54,21 @@ void PreviewWindow::drawLightControls() {
     }
     changed |= ui::ColorEdit3("environment", &scene().environment.color.x,
                               ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    // Look development: the environment turned about +y, and brightened keeping its tint (the
-    // scene file's environment.rotation and environment.intensity).
+    // Look development: one of the environments woven generates (keeping the rotation), the
+    // environment turned about +y, and brightened keeping its tint (the scene file's
+    // environment.rotation and environment.intensity).
     Environment& env = scene().environment;
+    if (ui::BeginCombo("studio light", "(choose)")) {
+        for (const StudioEnvironment& studio : studioEnvironments())
+            if (ui::Selectable(studio.name, false)) {
+                const float rotation = env.rotation;
+                env = studio.make();
+                env.rotation = rotation;
+                changed = true;
+                status_ = std::string("lit by the ") + studio.name + " environment: " + studio.description;
+            }
+        ui::EndCombo();
+    }
     float degrees = std::remainder(glm::degrees(env.rotation), 360.0f);
     if (ui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f degrees")) {
         env.rotation = glm::radians(degrees);
