@@ -19,6 +19,7 @@
 #include "orbit_camera.h"
 #include "preview_renderer.h"
 #include "preview_window.h"
+#include "rendered_viewport.h"
 #include "scene_loader.h"
 
 namespace woven {
@@ -29,6 +30,8 @@ struct PreviewCommandOptions {
     std::string scene;
     bool headless = false;
     bool final = false;
+    std::string viewport = "glsl";  // --viewport: the view the window opens with, or the headless frame's
+    int passes = 0;                 // --passes: the rendered viewport's headless frame; 0: --spp's
     std::string screenshot;
     FrameOptions frame;  // --width/--height: also the window's and the screenshot's size
     bool noShadows = false;
@@ -51,7 +54,8 @@ void checkModeOptions(const PreviewCommandOptions& o) {
                                                        {!o.windowScreenshot.empty(), "--window-screenshot"},
                                                        {!o.wif.empty(), "--wif"},
                                                        {!o.widgetMap.empty(), "--widget-map"}};
-    const std::vector<std::pair<bool, const char*>> headlessOnly = {{!o.screenshot.empty(), "--screenshot"}, {o.final, "--final"}};
+    const std::vector<std::pair<bool, const char*>> headlessOnly = {
+        {!o.screenshot.empty(), "--screenshot"}, {o.final, "--final"}, {o.passes != 0, "--passes"}};
     for (const auto& [given, name] : o.headless ? windowOnly : headlessOnly)
         if (given)
             throw std::invalid_argument(std::string(name) + " is for " +
@@ -61,6 +65,10 @@ void checkModeOptions(const PreviewCommandOptions& o) {
 
 void runHeadless(const PreviewCommandOptions& o) {
     if (o.screenshot.empty()) throw std::invalid_argument("--headless needs --screenshot FILE.png (or .exr)");
+    if (o.final && o.viewport == "rendered")
+        throw std::invalid_argument("--final is the Render button's frame, --viewport rendered the view's: give one");
+    if (o.passes != 0 && o.viewport != "rendered")
+        throw std::invalid_argument("--passes counts the rendered view's passes: give --viewport rendered with it");
     checkFrameFileName(o.screenshot);
     const SceneDescription scene = openScene(o);
     checkOutput(o.screenshot);  // again, now that the scene's files are read: none may be replaced
@@ -74,6 +82,19 @@ void runHeadless(const PreviewCommandOptions& o) {
         if (!render.error().empty()) throw std::runtime_error(render.error());
         const FilmImage film = *render.latest();
         writeFrame(o.screenshot, film.exr(), o.frame.display);
+        return;
+    }
+    if (o.viewport == "rendered") {  // the view's Rendered mode, left to --passes passes
+        RenderSettings settings = viewportSettings(frameSettings(scene, o.frame));
+        settings.camera = camera;
+        if (o.passes > 0) settings.spp = o.passes;
+        RenderedViewport view;
+        view.show(scene, settings, false, o.frame.denoise);
+        view.waitUntilIdle();
+        if (!view.error().empty()) throw std::runtime_error(view.error());
+        const std::optional<FilmImage> frame = view.frame();
+        if (!frame) throw std::runtime_error("the rendered view ended without a frame");
+        writeFrame(o.screenshot, frame->exr(), o.frame.display);
         return;
     }
     auto gl = HeadlessGl::create();
@@ -97,6 +118,13 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("scene", o->scene, "glTF or woven scene file (default: a procedural cloth)");
     cmd->add_flag("--headless", o->headless, "Render one frame without a window (EGL, else OSMesa)");
     cmd->add_flag("--final", o->final, "With --headless: the path-traced frame of the Render button");
+    cmd->add_option("--viewport", o->viewport,
+                    "glsl: the view drawn by OpenGL (default); rendered: by the path tracer, progressively (key R in the "
+                    "window; with --headless, the frame after --passes passes)")
+        ->check(CLI::IsMember({"glsl", "rendered"}));
+    cmd->add_option("--passes", o->passes,
+                    "With --headless --viewport rendered: the passes (samples a pixel) the frame takes (default: --spp's)")
+        ->check(wholeNumber(1, 1 << 24));
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
@@ -120,6 +148,7 @@ void addPreviewCommand(CLI::App& app) {
         window.screenshot = o->windowScreenshot;
         window.draft = o->wif;
         window.widgetMap = o->widgetMap;
+        window.rendered = o->viewport == "rendered";
         runPreviewWindow(window);
     });
 }

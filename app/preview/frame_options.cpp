@@ -9,8 +9,10 @@
 #include "number_checks.h"
 #include "scene_camera.h"
 #include "woven_assignment.h"
+#include "light_limits.h"
 #include "scene_lighting.h"
 #include "scene_validation.h"
+#include "studio_environments.h"
 #include "display_transform.h"
 
 namespace woven {
@@ -65,10 +67,17 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->type_name("N|NAME|auto");
     command.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven with these parameters: a material name, mesh:NAME, node:NAME, a glob, or * (repeatable; docs/SCENE_FORMAT.md)");
     command.add_option("--environment", o.environment,
-                       "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg) or a uniform grey "
-                       "radiance (a number), instead of its own environment; none: no environment, and no studio light added "
+                       "light the scene by an equirectangular image (.hdr, .exr, .png, .jpg), a uniform grey "
+                       "radiance (a number) or an environment woven generates (" + studioEnvironmentNames() +
+                       "), instead of its own environment; none: no environment, and no studio light added "
                        "to a scene whose lights are missing or too dim")
-        ->type_name("FILE|GREY|none");
+        ->type_name("FILE|GREY|NAME|none");
+    command.add_option("--environment-rotation", o.environmentRotation,
+                       "turn the environment this many degrees about +y (replaces the scene's environment.rotation)")
+        ->check(finiteNumber(-3600.0, 3600.0));
+    command.add_option("--environment-intensity", o.environmentIntensity,
+                       "scale the environment's radiance, keeping its tint (default 1)")
+        ->check(finiteNumber(0.0, 1e6));
     // A validator of our own: CLI11's transformer names its internals ("Check filmic value in
     // {aces->2,...} FAILED") where a user needs the choices.
     const CLI::Validator toneMapNames(
@@ -90,16 +99,11 @@ void addFrameOptions(CLI::App& command, FrameOptions& o) {
         ->type_name("aces|clamp|reinhard");
 }
 
-void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
-    if (!options.camera.empty()) chooseCamera(scene, options.camera);
-    validateScene(scene);
-    if (!options.environment.empty()) scene.environment = environmentFromOption(options.environment);
-    // One call, so the options layer by specificity and then in the order given.
-    std::vector<WovenAssignment> assignments;
-    for (const std::string& option : options.woven) assignments.push_back(parseWovenOption(scene, option));
-    if (!assignments.empty()) assignWoven(scene, assignments);
-    // An --environment given is the user's choice, even a black one.
-    if (!options.environment.empty()) return;
+namespace {
+
+// The studio environment for a scene that has no light or too little to see (lightByDefault()),
+// said on stderr.
+void addDefaultLight(SceneDescription& scene) {
     const float E = lightIrradianceAtCentre(scene);
     switch (lightByDefault(scene)) {
         case DefaultLighting::None: break;
@@ -114,6 +118,24 @@ void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
                          "do (--environment none for its own lights alone, or --exposure)\n";
             break;
     }
+}
+
+}  // namespace
+
+void applySceneOptions(SceneDescription& scene, const FrameOptions& options) {
+    if (!options.camera.empty()) chooseCamera(scene, options.camera);
+    validateScene(scene);
+    if (!options.environment.empty()) scene.environment = environmentFromOption(options.environment);
+    // One call, so the options layer by specificity and then in the order given.
+    std::vector<WovenAssignment> assignments;
+    for (const std::string& option : options.woven) assignments.push_back(parseWovenOption(scene, option));
+    if (!assignments.empty()) assignWoven(scene, assignments);
+    // An --environment given is the user's choice, even a black one.
+    if (options.environment.empty()) addDefaultLight(scene);
+    if (options.environmentRotation) scene.environment.rotation = glm::radians(*options.environmentRotation);
+    scene.environment.color *= options.environmentIntensity;
+    if (const std::string problem = lightValueProblem(scene.environment.color); !problem.empty())
+        throw SceneError("--environment-intensity: times the environment's colour " + problem);
 }
 
 RenderSettings frameSettings(const SceneDescription& scene, const FrameOptions& o) {

@@ -30,18 +30,22 @@ struct FrameOptions {
     bool passes = true;                  // the frame keeps the render passes (--no-passes: the beauty alone, undenoised)
     std::vector<std::string> woven;      // TARGET=JSON (woven_assignment.h)
     std::string environment;             // empty: the scene's (or the studio, when it has no light)
+    std::optional<float> environmentRotation;  // degrees about +y; none: the scene's
+    float environmentIntensity = 1.0f;   // scales the environment's colour (and image)
     LoadOptions load;                    // --allow-any-path, --strict
     std::string camera;                  // --camera N|NAME|auto (chooseCamera()); empty: the scene's
     DisplayTransform display;
 };
 
 // Registers --width --height --spp --integrator --seed --sampler --max-depth --noise-threshold --filter
-// --denoise/--no-denoise --no-passes --allow-any-path --strict --camera --woven --environment --exposure --tone-map.
+// --denoise/--no-denoise --no-passes --allow-any-path --strict --camera --woven --environment
+// --environment-rotation --environment-intensity --exposure --tone-map.
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // The scene as a frame sees it: --environment, then the --woven edits, then, without
 // --environment, the studio environment if nothing lights it or its light is too dim to see
-// (lightByDefault(), said on stderr). Throws SceneError for a scene that cannot be
+// (lightByDefault(), said on stderr), then --environment-rotation and --environment-intensity on
+// whichever environment that is. Throws SceneError for a scene that cannot be
 // shown (no triangles, NaN vertices: validateScene()).
 void applySceneOptions(SceneDescription& scene, const FrameOptions& options);
 

@@ -3,11 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <iterator>
 
 #include "preview_window_impl.h"
 #include "scene_camera.h"
+#include "studio_environments.h"
 #include "woven_params.h"
 
 namespace woven {
@@ -24,7 +26,8 @@ float PreviewWindow::labelWidth() {
     static const char* const labels[] = {"exposure",   "tone map",        "target",     "woven",    "fabric",  "weave preset",
                                          "scene file", "draft file",      "render size", "spp",     "noise threshold",
                                          "integrator", "image file",      "intensity",  "position", "direction",
-                                         "environment", "shot files",    "swatch",     "fit seconds"};
+                                         "environment", "shot files",    "swatch",     "fit seconds", "rotation",
+                                         "brightness", "studio light"};
     float width = 0.0f;
     for (const char* label : labels) width = std::max(width, ImGui::CalcTextSize(label, nullptr, true).x);
     for (const ParamInfo& info : wovenParamTable())
@@ -52,6 +55,32 @@ void PreviewWindow::drawLightControls() {
     }
     changed |= ui::ColorEdit3("environment", &scene().environment.color.x,
                               ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    // Look development: one of the environments woven generates (keeping the rotation), the
+    // environment turned about +y, and brightened keeping its tint (the scene file's
+    // environment.rotation and environment.intensity).
+    Environment& env = scene().environment;
+    if (ui::BeginCombo("studio light", "(choose)")) {
+        for (const StudioEnvironment& studio : studioEnvironments())
+            if (ui::Selectable(studio.name, false)) {
+                const float rotation = env.rotation;
+                env = studio.make();
+                env.rotation = rotation;
+                changed = true;
+                status_ = std::string("lit by the ") + studio.name + " environment: " + studio.description;
+            }
+        ui::EndCombo();
+    }
+    float degrees = std::remainder(glm::degrees(env.rotation), 360.0f);
+    if (ui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.0f degrees")) {
+        env.rotation = glm::radians(degrees);
+        changed = true;
+    }
+    const float before = std::max({env.color.r, env.color.g, env.color.b});
+    float brightness = before;
+    if (ui::SliderFloat("brightness", &brightness, 0.0f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic)) {
+        env.color = before > 0.0f ? env.color * (brightness / before) : glm::vec3(brightness);
+        changed = true;
+    }
     if (changed) {
         lights_ = PreviewLights::fromScene(scene());
         ++sceneGeneration_;
@@ -72,8 +101,10 @@ void PreviewWindow::drawPanel() {
     // Fields end where the longest label still fits before the panel's edge, however wide it is.
     ImGui::PushItemWidth(-labels);
     ImGui::Text("%s", scenePath_.empty() ? "procedural cloth" : scenePath_.c_str());
-    ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
-                100.0f * resolution_.scale());
+    if (renderedView_) ImGui::TextWrapped("%s", rendered_.statusText().c_str());
+    else
+        ImGui::Text("%.1f ms/frame, drawn at %.0f%%", 1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f),
+                    100.0f * resolution_.scale());
     static const char* const toneMaps[] = {"clamp", "reinhard", "aces"};  // core's ToneMap order
     int toneMap = int(display_.toneMap);
     const bool exposureChanged = ui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
@@ -83,6 +114,9 @@ void PreviewWindow::drawPanel() {
     ui::Checkbox("filter distant weave", &filterWeave_);
     ImGui::SameLine();
     ui::Checkbox("shadows", &shadows_);
+    bool rendered = renderedView_;
+    if (ui::Checkbox("rendered view (R)", &rendered)) setRenderedView(rendered);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the path tracer's progressive frame in place of the OpenGL preview");
     if (ui::Button("Frame scene")) {
         const SceneBox box = sceneBounds(scene());
         camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);

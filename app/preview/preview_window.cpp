@@ -107,14 +107,18 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
 
     renderer_ = std::make_unique<PreviewRenderer>();
     glGenTextures(1, &finalTexture_);
+    glGenTextures(1, &renderedTexture_);
     display_ = options.frame.display;
     openScene(options.scene);
     if (!options.draft.empty()) openDraft(options.draft);
+    setRenderedView(options.rendered);
 }
 
 PreviewWindow::~PreviewWindow() {
     final_.cancel();
+    rendered_.stop();
     glDeleteTextures(1, &finalTexture_);
+    glDeleteTextures(1, &renderedTexture_);
     fabricMenu_.reset();
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
@@ -347,15 +351,19 @@ void PreviewWindow::drawFinalImage() {
         draw->AddRect(ImVec2(x0, 0.0f), ImVec2(x1, display.y), IM_COL32(255, 255, 255, 96), 0.0f, 0, 1.0f);
         return;
     }
+    drawInView(finalTexture_, float(finalImage_->radiance.width) / float(finalImage_->radiance.height));
+}
+
+void PreviewWindow::drawInView(GLuint texture, float imageAspect) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const ImVec4 area = viewArea();
     const ImVec2 free(area.z - area.x, area.w - area.y);
-    const float imageAspect = float(finalImage_->radiance.width) / float(finalImage_->radiance.height);
     ImVec2 size(free.x, free.x / imageAspect);
     if (size.y > free.y) size = ImVec2(free.y * imageAspect, free.y);
     const ImVec2 lo(area.x + (free.x - size.x) * 0.5f, area.y + (free.y - size.y) * 0.5f);
     draw->AddRectFilled(ImVec2(0, 0), display, IM_COL32(0, 0, 0, 255));
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(finalTexture_)), lo,
-                   ImVec2(lo.x + size.x, lo.y + size.y));
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), lo, ImVec2(lo.x + size.x, lo.y + size.y));
 }
 
 void PreviewWindow::writeWindowScreenshot(const std::string& path) {
@@ -420,6 +428,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"fit", {{"running", fit_.running()}, {"stage", fit_.progress().stage}, {"evaluations", fit_.progress().evaluations},
                  {"error", fit_.error()}, {"applied", fitApplied_},
                  {"loss_points", fit_.lossHistory().size()}}},
+        {"rendered", renderedViewState()},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
                    {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image},
                    {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},
@@ -433,12 +442,14 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     std::filesystem::rename(tmp, path);
 }
 
-// Whether the next frame may differ from the last with no input: a render or fit under way, the
-// view still at a reduced size, a drag held, or a counted run (--frames).
+// Whether the next frame may differ from the last with no input: a render, the Rendered view's
+// passes or a fit under way, the view still at a reduced size, a drag held, or a counted run
+// (--frames).
 bool PreviewWindow::busy() const {
-    const bool refining = refinement_ < kRefinementFrames - 1 && !(showFinal_ && finalImage_);
-    return final_.running() || fit_.running() || interacting_ || refining || resolution_.scale() < 1.0f || options_.frames > 0 ||
-           !deferredReleases_.empty() || !deferredModifierReleases_.empty();
+    const bool refining = refinement_ < kRefinementFrames - 1 && !(showFinal_ && finalImage_) && !renderedView_;
+    return final_.running() || fit_.running() || (renderedView_ && rendered_.running()) || interacting_ || refining ||
+           resolution_.scale() < 1.0f || options_.frames > 0 || !deferredReleases_.empty() ||
+           !deferredModifierReleases_.empty();
 }
 
 // Waits, drawing nothing, until an input arrives or the window has work; a few frames follow each
@@ -478,7 +489,8 @@ void PreviewWindow::run() {
     double frameStart = glfwGetTime();
     for (frame_ = 1; !glfwWindowShouldClose(window_); ++frame_) {
         glfwPollEvents();
-        const bool rested = restUntilNeeded();
+        bool rested = restUntilNeeded();
+        if (restWhileRendering()) rested = true;
         const double now = glfwGetTime();
         if (frame_ > 1 && !rested) resolution_.frameTook(now - frameStart);
         frameStart = now;
@@ -505,6 +517,7 @@ void PreviewWindow::run() {
         ImGui::NewFrame();
         releaseDeferredKeys();
         handleShortcuts();
+        handleViewKeys();
         widgets_.beginFrame();
         setCurrentWidgetMap(&widgets_);
         drawPanel();
@@ -514,6 +527,10 @@ void PreviewWindow::run() {
         widgets_.warnClashes();
         drawFinalImage();
         handleMouse();
+        // A focused text field is no interaction: the view stays sharp while typing.
+        interacting_ = steering_ || panelInteracting();
+        const bool finalShown = showFinal_ && finalImage_;
+        if (renderedView_ && !finalShown) drawRenderedView();
         ImGui::Render();
 
         int width = 0, height = 0;
@@ -522,15 +539,13 @@ void PreviewWindow::run() {
         glViewport(0, 0, width, height);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        if (width > 0 && height > 0 && !(showFinal_ && finalImage_)) {
+        if (width > 0 && height > 0 && !finalShown && !renderedView_) {
             Camera camera = camera_.camera();
             camera.aspect = float(width) / float(height);
             PreviewOptions preview;
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
             attempt([&] {
-                // A focused text field is no interaction: the view stays sharp while typing.
-                interacting_ = steering_ || panelInteracting();
                 const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
                 refinement_ = !interacting_ && view == refinedView_ ? refinement_ + 1 : 0;

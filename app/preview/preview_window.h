@@ -23,6 +23,7 @@ struct PreviewWindowOptions {
     // Each frame, the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON
     // (widget_map.h), written whole: for tests that click through the window.
     std::string widgetMap;
+    bool rendered = false;       // the view starts in Rendered mode (rendered_viewport.h)
 };
 
 // Runs until the window closes (or `frames` frames, or SIGINT or SIGTERM). Throws GlError when no window or context

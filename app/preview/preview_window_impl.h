@@ -25,6 +25,7 @@
 #include "preview_lights.h"
 #include "preview_renderer.h"
 #include "preview_window.h"
+#include "rendered_viewport.h"
 #include "scene_picker.h"
 #include "undo_history.h"
 #include "view_refinement.h"
@@ -128,6 +129,14 @@ private:
     const std::optional<glm::dvec2>& metresPerUvOf(const std::string& target);
     void updateFinalTexture(const FilmImage& film);
     void drawFinalImage();
+    // `texture`, letterboxed in the part of the window the panel leaves free.
+    static void drawInView(GLuint texture, float imageAspect);
+    // Rendered mode (rendered_view.cpp).
+    void setRenderedView(bool on);
+    void handleViewKeys();
+    bool restWhileRendering();
+    void drawRenderedView();
+    nlohmann::json renderedViewState() const;
     void writeWindowScreenshot(const std::string& path);
     void writeWidgetMap(const std::string& path);
     // `value` within [lo, hi], saying so in the status line when it was not.
@@ -220,6 +229,13 @@ private:
     bool showFinal_ = false;
     RenderSettings render_;  // the Render button's, but for the camera
     bool finalDone_ = false;  // the render ended (not cancelled, not failed) and its last pass is shown
+
+    // The view's Rendered mode: the path tracer's progressive frame in place of the GLSL one.
+    RenderedViewport rendered_;
+    bool renderedView_ = false;
+    std::optional<Image> renderedImage_;  // the latest it drew
+    DisplayTransform renderedDisplay_;    // the transform its texture was made with
+    GLuint renderedTexture_ = 0;
 
     // The panel's widgets this frame: ID clashes warned on stderr, and for --widget-map.
     WidgetMap widgets_;

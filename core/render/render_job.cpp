@@ -79,7 +79,7 @@ bool renderPass(const Integrator& integrator, int width, int height, SamplerKind
 struct RenderJob::Impl {
     std::shared_ptr<const SceneDescription> description;
     RenderSettings settings;
-    std::unique_ptr<RenderScene> scene;
+    std::shared_ptr<const RenderScene> scene;
     Camera camera;
     std::unique_ptr<CameraModel> cameraModel;
     std::unique_ptr<Integrator> integrator;
@@ -185,7 +185,10 @@ RenderSettings defaultRenderSettings(const SceneDescription& scene) {
     return settings;
 }
 
-RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
+namespace {
+
+// What the constructors refuse, before anything is built.
+void checkSettings(const RenderSettings& settings) {
     if (settings.width <= 0 || settings.height <= 0)
         throw std::invalid_argument("image size must be positive, got " + std::to_string(settings.width) + "x" +
                                     std::to_string(settings.height));
@@ -197,9 +200,29 @@ RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettin
     if (settings.maxDepth < 1) throw std::invalid_argument("the maximum depth must be at least 1");
     if (!(settings.noiseThreshold >= 0.0)) throw std::invalid_argument("the noise threshold must not be negative");
     checkFrameFitsInMemory(settings.width, settings.height);
+}
+
+}  // namespace
+
+RenderJob::RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings) {
+    checkSettings(settings);
+    auto built = std::make_shared<const RenderScene>(scene);
     impl_ = std::make_unique<Impl>(std::move(scene), std::move(settings));
+    impl_->scene = std::move(built);
+    setUp();
+}
+
+RenderJob::RenderJob(std::shared_ptr<const RenderScene> scene, RenderSettings settings) {
+    checkSettings(settings);
+    // The description lives as long as the scene built from it.
+    std::shared_ptr<const SceneDescription> description(scene, &scene->description());
+    impl_ = std::make_unique<Impl>(std::move(description), std::move(settings));
+    impl_->scene = std::move(scene);
+    setUp();
+}
+
+void RenderJob::setUp() {
     Impl& im = *impl_;
-    im.scene = std::make_unique<RenderScene>(im.description);
     if (im.scene->lights().empty())
         throw SceneError(im.description->source +
                          ": scene has no lights: add an emissive material, a KHR_lights_punctual light or an environment");

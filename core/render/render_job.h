@@ -62,9 +62,15 @@ struct RenderProgress {
     double raysPerSecond = 0.0;
 };
 
+class RenderScene;
+
 class RenderJob {
 public:
     RenderJob(std::shared_ptr<const SceneDescription> scene, RenderSettings settings);
+    // A render of a scene already built (its BVH, materials and lights): the previewer's
+    // rendered viewport keeps one across camera moves, which change nothing of it. The frame is
+    // the one the constructor above makes of scene->description().
+    RenderJob(std::shared_ptr<const RenderScene> scene, RenderSettings settings);
     ~RenderJob();
 
     // Blocks until done or `cancel` becomes true; renders in passes of one sample per pixel (per
@@ -78,6 +84,8 @@ public:
     const std::string& integratorName() const;
 
 private:
+    void setUp();  // the camera and integrator, once impl_ holds the scene and settings
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -150,7 +150,7 @@ private:
     }
 
     void readEnvironment(const json& env, Environment& environment) const {
-        requireKeys(env, "environment", {"color", "image", "rotation"});
+        requireKeys(env, "environment", {"color", "image", "intensity", "rotation"});
         if (env.contains("image")) {
             const std::string image = resolve(string(env["image"], "environment.image"));
             try {
@@ -164,6 +164,12 @@ private:
             environment.color = color(env["color"], "environment.color");
             if (const std::string problem = lightValueProblem(environment.color); !problem.empty())
                 fail("environment.color", problem);
+        }
+        // A scale of the colour (and image) that keeps its tint: the look-development knob.
+        if (env.contains("intensity")) {
+            environment.color *= numberIn(env["intensity"], "environment.intensity", 0.0, 1e6);
+            if (const std::string problem = lightValueProblem(environment.color); !problem.empty())
+                fail("environment.intensity", "times environment.color " + problem);
         }
         if (env.contains("rotation")) environment.rotation = glm::radians(number(env["rotation"], "environment.rotation"));
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "environment_mapping.h"
+#include "studio_environments.h"
 #include "image_io.h"
 #include "light_limits.h"
 #include "mesh_instances.h"
@@ -20,26 +21,6 @@ namespace woven {
 namespace {
 
 bool anyPositive(const glm::vec3& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
-
-// A rectangular soft box seen from the scene: `centre` its direction, `halfWidth` and
-// `halfHeight` its angular half sizes (radians), edges fading over `soft` radians.
-struct SoftBox {
-    glm::vec3 centre;
-    float halfWidth, halfHeight, soft, radiance;
-
-    float at(const glm::vec3& d) const {
-        const glm::vec3 c = glm::normalize(centre);
-        const glm::vec3 right = glm::normalize(glm::cross(c, glm::vec3(0.0f, 1.0f, 0.0f)));
-        const glm::vec3 up = glm::cross(right, c);
-        const float forward = glm::dot(d, c);
-        if (forward <= 0.0f) return 0.0f;
-        const float x = std::atan2(glm::dot(d, right), forward), y = std::atan2(glm::dot(d, up), forward);
-        const auto edge = [&](float a, float half) {
-            return std::clamp((half - std::abs(a)) / soft + 0.5f, 0.0f, 1.0f);
-        };
-        return radiance * edge(x, halfWidth) * edge(y, halfHeight);
-    }
-};
 
 // The mean linear colour of a texture's texels (an emissive texture: sRGB-decoded where it is
 // sRGB): what it scales its factor by over the surface, taken as mapped evenly.
@@ -184,6 +165,7 @@ std::shared_ptr<Image> readEnvironmentImage(const std::string& path) {
 
 Environment environmentFromOption(const std::string& value) {
     if (value == "none") return Environment{};  // black: the scene's punctual lights alone
+    if (const StudioEnvironment* studio = findStudioEnvironment(value)) return studio->make();
     char* end = nullptr;
     const float grey = std::strtof(value.c_str(), &end);
     Environment env;

@@ -289,7 +289,10 @@ def main(woven):
 
         # The Fabrics menu: denim chosen in its combo becomes the edited material at denim's thread
         # counts on the 2 m procedural cloth, and the panel measures it as `woven fabrics` does.
-        while not window.item('fabric', 'combo')['visible']:
+        # Scrolled until the whole combo is within the panel's clip, where a click reaches it.
+        while not (window.item('fabric', 'combo')['visible'] and
+                   m['windows']['woven']['clip'][1] <= window.item('fabric', 'combo')['frame'][1] and
+                   window.item('fabric', 'combo')['frame'][3] <= m['windows']['woven']['clip'][3]):
             x0, y0, x1, y1 = m['windows']['woven']['clip']
             wx, wy = m['state']['window']['pos']
             window.xdotool('mousemove', str(int(wx + (x0 + x1) / 2)), str(int(wy + (y0 + y1) / 2)))

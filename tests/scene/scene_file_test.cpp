@@ -116,6 +116,18 @@ TEST_F(SceneFile, OnlyTheGltfIsRequired) {
     EXPECT_EQ(scene.environment.color, glm::vec3(0.0f));
 }
 
+TEST_F(SceneFile, EnvironmentIntensityScalesItsColourKeepingTheTint) {
+    const SceneDescription tinted =
+        loadScene(write({{"gltf", "sub/scene.gltf"}, {"environment", {{"color", {0.2, 0.4, 0.8}}, {"intensity", 2.5}}}}));
+    EXPECT_EQ(tinted.environment.color, glm::vec3(0.2f, 0.4f, 0.8f) * 2.5f);
+    // With an image and no colour: the image as it is, scaled.
+    const float hdr[3] = {1.0f, 2.0f, 3.0f};
+    ASSERT_TRUE(stbi_write_hdr(dir.file("sub/sky.hdr").c_str(), 1, 1, 3, hdr));
+    const SceneDescription image =
+        loadScene(write({{"gltf", "sub/scene.gltf"}, {"environment", {{"image", "sub/sky.hdr"}, {"intensity", 0.5}}}}));
+    EXPECT_EQ(image.environment.color, glm::vec3(0.5f));
+}
+
 TEST_F(SceneFile, ErrorsNameTheFileAndTheKey) {
     const json ok = {{"gltf", "sub/scene.gltf"}};
     const auto with = [&](const std::string& key, const json& value) {
@@ -127,6 +139,9 @@ TEST_F(SceneFile, ErrorsNameTheFileAndTheKey) {
     EXPECT_THAT(error(with("environment", {{"colour", 1}})), HasSubstr("environment.colour: unknown key"));
     EXPECT_THAT(error(with("environment", {{"color", {1, -1, 0}}})), HasSubstr("environment.color: must not be negative"));
     EXPECT_THAT(error(with("environment", {{"image", "nothere.hdr"}})), HasSubstr("environment.image: "));
+    EXPECT_THAT(error(with("environment", {{"intensity", -1}})), HasSubstr("environment.intensity: is -1, must be from 0"));
+    EXPECT_THAT(error(with("environment", {{"color", 1e6}, {"intensity", 1e6}})),
+                HasSubstr("environment.intensity: times environment.color is 1e+12, more than woven's limit"));
     EXPECT_THAT(error(with("materials", {{"Cloth", {{"cy", 2}}}})), HasSubstr("materials.Cloth: "));
     EXPECT_THAT(error(with("materials", {{"Cloth", {{"cy", 2}}}})), HasSubstr("cy"));
     EXPECT_THAT(error(with("materials", {{"Cloth", {{"colour", 2}}}})), HasSubstr("unknown woven material field 'colour'"));
