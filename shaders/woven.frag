@@ -116,7 +116,10 @@ vec3 transmittedLight(YarnPoint y, Frame tangent, YarnPoint other, Frame otherTa
         vec3 wiLocal = toLocal(front.frame, wi);
         sum += yarnTransmission(front.lobe, T, front.gloss, woLocal, wiLocal) * L * abs(wiLocal.z);
     }
-    return sum;
+    // The ambient light from behind, as reflectedLight() takes it from the front: T is what the
+    // yarns pass of light from the whole hemisphere behind them (the transmission lobe, diffuse
+    // and along the fibres, integrates to it), so a backlit sky shows through as in core.
+    return sum + ambientRadiance * T;
 }
 #endif
 
