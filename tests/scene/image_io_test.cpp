@@ -5,13 +5,13 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <OpenImageIO/imageio.h>
 #include <stb_image_write.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "atomic_file.h"
+#include "exr_file.h"
 #include "temp_dir.h"
 
 namespace woven {
@@ -225,12 +225,14 @@ TEST(Exr, KeepsSampleRangesPast32BitsAndTheFrameIdentity) {
 TEST(Exr, ReadsTheIntSampleRangeOfEarlierParts) {
     TempDir dir;
     const std::string path = dir.file("old.exr");
-    OIIO::ImageSpec spec(2, 1, 3, OIIO::TypeDesc::FLOAT);
-    spec.attribute("wovenFirstSample", 2147483646);
-    spec.attribute("wovenSampleCount", 1);
-    const float pixels[6] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
-    auto out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    ExrFile file;
+    file.width = 2;
+    file.height = 1;
+    file.channels = {{"R", ExrChannelType::Float, {0.1f, 0.4f}, {}},
+                     {"G", ExrChannelType::Float, {0.2f, 0.5f}, {}},
+                     {"B", ExrChannelType::Float, {0.3f, 0.6f}, {}}};
+    file.attributes = {{"wovenFirstSample", 2147483646}, {"wovenSampleCount", 1}};
+    writeExrFile(path, file);
     const ExrImage old = readExr(path);
     ASSERT_TRUE(old.samples);
     EXPECT_EQ(old.samples->first, 2147483646);
@@ -238,9 +240,8 @@ TEST(Exr, ReadsTheIntSampleRangeOfEarlierParts) {
     EXPECT_FALSE(old.frame);
 
     // Some of the identity's attributes without the rest: not a file woven wrote.
-    spec.attribute("wovenSeed", "7");
-    out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    file.attributes["wovenSeed"] = std::string("7");
+    writeExrFile(path, file);
     EXPECT_THAT([&] { readExr(path); },
                 testing::ThrowsMessage<ImageError>(testing::HasSubstr("has only some of the attributes wovenScene")));
 }
