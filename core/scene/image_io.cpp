@@ -58,6 +58,11 @@ const char* formatName(ImageFormat format) {
     return "";
 }
 
+// stb_image's reason for a failure is a word or two ("outofdata"): said as its.
+std::string stbReason() {
+    return std::string("stb_image says \"") + stbi_failure_reason() + "\"";
+}
+
 // PNG and Radiance HDR through stb_image, checked against the limits before it decodes.
 Pixels decodeWithStb(const unsigned char* data, size_t size, ImageFormat format, const std::string& name) {
     const std::string cannot = std::string("cannot decode the ") + formatName(format) + " image: ";
@@ -71,11 +76,11 @@ Pixels decodeWithStb(const unsigned char* data, size_t size, ImageFormat format,
         fail(name, cannot + "its first line is neither #?RADIANCE nor #?RGBE");
     const int length = int(size);
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info_from_memory(data, length, &width, &height, &channels)) fail(name, cannot + stbi_failure_reason());
+    if (!stbi_info_from_memory(data, length, &width, &height, &channels)) fail(name, cannot + stbReason());
     checkImageSize(width, height, channels, name);
     Pixels p;
     const auto take = [&](auto* decoded, auto* into) {
-        if (!decoded) fail(name, cannot + stbi_failure_reason());
+        if (!decoded) fail(name, cannot + stbReason());
         const std::unique_ptr<void, void (*)(void*)> owned(decoded, stbi_image_free);
         if (p.width != width || p.height != height || p.channels < 1 || p.channels > 4)
             fail(name, cannot + "its size changed as it was decoded");
