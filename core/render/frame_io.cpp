@@ -346,11 +346,13 @@ void writeExr(const std::string& path, const ExrImage& exr, ExrPrecision precisi
         hasPasses ? int(std::size(kExactGroups)) - (exr.lacksDirectPass ? kDirectGroups : 0) : exr.sampleSums.empty() ? 0 : 1;
     for (int g = 0; g < exactGroups; ++g)
         for (int c = 0; kExactGroups[g].channels[c]; ++c) {
-            std::vector<float>* words[ExactSum::kFloatWords];
-            for (int k = 0; k < ExactSum::kFloatWords; ++k) words[k] = &channel(exactChannelName(kExactGroups[g], k, c), ExrChannelType::Float);
+            // The words' channels are the last kFloatWords added (a reference to one would not
+            // survive adding the next).
+            for (int k = 0; k < ExactSum::kFloatWords; ++k) channel(exactChannelName(kExactGroups[g], k, c), ExrChannelType::Float);
+            ExrChannel* words = &file.channels[file.channels.size() - ExactSum::kFloatWords];
             for (size_t i = 0; i < count; ++i) {
                 const std::array<float, ExactSum::kFloatWords> w = exactSum(exr, g, i, c).floatWords();
-                for (int k = 0; k < ExactSum::kFloatWords; ++k) (*words[k])[i] = w[size_t(k)];
+                for (int k = 0; k < ExactSum::kFloatWords; ++k) words[k].values[i] = w[size_t(k)];
             }
         }
     if (exr.samples) {
