@@ -14,6 +14,7 @@
 #include "exr_file.h"
 #include "image_checks.h"
 #include "jpeg_decoding.h"
+#include "png_decoding.h"
 
 namespace woven {
 
@@ -47,56 +48,33 @@ T channelOf(int channels, int c, T opaque, Get get) {
     return channels >= 4 ? get(3) : opaque;
 }
 
-const char* formatName(ImageFormat format) {
-    switch (format) {
-        case ImageFormat::Png: return "PNG";
-        case ImageFormat::Jpeg: return "JPEG";
-        case ImageFormat::Webp: return "WebP";
-        case ImageFormat::Hdr: return "Radiance HDR";
-        case ImageFormat::Exr: return "OpenEXR";
-    }
-    return "";
-}
-
 // stb_image's reason for a failure is a word or two ("outofdata"): said as its.
 std::string stbReason() {
     return std::string("stb_image says \"") + stbi_failure_reason() + "\"";
 }
 
-// PNG and Radiance HDR through stb_image, checked against the limits before it decodes.
-Pixels decodeWithStb(const unsigned char* data, size_t size, ImageFormat format, const std::string& name) {
-    const std::string cannot = std::string("cannot decode the ") + formatName(format) + " image: ";
+// Radiance HDR through stb_image, checked against the limits before it decodes.
+Pixels decodeHdr(const unsigned char* data, size_t size, const std::string& name) {
+    const std::string cannot = "cannot decode the Radiance HDR image: ";
     if (size > size_t(std::numeric_limits<int>::max())) fail(name, cannot + "the file is over 2 GiB");
     // stb_image recognises Radiance HDR by a whole first line; other bytes would go on to its
     // loosely recognised formats (TGA).
     const auto firstLineIs = [&](const std::string& line) {
         return size >= line.size() && std::memcmp(data, line.data(), line.size()) == 0;
     };
-    if (format == ImageFormat::Hdr && !firstLineIs("#?RADIANCE\n") && !firstLineIs("#?RGBE\n"))
-        fail(name, cannot + "its first line is neither #?RADIANCE nor #?RGBE");
+    if (!firstLineIs("#?RADIANCE\n") && !firstLineIs("#?RGBE\n")) fail(name, cannot + "its first line is neither #?RADIANCE nor #?RGBE");
     const int length = int(size);
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(data, length, &width, &height, &channels)) fail(name, cannot + stbReason());
     checkImageSize(width, height, channels, name);
     Pixels p;
-    const auto take = [&](auto* decoded, auto* into) {
-        if (!decoded) fail(name, cannot + stbReason());
-        const std::unique_ptr<void, void (*)(void*)> owned(decoded, stbi_image_free);
-        if (p.width != width || p.height != height || p.channels < 1 || p.channels > 4)
-            fail(name, cannot + "its size changed as it was decoded");
-        into->assign(decoded, decoded + size_t(width) * size_t(height) * size_t(p.channels));
-    };
-    if (format == ImageFormat::Hdr) {
-        p.floatFormat = true;
-        take(stbi_loadf_from_memory(data, length, &p.width, &p.height, &p.channels, 0), &p.floats);
-    } else if (stbi_is_16_bit_from_memory(data, length)) {
-        std::vector<uint16_t> words;
-        take(stbi_load_16_from_memory(data, length, &p.width, &p.height, &p.channels, 0), &words);
-        p.floats.resize(words.size());
-        for (size_t i = 0; i < words.size(); ++i) p.floats[i] = words[i] * (1.0f / 65535.0f);
-    } else {
-        take(stbi_load_from_memory(data, length, &p.width, &p.height, &p.channels, 0), &p.bytes);
-    }
+    p.floatFormat = true;
+    float* decoded = stbi_loadf_from_memory(data, length, &p.width, &p.height, &p.channels, 0);
+    if (!decoded) fail(name, cannot + stbReason());
+    const std::unique_ptr<float, void (*)(void*)> owned(decoded, stbi_image_free);
+    if (p.width != width || p.height != height || p.channels < 1 || p.channels > 4)
+        fail(name, cannot + "its size changed as it was decoded");
+    p.floats.assign(decoded, decoded + size_t(width) * size_t(height) * size_t(p.channels));
     return p;
 }
 
@@ -137,8 +115,19 @@ Pixels decodeWebp(const unsigned char* data, size_t size, const std::string& nam
 
 Pixels decodePixels(const unsigned char* data, size_t size, const std::string& name) {
     const ImageFormat format = detectImageFormat(data, size, name);
-    if (format == ImageFormat::Webp) return decodeWebp(data, size, name);
     if (format == ImageFormat::Exr) return decodeExr(data, size, name);
+    if (format == ImageFormat::Hdr) return decodeHdr(data, size, name);
+    if (format == ImageFormat::Png) {
+        PngPixels png = decodePng(data, size, name);
+        Pixels p;
+        p.width = png.width;
+        p.height = png.height;
+        p.channels = png.channels;
+        p.bytes = std::move(png.bytes);
+        p.floats.resize(png.words.size());
+        for (size_t i = 0; i < png.words.size(); ++i) p.floats[i] = png.words[i] * (1.0f / 65535.0f);
+        return p;
+    }
     if (format == ImageFormat::Jpeg) {
         JpegPixels jpeg = decodeJpeg(data, size, name);
         Pixels p;
@@ -148,7 +137,7 @@ Pixels decodePixels(const unsigned char* data, size_t size, const std::string& n
         p.bytes = std::move(jpeg.bytes);
         return p;
     }
-    return decodeWithStb(data, size, format, name);
+    return decodeWebp(data, size, name);
 }
 
 }  // namespace

@@ -42,8 +42,8 @@ enum class ChannelEncoding { Srgb, Linear };
 
 // Reads PNG, JPEG, WebP, Radiance HDR or OpenEXR (its R, G, B channels; a file with only Y is
 // read as grey), recognised by their first bytes; any other format is refused by name. Decoding
-// is each format's own library's: stb_image (PNG, HDR), libjpeg-turbo, libwebp, OpenEXR. Grey
-// images are expanded to RGB; alpha is dropped.
+// is each format's own library's: libpng, libjpeg-turbo, libwebp, OpenEXR, and stb_image for
+// Radiance HDR. Grey images are expanded to RGB; alpha is dropped.
 Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncoding::Srgb);
 
 // The same for an encoded image held in memory (a texture embedded in a .glb);
