@@ -12,6 +12,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 
+#include <algorithm>
 #include <cstring>
 #include <thread>
 
