@@ -1,6 +1,7 @@
 #include "seed_files.h"
 
-#include <OpenImageIO/imageio.h>
+#include <stb_image_write.h>
+#include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -28,13 +29,40 @@ void writeText(const fs::path& path, const std::string& text) {
     if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
 }
 
-// JPEG and Radiance HDR, which woven reads but does not write.
-void writeWithOiio(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type,
-                   const void* pixels) {
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out || !out->open(path.string(), OIIO::ImageSpec(width, height, channels, type)) ||
-        !out->write_image(type, pixels) || !out->close())
-        throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
+// JPEG and Radiance HDR, which woven reads but does not write: stb_image_write's.
+void writeJpeg(const fs::path& path, int width, int height, const std::vector<unsigned char>& rgb) {
+    if (!stbi_write_jpg(path.c_str(), width, height, 3, rgb.data(), 90)) throw std::runtime_error("cannot write " + path.string());
+}
+void writeHdr(const fs::path& path, int width, int height, const std::vector<float>& rgb) {
+    if (!stbi_write_hdr(path.c_str(), width, height, 3, rgb.data())) throw std::runtime_error("cannot write " + path.string());
+}
+
+// A 16-bit grey PNG, which stb_image_write does not write: the signature, IHDR, one IDAT of
+// unfiltered rows and IEND, each chunk with its CRC-32 (zlib's).
+void writeGrey16Png(const fs::path& path, int width, int height, const std::vector<uint16_t>& grey) {
+    const auto bigEndian = [](uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16 & 255), char(v >> 8 & 255), char(v & 255)};
+    };
+    std::string png = "\x89PNG\r\n\x1a\n";
+    const auto chunk = [&](const std::string& type, const std::string& data) {
+        const std::string body = type + data;
+        png += bigEndian(uint32_t(data.size())) + body +
+               bigEndian(uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
+    };
+    chunk("IHDR", bigEndian(uint32_t(width)) + bigEndian(uint32_t(height)) + std::string{16, 0, 0, 0, 0});  // 16-bit grey
+    std::string rows;
+    for (int y = 0; y < height; ++y) {
+        rows += '\0';  // no filter
+        for (int x = 0; x < width; ++x) rows += bigEndian(grey[size_t(y * width + x)]).substr(2);
+    }
+    uLongf size = compressBound(uLong(rows.size()));
+    std::string compressed(size, '\0');
+    if (compress(reinterpret_cast<Bytef*>(compressed.data()), &size, reinterpret_cast<const Bytef*>(rows.data()), uLong(rows.size())) != Z_OK)
+        throw std::runtime_error("cannot compress " + path.string());
+    compressed.resize(size);
+    chunk("IDAT", compressed);
+    chunk("IEND", "");
+    writeText(path, png);
 }
 
 TextureImage checker() {
@@ -131,7 +159,7 @@ ExrImage render(bool withSamples) {
 void writeSkyHdr(const fs::path& path) {
     const std::vector<float> sky = {0.5f, 0.6f, 0.9f, 0.4f, 0.5f, 0.8f, 3, 3, 2.5f, 0.3f, 0.3f, 0.3f,
                                     0.2f, 0.2f, 0.2f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.2f, 0.2f, 0.2f};
-    writeWithOiio(path, 4, 2, 3, OIIO::TypeFloat, sky.data());
+    writeHdr(path, 4, 2, sky);
 }
 
 void copyInto(const fs::path& from, const fs::path& folder) {
@@ -194,10 +222,10 @@ void writeSeedCorpora(const std::string& dir) {
     writePng((images / "rgb.png").string(), render(false).image);
     writeTexturePng((images / "rgba.png").string(), checker());
     const std::vector<uint16_t> grey = {0, 1000, 20000, 65535, 300, 40000};
-    writeWithOiio(images / "grey16.png", 3, 2, 1, OIIO::TypeDesc::UINT16, grey.data());
+    writeGrey16Png(images / "grey16.png", 3, 2, grey);
     std::vector<unsigned char> photo(16 * 8 * 3);
     for (size_t i = 0; i < photo.size(); ++i) photo[i] = (unsigned char)(i * 37 % 251);
-    writeWithOiio(images / "photo.jpg", 16, 8, 3, OIIO::TypeDesc::UINT8, photo.data());
+    writeJpeg(images / "photo.jpg", 16, 8, photo);
     writeSkyHdr(images / "sky.hdr");
     writeExr((images / "linear.exr").string(), render(false));
 

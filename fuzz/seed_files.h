@@ -1,6 +1,7 @@
 #pragma once
-// Small valid inputs, written by woven's own writers (WIF, PNG, EXR), OpenImageIO (JPEG, HDR)
-// and the tests' GltfBuilder, so that no file the fuzzers start from is someone else's.
+// Small valid inputs, written by woven's own writers (WIF, PNG, EXR), stb_image_write (JPEG,
+// HDR), a few lines of this file's (16-bit PNG) and the tests' GltfBuilder, so that no file the
+// fuzzers start from is someone else's.
 #include <string>
 
 namespace woven::fuzz {

@@ -1,7 +1,7 @@
 # Opens frame EXRs with Blender as its compositor does and writes what it read, so that a test can
-# compare that with what OpenImageIO reads (tests/app/exr_readers_test.cpp):
+# compare that with what woven reads (tests/app/exr_readers_test.cpp):
 #   blender -b --factory-startup --python tools/blender_exr_check.py -- IN.exr WIDTH HEIGHT OUT.exr [...]
-# For each IN (WIDTH x HEIGHT as OpenImageIO reads it) it prints "IN: passes NAME,NAME,..." (the
+# For each IN (WIDTH x HEIGHT as woven reads it) it prints "IN: passes NAME,NAME,..." (the
 # Image node's outputs: the passes Blender found in the file's first layer) and renders the
 # compositor, the Image node's beauty into the Composite node, at WIDTH x HEIGHT to OUT (RGB, 32-bit
 # float). bpy.data.images.load alone reports every multi-layer EXR, Blender's own renders

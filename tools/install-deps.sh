@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages woven needs, only those missing. Safe to run repeatedly.
+# docs/BUILDING.md lists what each package brings with it.
 #   tools/install-deps.sh          what building woven and rendering need (README's first command)
 #   tools/install-deps.sh --tests  also what the test suite needs (README's second command):
 #                                  GoogleTest, Google Benchmark, Xvfb and xdotool (the window is
@@ -23,7 +24,8 @@ esac
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
-  libembree-dev libtinygltf-dev libopenimageio-dev libdraco-dev libmeshoptimizer-dev libwebp-dev
+  libembree-dev libtinygltf-dev libdraco-dev libmeshoptimizer-dev libxxhash-dev
+  libpng-dev libjpeg62-turbo-dev libwebp-dev libopenexr-dev  # images: each format's own library (docs/BUILDING.md)
   libfftw3-dev libnlopt-cxx-dev  # woven fit's spectra and optimiser
   zlib1g-dev  # the U3MA archive of woven export (deflate, CRC-32)
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgles-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0

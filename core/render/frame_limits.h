@@ -11,7 +11,7 @@ namespace woven {
 // What a frame holds per pixel while it renders and is written, rounded up: the film's exact
 // sums and count with its render passes' sums (260 bytes), a pass with its first hits and
 // combined estimates (64), the snapshot and the frame file's copy of it (2 x 272) with the
-// passes' means (40), and the EXR's 95 interleaved channels with OpenImageIO's copy (760), plus
+// passes' means (40), and the EXR's 95 channels, a float each, as written (380), plus
 // room for per-pixel statistics and the denoiser's buffers.
 constexpr size_t kFrameBytesPerPixel = 2048;
 

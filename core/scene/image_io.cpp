@@ -1,16 +1,20 @@
 #include "image_io.h"
 
+#include <stb_image.h>
 #include <stb_image_write.h>
 #include <webp/decode.h>
 
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <memory>
 
 #include "atomic_file.h"
-#include "exr_header.h"
-#include "file_reading.h"
-#include "opened_image.h"
+#include "exr_file.h"
+#include "image_checks.h"
+#include "jpeg_decoding.h"
+#include "png_decoding.h"
 
 namespace woven {
 
@@ -20,183 +24,159 @@ namespace {
     throw ImageError(path + ": " + problem);
 }
 
-ImageFormat detectFormat(const unsigned char* data, size_t size, const std::string& name) {
-    const auto startsWith = [&](std::initializer_list<unsigned char> magic) {
-        return size >= magic.size() && std::equal(magic.begin(), magic.end(), data);
-    };
-    const auto startsWithText = [&](const char* text) {
-        const size_t n = std::strlen(text);
-        return size >= n && std::memcmp(data, text, n) == 0;
-    };
-    if (startsWith({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageFormat::Png;
-    if (startsWith({0xff, 0xd8, 0xff})) return ImageFormat::Jpeg;
-    if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0) return ImageFormat::Webp;
-    if (startsWithText("#?RADIANCE") || startsWithText("#?RGBE")) return ImageFormat::Hdr;
-    if (startsWith({0x76, 0x2f, 0x31, 0x01})) return ImageFormat::Exr;
-    std::string what = "an unknown format";
-    if (startsWithText("GIF8")) what = "GIF";
-    else if (startsWithText("BM")) what = "BMP";
-    else if (startsWith({'I', 'I', 42, 0}) || startsWith({'M', 'M', 0, 42})) what = "TIFF";
-    else if (startsWith({0xab, 'K', 'T', 'X'})) what = "KTX";
-    else if (startsWithText("DDS ")) what = "DDS";
-    else if (size >= 2 && data[0] == 'P' && data[1] >= '1' && data[1] <= '7') what = "PNM";
-    else if (size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3 || data[2] >= 9)) what = "TGA or an unknown format";
-    fail(name, "the image is " + what + ": woven reads PNG, JPEG, WebP, Radiance HDR (.hdr) and OpenEXR (.exr)");
-}
+// An image as decoded, before woven's colour handling: `channels` interleaved values a pixel,
+// from the top row.
+struct Pixels {
+    int width = 0, height = 0, channels = 0;
+    std::vector<unsigned char> bytes;  // 8-bit sources
+    // 16-bit sources scaled to 0..1; float sources as they are. 8- and 16-bit values are scaled
+    // by multiplying with the reciprocal, as OpenImageIO did, so textures decode as before.
+    std::vector<float> floats;
+    bool floatFormat = false;          // Radiance HDR and OpenEXR: linear, never colour-decoded
 
-const char* formatExtension(ImageFormat f) {
-    switch (f) {
-        case ImageFormat::Png: return ".png";
-        case ImageFormat::Jpeg: return ".jpg";
-        case ImageFormat::Webp: return ".webp";
-        case ImageFormat::Hdr: return ".hdr";
-        case ImageFormat::Exr: return ".exr";
+    float value(size_t pixel, int c) const {
+        const size_t i = pixel * size_t(channels) + size_t(c);
+        return bytes.empty() ? floats[i] : bytes[i] * (1.0f / 255.0f);
     }
-    return "";
+};
+
+// RGBA from 1 to 4 channels (grey, grey + alpha, RGB, RGBA).
+template <typename T, typename Get>
+T channelOf(int channels, int c, T opaque, Get get) {
+    if (channels <= 2) return c < 3 ? get(0) : (channels == 2 ? get(1) : opaque);
+    if (c < 3) return get(c);
+    return channels >= 4 ? get(3) : opaque;
 }
 
-// The limits, before any pixel is decoded.
-void checkImageSize(int64_t width, int64_t height, int channels, const std::string& name) {
-    if (width <= 0 || height <= 0)
-        fail(name, "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")");
-    if (width > kMaxImageSide || height > kMaxImageSide ||
-        width * height > kMaxImagePixels)
-        fail(name, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
-                       ", more than woven reads (" + std::to_string(kMaxImageSide) + " on a side, " +
-                       std::to_string(kMaxImagePixels / (1 << 20)) + " Mpixels)");
-    if (channels <= 0 || channels > kMaxImageChannels)
-        fail(name, "the image has " + std::to_string(channels) + " channels (woven reads 1 to " +
-                       std::to_string(kMaxImageChannels) + ")");
-    const int64_t decodedBytes = width * height * channels * 4;
-    if (decodedBytes > kMaxImageDecodedBytes)
-        fail(name, "the image's " + std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
-                       std::to_string(channels) + " channels decode to " + std::to_string(decodedBytes >> 20) +
-                       " MiB, more than woven's limit of " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB");
+// stb_image's reason for a failure is a word or two ("outofdata"): said as its.
+std::string stbReason() {
+    return std::string("stb_image says \"") + stbi_failure_reason() + "\"";
 }
 
-}  // namespace
-
-std::string oiioError(const OIIO::ImageInput* input) {
-    std::string message = input ? input->geterror() : OIIO::geterror();
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-    return message.empty() ? "unknown error" : message;
+// Radiance HDR through stb_image, checked against the limits before it decodes.
+Pixels decodeHdr(const unsigned char* data, size_t size, const std::string& name) {
+    const std::string cannot = "cannot decode the Radiance HDR image: ";
+    if (size > size_t(std::numeric_limits<int>::max())) fail(name, cannot + "the file is over 2 GiB");
+    // stb_image recognises Radiance HDR by a whole first line; other bytes would go on to its
+    // loosely recognised formats (TGA).
+    const auto firstLineIs = [&](const std::string& line) {
+        return size >= line.size() && std::memcmp(data, line.data(), line.size()) == 0;
+    };
+    if (!firstLineIs("#?RADIANCE\n") && !firstLineIs("#?RGBE\n")) fail(name, cannot + "its first line is neither #?RADIANCE nor #?RGBE");
+    const int length = int(size);
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(data, length, &width, &height, &channels)) fail(name, cannot + stbReason());
+    checkImageSize(width, height, channels, name);
+    Pixels p;
+    p.floatFormat = true;
+    float* decoded = stbi_loadf_from_memory(data, length, &p.width, &p.height, &p.channels, 0);
+    if (!decoded) fail(name, cannot + stbReason());
+    const std::unique_ptr<float, void (*)(void*)> owned(decoded, stbi_image_free);
+    if (p.width != width || p.height != height || p.channels < 1 || p.channels > 4)
+        fail(name, cannot + "its size changed as it was decoded");
+    p.floats.assign(decoded, decoded + size_t(width) * size_t(height) * size_t(p.channels));
+    return p;
 }
 
-OpenedImage openImage(const unsigned char* data, size_t size, const std::string& name) {
-    OpenedImage image;
-    image.format = detectFormat(data, size, name);
-    // OpenEXR allocates a part's line buffers as it opens the file: the limits come first.
-    if (image.format == ImageFormat::Exr)
-        for (const ExrPartSize& part : checkExrHeaders(data, size, name))
-            if (part.channels > 0) checkImageSize(part.width, part.height, part.channels, name);
-    image.memory = std::make_unique<CheckedMemReader>(data, size);
-    // The name only tells OpenImageIO which decoder to use: the bytes come from memory. Alpha
-    // stays as stored (glTF's is not premultiplied; OpenImageIO would premultiply it).
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    void* proxy = image.memory.get();
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    // Bytes that the decoder refuses would otherwise go to every other reader OpenImageIO has
-    // (DICOM, JPEG 2000, ...): slow, and far more decoders than woven means to expose.
-    static const bool onlyTheNamedDecoder = OIIO::attribute("try_all_readers", 0);
-    (void)onlyTheNamedDecoder;
-    image.input = OIIO::ImageInput::open(std::string("image") + formatExtension(image.format), &config, image.memory.get());
-    if (!image.input) fail(name, "cannot decode the image: " + oiioError(nullptr));
-    const OIIO::ImageSpec& spec = image.input->spec();
-    if (spec.deep) fail(name, "deep OpenEXR images are not supported");
-    if (spec.depth != 1) fail(name, "the image is empty (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ")");
-    checkImageSize(spec.width, spec.height, spec.nchannels, name);
-    return image;
+// An OpenEXR image's R, G, B (and A), or its Y (and A) as grey, by name.
+Pixels decodeExr(const unsigned char* data, size_t size, const std::string& name) {
+    const ExrFile file = readExrFile(data, size, name);
+    std::vector<const ExrChannel*> used;
+    for (const char* c : {"R", "G", "B"})
+        if (const ExrChannel* channel = file.channel(c)) used.push_back(channel);
+    if (used.size() != 3) used = {file.channel("Y")};
+    if (!used[0]) fail(name, "no R, G, B (or Y) channels");
+    if (const ExrChannel* alpha = file.channel("A")) used.push_back(alpha);
+    Pixels p;
+    p.width = file.width;
+    p.height = file.height;
+    p.channels = int(used.size());
+    p.floatFormat = true;
+    const size_t count = size_t(file.width) * size_t(file.height);
+    p.floats.resize(count * used.size());
+    for (size_t c = 0; c < used.size(); ++c) {
+        if (used[c]->type == ExrChannelType::Uint) fail(name, "the channel " + used[c]->name + " is not half or float");
+        for (size_t i = 0; i < count; ++i) p.floats[i * used.size() + c] = used[c]->values[i];
+    }
+    return p;
 }
 
-namespace {
-
-// OpenImageIO 2.4 premultiplies WebP's alpha whatever it is asked: libwebp decodes it as stored.
-TextureImage decodeWebpTexture(const unsigned char* data, size_t size, const std::string& name) {
-    int width = 0, height = 0;
-    if (!WebPGetInfo(data, size, &width, &height)) fail(name, "cannot decode the WebP image: its header is corrupt");
-    checkImageSize(width, height, 4, name);
-    TextureImage texture;
-    texture.name = name;
-    texture.width = width;
-    texture.height = height;
-    texture.bytes.resize(size_t(width) * size_t(height));
-    if (!WebPDecodeRGBAInto(data, size, &texture.bytes[0].x, texture.bytes.size() * 4, width * 4))
+// Alpha as stored (glTF's is not premultiplied), as libwebp decodes it.
+Pixels decodeWebp(const unsigned char* data, size_t size, const std::string& name) {
+    Pixels p;
+    if (!WebPGetInfo(data, size, &p.width, &p.height)) fail(name, "cannot decode the WebP image: its header is corrupt");
+    checkImageSize(p.width, p.height, 4, name);
+    p.channels = 4;
+    p.bytes.resize(size_t(p.width) * size_t(p.height) * 4);
+    if (!WebPDecodeRGBAInto(data, size, p.bytes.data(), p.bytes.size(), p.width * 4))
         fail(name, "cannot decode the WebP image: its data is corrupt");
-    return texture;
+    return p;
 }
 
-// All channels of the first subimage as `type`, interleaved.
-template <typename T>
-std::vector<T> readPixels(OpenedImage& image, OIIO::TypeDesc type, const std::string& name) {
-    const OIIO::ImageSpec& spec = image.spec();
-    std::vector<T> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
-    if (!image.input->read_image(0, 0, 0, spec.nchannels, type, pixels.data()))
-        fail(name, "cannot decode the image: " + oiioError(image.input.get()));
-    return pixels;
-}
-
-// RGBA from 1 to 4 channels (grey, grey + alpha, RGB, RGBA; more: the first four).
-template <typename T>
-T channelOf(const T* pixel, int channels, int c, T opaque) {
-    if (channels <= 2) return c < 3 ? pixel[0] : (channels == 2 ? pixel[1] : opaque);
-    if (c < 3) return pixel[c];
-    return channels >= 4 ? pixel[3] : opaque;
+Pixels decodePixels(const unsigned char* data, size_t size, const std::string& name) {
+    const ImageFormat format = detectImageFormat(data, size, name);
+    if (format == ImageFormat::Exr) return decodeExr(data, size, name);
+    if (format == ImageFormat::Hdr) return decodeHdr(data, size, name);
+    if (format == ImageFormat::Png) {
+        PngPixels png = decodePng(data, size, name);
+        Pixels p;
+        p.width = png.width;
+        p.height = png.height;
+        p.channels = png.channels;
+        p.bytes = std::move(png.bytes);
+        p.floats.resize(png.words.size());
+        for (size_t i = 0; i < png.words.size(); ++i) p.floats[i] = png.words[i] * (1.0f / 65535.0f);
+        return p;
+    }
+    if (format == ImageFormat::Jpeg) {
+        JpegPixels jpeg = decodeJpeg(data, size, name);
+        Pixels p;
+        p.width = jpeg.width;
+        p.height = jpeg.height;
+        p.channels = jpeg.channels;
+        p.bytes = std::move(jpeg.bytes);
+        return p;
+    }
+    return decodeWebp(data, size, name);
 }
 
 }  // namespace
 
 Image decodeImage(const unsigned char* data, size_t size, ChannelEncoding encoding, const std::string& name) {
-    OpenedImage opened = openImage(data, size, name);
-    const OIIO::ImageSpec& spec = opened.spec();
-    const bool floats = opened.format == ImageFormat::Hdr || opened.format == ImageFormat::Exr;
-    const std::vector<float> pixels = readPixels<float>(opened, OIIO::TypeFloat, name);
+    const Pixels pixels = decodePixels(data, size, name);
     Image image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.pixels.resize(size_t(spec.width) * size_t(spec.height));
-    const bool srgb = !floats && encoding == ChannelEncoding::Srgb;
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        const float* pixel = &pixels[i * size_t(spec.nchannels)];
+    image.width = pixels.width;
+    image.height = pixels.height;
+    image.pixels.resize(size_t(pixels.width) * size_t(pixels.height));
+    const bool srgb = !pixels.floatFormat && encoding == ChannelEncoding::Srgb;
+    for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) {
-            const float v = channelOf(pixel, spec.nchannels, c, 1.0f);
+            const float v = channelOf(pixels.channels, c, 1.0f, [&](int k) { return pixels.value(i, k); });
             image.pixels[i][c] = srgb ? srgbToLinear(v) : v;
         }
-    }
     return image;
 }
 
 TextureImage decodeTexture(const unsigned char* data, size_t size, const std::string& name) {
-    if (detectFormat(data, size, name) == ImageFormat::Webp) return decodeWebpTexture(data, size, name);
-    OpenedImage opened = openImage(data, size, name);
-    const OIIO::ImageSpec& spec = opened.spec();
+    const Pixels pixels = decodePixels(data, size, name);
     TextureImage texture;
     texture.name = name;
-    texture.width = spec.width;
-    texture.height = spec.height;
-    const size_t count = size_t(spec.width) * size_t(spec.height);
-    if (spec.format == OIIO::TypeDesc::UINT8) {
-        const std::vector<unsigned char> pixels = readPixels<unsigned char>(opened, OIIO::TypeDesc::UINT8, name);
+    texture.width = pixels.width;
+    texture.height = pixels.height;
+    const size_t count = size_t(pixels.width) * size_t(pixels.height);
+    const int n = pixels.channels;
+    if (!pixels.bytes.empty()) {
         texture.bytes.resize(count);
         for (size_t i = 0; i < count; ++i)
             for (int c = 0; c < 4; ++c)
-                texture.bytes[i][c] = channelOf(&pixels[i * size_t(spec.nchannels)], spec.nchannels, c, (unsigned char)255);
+                texture.bytes[i][c] = channelOf(n, c, (unsigned char)255, [&](int k) { return pixels.bytes[i * size_t(n) + size_t(k)]; });
         return texture;
     }
     // 16-bit and float sources: normalised floats, still undecoded (TextureRef::srgb decides).
-    const std::vector<float> pixels = readPixels<float>(opened, OIIO::TypeFloat, name);
     texture.floats.resize(count);
     for (size_t i = 0; i < count; ++i)
-        for (int c = 0; c < 4; ++c) texture.floats[i][c] = channelOf(&pixels[i * size_t(spec.nchannels)], spec.nchannels, c, 1.0f);
+        for (int c = 0; c < 4; ++c) texture.floats[i][c] = channelOf(n, c, 1.0f, [&](int k) { return pixels.floats[i * size_t(n) + size_t(k)]; });
     return texture;
-}
-
-std::vector<unsigned char> readImageFile(const std::string& path) {
-    try {
-        return readRegularFile(path, kMaxImageFileBytes);
-    } catch (const FileReadError& e) {
-        throw ImageError(e.what());
-    }
 }
 
 Image readImage(const std::string& path, ChannelEncoding encoding) {

@@ -40,10 +40,10 @@ constexpr size_t kMaxImageFileBytes = size_t(2) << 30;
 // Float formats (.hdr, .exr) are always linear and ignore this.
 enum class ChannelEncoding { Srgb, Linear };
 
-// Reads PNG, JPEG, Radiance HDR or OpenEXR (its R, G, B channels; a file with only Y is read
-// as grey), recognised by their first bytes; any other format is refused by name. Decoding is
-// OpenImageIO's (libpng, libjpeg-turbo, OpenEXR). Grey images are expanded to RGB; alpha is
-// dropped.
+// Reads PNG, JPEG, WebP, Radiance HDR or OpenEXR (its R, G, B channels; a file with only Y is
+// read as grey), recognised by their first bytes; any other format is refused by name. Decoding
+// is each format's own library's: libpng, libjpeg-turbo, libwebp, OpenEXR, and stb_image for
+// Radiance HDR. Grey images are expanded to RGB; alpha is dropped.
 Image readImage(const std::string& path, ChannelEncoding encoding = ChannelEncoding::Srgb);
 
 // The same for an encoded image held in memory (a texture embedded in a .glb);

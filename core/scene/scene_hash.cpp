@@ -1,6 +1,6 @@
 #include "scene_hash.h"
 
-#include <OpenImageIO/hash.h>
+#include <xxhash.h>
 
 #include <cstdio>
 #include <type_traits>
@@ -11,11 +11,12 @@ namespace woven {
 
 namespace {
 
-// XXH64 chained over the values as they come: each call's digest seeds the next, so the order
+// XXH64 (libxxhash; OpenImageIO's copy of it before, so frames keep their scene's hash) chained
+// over the values as they come: each call's digest seeds the next, so the order
 // and the boundaries of the values are part of the hash.
 class Hasher {
 public:
-    void bytes(const void* data, size_t size) { state_ = OIIO::xxhash::XXH64(data, size, state_); }
+    void bytes(const void* data, size_t size) { state_ = XXH64(data, size, state_); }
 
     // Numbers, enums and glm vectors and matrices: values without padding, hashed as stored.
     template <typename T>

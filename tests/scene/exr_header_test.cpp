@@ -1,7 +1,8 @@
 // OpenEXR files that fuzz/fuzz_exr found harmful, made here: headers checked before OpenEXR
 // reads them (a 76-byte file whose attribute claimed 1.9 GB took 2.3 GB and 2 s in OpenEXR
-// 3.1; a box2i of the wrong size, 1.6 GB), and a line offset of -1 (OpenImageIO's memory reader copied from before the file's
-// bytes; the asan preset catches that read).
+// 3.1; a box2i of the wrong size, 1.6 GB), and a line offset of -1 (OpenImageIO's memory reader,
+// which woven read through before, copied from before the file's bytes; the asan preset catches
+// such a read).
 #include "exr_header.h"
 
 #include <gmock/gmock.h>

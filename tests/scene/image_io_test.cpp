@@ -5,13 +5,14 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <OpenImageIO/imageio.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "atomic_file.h"
+#include "exr_file.h"
 #include "temp_dir.h"
 
 namespace woven {
@@ -144,6 +145,75 @@ TEST(Hdr, ReadIsLinear) {
     EXPECT_NEAR(back.at(1, 0).g, 1.0f, 0.01f);
 }
 
+TEST(Hdr, AFirstLineOtherThanRadiancesIsRefusedByName) {
+    TempDir dir;
+    std::ofstream(dir.file("e.hdr")) << "#?RADIANCE but not a line of its own";
+    EXPECT_THAT([&] { readImage(dir.file("e.hdr")); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr(dir.file("e.hdr") + ": cannot decode the Radiance HDR image")));
+}
+
+// JPEG is lossy: a flat colour comes back within a few levels, in colour and in grey.
+TEST(Jpeg, ColourAndGreyDecodeAndTheirSizeIsCheckedFirst) {
+    TempDir dir;
+    const std::vector<unsigned char> rgb = [] {
+        std::vector<unsigned char> p;
+        for (int i = 0; i < 16 * 8; ++i) p.insert(p.end(), {200, 100, 50});
+        return p;
+    }();
+    ASSERT_TRUE(stbi_write_jpg(dir.file("c.jpg").c_str(), 16, 8, 3, rgb.data(), 100));
+    const Image colour = readImage(dir.file("c.jpg"), ChannelEncoding::Linear);
+    ASSERT_EQ(colour.width, 16);
+    ASSERT_EQ(colour.height, 8);
+    EXPECT_NEAR(colour.at(5, 3).r, 200 / 255.0f, 3 / 255.0f);
+    EXPECT_NEAR(colour.at(5, 3).g, 100 / 255.0f, 3 / 255.0f);
+    EXPECT_NEAR(colour.at(5, 3).b, 50 / 255.0f, 3 / 255.0f);
+    const std::vector<unsigned char> grey(16 * 8, 128);
+    ASSERT_TRUE(stbi_write_jpg(dir.file("g.jpg").c_str(), 16, 8, 1, grey.data(), 100));
+    const Image back = readImage(dir.file("g.jpg"), ChannelEncoding::Linear);
+    EXPECT_NEAR(back.at(2, 2).r, 128 / 255.0f, 2 / 255.0f);
+    EXPECT_EQ(back.at(2, 2).r, back.at(2, 2).b);
+
+    // The same file claiming 60000 x 60000 (its SOF0 segment's height and width) is refused from
+    // its header, before libjpeg allocates anything for it.
+    std::ifstream in(dir.file("c.jpg"), std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const unsigned char sof[2] = {0xff, 0xc0};
+    const auto at = std::search(bytes.begin(), bytes.end(), sof, sof + 2);
+    ASSERT_NE(at, bytes.end());
+    const size_t size = size_t(at - bytes.begin()) + 5;
+    for (const size_t i : {size, size + 2}) {
+        bytes[i] = 60000 >> 8;
+        bytes[i + 1] = 60000 & 255;
+    }
+    EXPECT_THAT([&] { decodeImage(bytes.data(), bytes.size(), ChannelEncoding::Srgb, "huge.jpg"); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr("huge.jpg: the image is 60000 x 60000, more than woven reads")));
+    const unsigned char corrupt[] = {0xff, 0xd8, 0xff, 0xe0, 0, 2, 0xff, 0xd9};
+    EXPECT_THAT([&] { decodeTexture(corrupt, sizeof corrupt, "corrupt.jpg"); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr("corrupt.jpg: cannot decode the JPEG image")));
+}
+
+// OpenEXR images other than frames: Y alone is grey; a texture's alpha is its A channel.
+TEST(Exr, GreyAndAlphaChannelsAreReadByName) {
+    TempDir dir;
+    ExrFile file;
+    file.width = 2;
+    file.height = 1;
+    file.channels = {{"Y", ExrChannelType::Half, {0.25f, 3.0f}, {}}, {"A", ExrChannelType::Float, {0.5f, 1.0f}, {}}};
+    writeExrFile(dir.file("y.exr"), file);
+    const Image grey = readImage(dir.file("y.exr"));
+    EXPECT_EQ(grey.at(1, 0), glm::vec3(3.0f));
+    std::ifstream in(dir.file("y.exr"), std::ios::binary);
+    const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const TextureImage texture = decodeTexture(bytes.data(), bytes.size(), "y.exr");
+    ASSERT_TRUE(texture.isFloat());
+    EXPECT_EQ(texture.floats[0], glm::vec4(0.25f, 0.25f, 0.25f, 0.5f));
+
+    file.channels = {{"Z", ExrChannelType::Float, {1.0f, 2.0f}, {}}};
+    writeExrFile(dir.file("z.exr"), file);
+    EXPECT_THAT([&] { readImage(dir.file("z.exr")); },
+                testing::ThrowsMessage<ImageError>(testing::HasSubstr("z.exr: no R, G, B (or Y) channels")));
+}
+
 TEST(Exr, FloatRoundTripIsExactAndKeepsTheSampleCount) {
     TempDir dir;
     ExrImage exr;
@@ -225,12 +295,14 @@ TEST(Exr, KeepsSampleRangesPast32BitsAndTheFrameIdentity) {
 TEST(Exr, ReadsTheIntSampleRangeOfEarlierParts) {
     TempDir dir;
     const std::string path = dir.file("old.exr");
-    OIIO::ImageSpec spec(2, 1, 3, OIIO::TypeDesc::FLOAT);
-    spec.attribute("wovenFirstSample", 2147483646);
-    spec.attribute("wovenSampleCount", 1);
-    const float pixels[6] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
-    auto out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    ExrFile file;
+    file.width = 2;
+    file.height = 1;
+    file.channels = {{"R", ExrChannelType::Float, {0.1f, 0.4f}, {}},
+                     {"G", ExrChannelType::Float, {0.2f, 0.5f}, {}},
+                     {"B", ExrChannelType::Float, {0.3f, 0.6f}, {}}};
+    file.attributes = {{"wovenFirstSample", 2147483646}, {"wovenSampleCount", 1}};
+    writeExrFile(path, file);
     const ExrImage old = readExr(path);
     ASSERT_TRUE(old.samples);
     EXPECT_EQ(old.samples->first, 2147483646);
@@ -238,9 +310,8 @@ TEST(Exr, ReadsTheIntSampleRangeOfEarlierParts) {
     EXPECT_FALSE(old.frame);
 
     // Some of the identity's attributes without the rest: not a file woven wrote.
-    spec.attribute("wovenSeed", "7");
-    out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close());
+    file.attributes["wovenSeed"] = std::string("7");
+    writeExrFile(path, file);
     EXPECT_THAT([&] { readExr(path); },
                 testing::ThrowsMessage<ImageError>(testing::HasSubstr("has only some of the attributes wovenScene")));
 }
