@@ -113,7 +113,8 @@ glm::dvec2 foundOverTrue(const Weave& w, uint32_t seed) {
 // Over seeds 1 to 6 every direction within 3 %. Measured (2026-12-07), found over true, the worst
 // of the six seeds: plain 0.9913, 2/2 twill 0.9891, 2/1 twill 0.9976, satin 0.9990; a bin of the
 // spectrum at 256 pixels is 1.2 % of 0.33 cycles a pixel. The counter before the noise floor
-// (raw power) found 4 to 14 times too few threads in 14 of the 48 directions.
+// (raw power) was wrong in 10 of the 48 directions (6 to 10 times too few threads in 7, 1.3 to 2
+// times too many in 3), and found threads in all 6 photos without them.
 void expectThreads(const Weave& w) {
     for (uint32_t seed = 1; seed <= 6; ++seed) {
         const glm::dvec2 r = foundOverTrue(w, seed);
