@@ -1,7 +1,7 @@
 #pragma once
 // The threads' fundamental frequencies in a photo of a swatch (docs/FIT.md, stage 1): one peak of
-// the spectrum across the warp ends and one across the weft picks, chosen together. The camera
-// says where each direction lies; the swatch may lie a few degrees turned, and it turns both.
+// the spectrum across the warp ends and one across the weft picks. The camera says where each
+// direction lies; the swatch may lie a few degrees turned.
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -20,9 +20,11 @@ struct ThreadPeaks {
 struct ThreadCandidate {
     SpectralPeak peak;
     double height = 0.0;  // its power over the noise floor of its ring (spectral_noise_floor.h)
-    // The sum of the logs of its first kThreadHarmonics harmonics' heights, folded by the pixel
-    // grid, each at least 1; a harmonic that folds near zero frequency or onto a lower one counts
-    // nothing, so that a peak whose folded harmonics land on itself gains nothing by it.
+    // The log of its height plus, for each of its next kThreadHarmonics - 1 harmonics (folded by
+    // the pixel grid), the log of that harmonic's height over kLeastThreadPeakHeight where above
+    // it: texture's harmonics add nothing, a narrow yarn's strong ones add much. A harmonic that
+    // folds near zero frequency or onto a lower one counts nothing, so that a peak whose folded
+    // harmonics land on itself gains nothing by it.
     double score = 0.0;
 };
 
@@ -63,8 +65,8 @@ constexpr int kThreadHarmonics = 3;
 // kThreadHeightShare of its highest; at 2 to 4 pixels a thread the coarse texture of a real
 // photo (fuzz, wrinkles, the light's remains) holds more raw power near the spectrum's centre
 // than the threads do, but no peak that stands over its ring. Of the contenders, the best score,
-// or the contender whose 2nd or 3rd harmonic that is. A direction with no contender has no peak:
-// the photo does not show its threads.
+// or the candidate over the noise floor whose 2nd or 3rd harmonic that is. A direction with no
+// contender has no peak: the photo does not show its threads.
 ThreadPeaks threadFundamentals(const PowerSpectrum& spectrum, const glm::dvec2& gradU, const glm::dvec2& gradV,
                                double halfAngle, double fMin, double fMax);
 
