@@ -29,7 +29,7 @@ std::vector<ThreadCandidate> contenders(const std::vector<ThreadCandidate>& cs) 
 }
 
 // The contender with the best score, or the candidate over the noise floor whose 2nd or 3rd
-// harmonic that is (within a bin and a half or 1.5 %): a thread's harmonic scores as well as the
+// harmonic that is (within half a bin or 1.5 %): a thread's harmonic scores as well as the
 // thread where the harmonic's own folded harmonics find the lattice's points, and yarns of full
 // width put far more power in the 2nd harmonic than in the fundamental (the example shot's denim,
 // assets/fit: 280 times).
@@ -40,7 +40,7 @@ std::optional<SpectralPeak> best(const std::vector<ThreadCandidate>& contenders,
         if (!b || c.score > b->score) b = &c;
     for (bool lowered = b != nullptr; lowered;) {
         lowered = false;
-        const double tolerance = std::max(1.5 * bin, 0.015 * glm::length(b->peak.frequency));
+        const double tolerance = std::max(0.5 * bin, 0.015 * glm::length(b->peak.frequency));
         for (const ThreadCandidate& g : all)
             for (int n = 2; n <= 3 && !lowered && g.height >= kLeastThreadPeakHeight; ++n)
                 if (glm::length(double(n) * g.peak.frequency - b->peak.frequency) <= tolerance ||
