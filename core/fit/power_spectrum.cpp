@@ -90,15 +90,45 @@ PowerSpectrum powerSpectrum(const std::vector<float>& values, int width, int hei
     return s;
 }
 
-std::optional<SpectralPeak> strongestPeak(const PowerSpectrum& s, glm::dvec2 direction, double halfAngle, double fMin,
-                                          double fMax) {
-    const double len = glm::length(direction);
-    if (!(len > 0.0)) return std::nullopt;
-    direction /= len;
+namespace {
+
+// Power at bin (kx, ky) of the whole plane: the neighbours across the half-plane's edge kx = 0
+// are the conjugate bins; beyond the stored half, none.
+double powerAtBin(const PowerSpectrum& s, int kx, int ky) {
+    if (kx < 0) {
+        kx = -kx;
+        ky = -ky;
+    }
+    if (kx > s.width / 2) return 0.0;
+    ky = ((ky % s.height) + s.height) % s.height;
+    return s.at(kx, ky);
+}
+
+// The peak at bin (kx, ky), located to a fraction of a bin by a log-parabola through its
+// neighbours: exact for a Gaussian peak, close for a Hann window's.
+SpectralPeak peakAtBin(const PowerSpectrum& s, int kx, int ky) {
+    const auto offset = [](double m, double c, double p) {
+        const double lm = std::log(m + 1e-30), lc = std::log(c + 1e-30), lp = std::log(p + 1e-30);
+        const double d = lm - 2.0 * lc + lp;
+        return d < 0.0 ? std::clamp(0.5 * (lm - lp) / d, -0.5, 0.5) : 0.0;
+    };
+    const double c = powerAtBin(s, kx, ky);
+    const double dx = offset(powerAtBin(s, kx - 1, ky), c, powerAtBin(s, kx + 1, ky));
+    const double dy = offset(powerAtBin(s, kx, ky - 1), c, powerAtBin(s, kx, ky + 1));
+    const int sy = ky <= s.height / 2 ? ky : ky - s.height;
+    SpectralPeak peak;
+    peak.frequency = glm::dvec2((kx + dx) / s.width, (sy + dy) / s.height);
+    peak.power = c;
+    return peak;
+}
+
+// Calls visit(kx, ky, f) for every stored bin within `halfAngle` of `direction` (unit) and
+// between fMin and fMax cycles per pixel.
+template <typename Visit>
+void forEachBinWithin(const PowerSpectrum& s, const glm::dvec2& direction, double halfAngle, double fMin, double fMax,
+                      Visit&& visit) {
     const int nx = s.width / 2 + 1;
     const double cosLimit = std::cos(halfAngle);
-    int bestX = -1, bestY = -1;
-    float best = -1.0f;
     for (int ky = 0; ky < s.height; ++ky) {
         const int sy = ky <= s.height / 2 ? ky : ky - s.height;
         for (int kx = 0; kx < nx; ++kx) {
@@ -106,37 +136,31 @@ std::optional<SpectralPeak> strongestPeak(const PowerSpectrum& s, glm::dvec2 dir
             const double fl = glm::length(f);
             if (fl < fMin || fl > fMax) continue;
             if (std::abs(glm::dot(f, direction)) < cosLimit * fl) continue;
-            if (s.at(kx, ky) > best) {
-                best = s.at(kx, ky);
-                bestX = kx;
-                bestY = ky;
-            }
+            visit(kx, ky, f);
         }
     }
-    if (bestX < 0) return std::nullopt;
-    // The neighbours across the half-plane's edge kx = 0 are the conjugate bins.
-    const auto power = [&](int kx, int ky) {
-        ky = ((ky % s.height) + s.height) % s.height;
-        if (kx < 0) {
-            kx = -kx;
-            ky = (s.height - ky) % s.height;
-        }
-        return kx < nx ? double(s.at(kx, ky)) : 0.0;
-    };
-    const auto offset = [](double m, double c, double p) {
-        // Log-parabola through three bins: exact for a Gaussian peak, close for a Hann window's.
-        const double lm = std::log(m + 1e-30), lc = std::log(c + 1e-30), lp = std::log(p + 1e-30);
-        const double d = lm - 2.0 * lc + lp;
-        return d < 0.0 ? std::clamp(0.5 * (lm - lp) / d, -0.5, 0.5) : 0.0;
-    };
-    const double c = power(bestX, bestY);
-    const double dx = offset(power(bestX - 1, bestY), c, power(bestX + 1, bestY));
-    const double dy = offset(power(bestX, bestY - 1), c, power(bestX, bestY + 1));
-    const int sy = bestY <= s.height / 2 ? bestY : bestY - s.height;
-    SpectralPeak peak;
-    peak.frequency = glm::dvec2((bestX + dx) / s.width, (sy + dy) / s.height);
-    peak.power = c;
-    return peak;
+}
+
+}  // namespace
+
+std::vector<SpectralPeak> localPeaks(const PowerSpectrum& s, glm::dvec2 direction, double halfAngle, double fMin,
+                                     double fMax) {
+    const double len = glm::length(direction);
+    if (!(len > 0.0)) return {};
+    std::vector<SpectralPeak> peaks;
+    forEachBinWithin(s, direction / len, halfAngle, fMin, fMax, [&](int kx, int ky, const glm::dvec2& f) {
+        const double c = s.at(kx, ky);
+        if (!(c > 0.0) || (kx == 0 && f.y < 0.0)) return;  // the column kx = 0 holds each bin and its conjugate
+        // Ties go to the first bin in scan order, so that a flat top gives one peak.
+        for (int dy = -kPeakRadiusBins; dy <= kPeakRadiusBins; ++dy)
+            for (int dx = -kPeakRadiusBins; dx <= kPeakRadiusBins; ++dx) {
+                if (dx == 0 && dy == 0) continue;
+                const double n = powerAtBin(s, kx + dx, ky + dy);
+                if (n > c || (n == c && (dy < 0 || (dy == 0 && dx < 0)))) return;
+            }
+        peaks.push_back(peakAtBin(s, kx, ky));
+    });
+    return peaks;
 }
 
 double powerNear(const PowerSpectrum& s, const glm::dvec2& f) {

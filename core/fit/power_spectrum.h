@@ -5,7 +5,6 @@
 // what is left is the texture of the threads.
 #include <glm/glm.hpp>
 
-#include <optional>
 #include <vector>
 
 namespace woven {
@@ -23,15 +22,19 @@ struct PowerSpectrum {
 // darker), minus 1, times a Hann window.
 PowerSpectrum powerSpectrum(const std::vector<float>& values, int width, int height);
 
-// The strongest peak of the spectrum within `halfAngle` radians of the direction `direction`
-// (in pixels: x right, y down; either sign), between fMin and fMax cycles per pixel, located to a
-// fraction of a bin by a log-parabola through its neighbours.
+// A peak of the spectrum, located to a fraction of a bin by a log-parabola through its
+// neighbours.
 struct SpectralPeak {
     glm::dvec2 frequency{0.0};  // cycles per pixel along x, y
     double power = 0.0;
 };
-std::optional<SpectralPeak> strongestPeak(const PowerSpectrum& spectrum, glm::dvec2 direction, double halfAngle,
-                                          double fMin, double fMax);
+
+// Every local maximum of the spectrum (no bin within kPeakRadiusBins stronger) within
+// `halfAngle` radians of `direction` (in pixels: x right, y down; either sign) between fMin and
+// fMax cycles per pixel: one scan of the spectrum.
+constexpr int kPeakRadiusBins = 2;
+std::vector<SpectralPeak> localPeaks(const PowerSpectrum& spectrum, glm::dvec2 direction, double halfAngle, double fMin,
+                                     double fMax);
 
 // The largest power within a bin of frequency f (cycles per pixel, either half-plane).
 double powerNear(const PowerSpectrum& spectrum, const glm::dvec2& f);

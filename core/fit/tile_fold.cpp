@@ -208,10 +208,13 @@ glm::dvec2 refineThreadFrequency(const std::vector<float>& values, int width, in
         const double c = std::cos(a), sn = std::sin(a);
         return s * glm::dvec2(c * f.x - sn * f.y, sn * f.x + c * f.y);
     };
+    // The spectrum's peak is located to within a bin: the fold searches no farther (a real photo's
+    // fold, blurred and speckled, drifts to the search's end), and at most 3 %.
+    const double reach = std::min(0.03, 1.0 / (double(std::max(width, height)) * length));
     // Length and direction in turn: each barely moves the other's optimum.
     for (int pass = 0; pass < 2; ++pass) {
-        scale = maximise([&](double s) { return profileVariance(values, width, height, frequency(s, angle)); }, 0.97,
-                         1.03, 30);
+        scale = maximise([&](double s) { return profileVariance(values, width, height, frequency(s, angle)); },
+                         1.0 - reach, 1.0 + reach, 30);
         const double halfAngle = 1.5 * M_PI / 180.0;
         angle = maximise([&](double a) { return profileVariance(values, width, height, frequency(scale, a)); },
                          -halfAngle, halfAngle, 15);

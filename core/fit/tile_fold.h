@@ -42,7 +42,8 @@ glm::dvec3 foldChannelMeans(const TileFold& photo);
 
 // The frequency near `f` (cycles per pixel, x and y) at which the luminance `values` (width x
 // height) folded on one thread is sharpest: the largest variance of its mean profile across the
-// thread, searched over the frequency's length within 3 % and its direction within 1.5 degrees.
+// thread, searched over the frequency's length within a bin of the image's spectrum (at most 3 %)
+// and its direction within 1.5 degrees.
 // Phase dispersion minimisation (Stellingwerf 1978): a spectrum's peak is only as sharp as the
 // image is wide, and the weave's own peaks beside it pull it, while a fold drifts off the threads
 // by the frequency's error times the threads the image shows, so the fold is the finer measure.
