@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "power_spectrum.h"
-#include "scene_description.h"
+#include "image.h"
 
 namespace woven {
 
