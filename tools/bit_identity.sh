@@ -30,8 +30,8 @@ make_outputs() {
     "$woven" pattern --material '{"preset": "denim"}' --size 24,16 --png "$dir/pattern.png" > "$dir/pattern.txt"
     "$woven" converge assets/converge_open.json --budgets 0.05,0.1 --reference-time 0.4 --width 32 --height 24 \
         --out-dir "$dir/converge_run" > "$dir/converge_table.txt"
-    # Numbers (and what depends on them: a time not reached, the most efficient) out, the layout kept.
-    sed -E -i 's/[-+]?[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?/N/g; s/not reached \(bias\)/N/g; s/^most efficient: .*/most efficient: (timed)/' \
+    # Numbers (and what depends on them: a time not reached, what auto picks, the most efficient) out, the layout kept.
+    sed -E -i 's/[-+]?[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?/N/g; s/not reached \(bias\)|neither reaches it|\binf\b/N/g; s/auto \([a-z]+\)/auto (picked)/g; s/^most efficient: .*/most efficient: (timed)/' \
         "$dir/converge_table.txt"
     cut -d, -f1,7- "$dir/converge_run/converge_open_convergence.csv" | sed -E 's/,[^,]*$//' > "$dir/converge_variants.csv"
     rm -rf "$dir/converge_run"
