@@ -5,6 +5,7 @@
 
 #include "environment_mapping.h"
 #include "frame.h"
+#include "math_constants.h"
 #include "piecewise_constant.h"
 #include "sampling.h"
 #include "spherical_rectangle.h"
@@ -13,8 +14,6 @@
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 glm::vec3 orthogonal(const glm::vec3& n, glm::vec3* b) {
     const Frame f = Frame::fromNormal(n);
     *b = f.y;
