@@ -20,19 +20,6 @@ glm::vec3 orthogonal(const glm::vec3& n, glm::vec3* b) {
     return f.x;
 }
 
-glm::vec2 sampleUniformDisk(const glm::vec2& u) {
-    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi)};
-}
-
-// Cone around +z up to cosMax, uniform in solid angle.
-glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
-    const float cosTheta = 1.0f - u.x * (1.0f - cosMax);
-    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-    const float phi = 2.0f * kPi * u.y;
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-}
-
 float average(const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; }
 
 // The solid angle a planar light is sampled by from a point near its plane, where it lies within
