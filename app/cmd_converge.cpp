@@ -255,35 +255,35 @@ std::string seconds(double t) {
     return s.str();
 }
 
-void runConverge(const ConvergeOptions& o) {
-    namespace fs = std::filesystem;
-    auto scene = std::make_shared<const SceneDescription>(loadScene(o.scene));
-    std::error_code ec;
-    fs::create_directories(o.outDir, ec);
-    if (!fs::is_directory(o.outDir, ec)) throw std::invalid_argument(o.outDir + ": cannot make the folder");
-    const std::string stem = fs::path(o.scene).stem().string();
-    const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
-    checkOutput(csvPath);
-    const Image ref = reference(scene, o, stem);
-
-    std::vector<Variant> variants;  // the denoised ones right after the same render's undenoised ones
+// Every variant of the options: each filter, noise threshold and integrator, the denoised one
+// right after the same render's undenoised one.
+std::vector<Variant> variantsOf(const ConvergeOptions& o) {
+    std::vector<Variant> variants;
     for (const std::string& filter : o.filters)
         for (double threshold : o.thresholds)
             for (const std::string& integrator : o.integrators)
                 for (const std::string& denoise : o.denoise) variants.push_back({integrator, filter == "on", threshold, denoise == "on"});
-    const double referenceDetail = detailEnergy(ref);
+    return variants;
+}
 
+// What one variant's renders measured, over the budgets.
+struct Runs {
+    std::vector<std::pair<double, double>> squaredError;  // (seconds, rel. RMSE^2)
+    std::vector<double> relMse;                            // per budget
+    double efficiency = 0.0;                               // of the longest run
+    std::string picked;                                    // what auto chose
+};
+
+// Renders each variant for each budget (a denoised variant denoises its undenoised twin's
+// render), and writes a row of the CSV and of the table for each; returns the runs by variant.
+std::map<std::string, Runs> measure(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o,
+                                    const std::vector<Variant>& variants, const Image& ref, const std::string& csvPath) {
+    const double referenceDetail = detailEnergy(ref);
     std::ofstream csv(csvPath);
     csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold,denoise,detail\n";
     std::cout << "| integrator | filter | adaptive | denoise | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) | "
                  "fine detail / reference's |\n"
               << "|---|---|---|---|---:|---:|---:|---:|---:|---:|\n";
-    struct Runs {
-        std::vector<std::pair<double, double>> squaredError;  // (seconds, rel. RMSE^2)
-        std::vector<double> relMse;                            // per budget
-        double efficiency = 0.0;                               // of the longest run
-        std::string picked;                                    // what auto chose
-    };
     std::map<std::string, Runs> runs;
     uint64_t seed = 1;
     std::map<std::pair<std::string, size_t>, Timed> rendered;  // (render's variant, budget): denoised and not share it
@@ -319,11 +319,11 @@ void runConverge(const ConvergeOptions& o) {
             r.efficiency = efficiency;
             r.picked = t.integrator;
         }
-    csv.close();
-    std::string names;
-    for (const Variant& v : variants) names += (names.empty() ? "" : " ") + v.name();
-    plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
+    return runs;
+}
 
+// Each variant's fit of its error against time, and the table of the times to 5 % and 1 % from it.
+std::map<std::string, ErrorFit> fitTimes(const std::vector<Variant>& variants, std::map<std::string, Runs>& runs) {
     std::cout << "\nTime to a relative RMSE, from the fit e^2(t) = B + V/t over the runs above (B: what does not "
                  "fall with time: the filter's and the denoiser's bias, the error at which adaptive sampling stops a pixel, "
                  "and the reference's noise)\n\n"
@@ -336,66 +336,85 @@ void runConverge(const ConvergeOptions& o) {
                   << onOff(v.denoise) << " | " << seconds(f.timeTo(0.05))
                   << " | " << seconds(f.timeTo(0.01)) << " | " << std::setprecision(3) << std::sqrt(f.B) << " |\n";
     }
+    return fits;
+}
 
-    // The default settings against the filter, adaptive sampling and the denoiser off, one at a
-    // time, from the same run: relMSE at equal time (per budget).
-    const bool defaultFilter = std::find(o.filters.begin(), o.filters.end(), "off") == o.filters.end();
-    const bool defaultDenoise = std::find(o.denoise.begin(), o.denoise.end(), "on") != o.denoise.end();
-    const double defaultThreshold =
-        std::find(o.thresholds.begin(), o.thresholds.end(), kDefaultNoiseThreshold) != o.thresholds.end()
-            ? kDefaultNoiseThreshold
-            : o.thresholds.front();
-    const auto compareVariants = [&](const std::string& title, const std::function<Variant(const std::string&)>& before,
-                                     const std::function<Variant(const std::string&)>& after, bool bias) {
-        bool header = false;
-        for (const std::string& integrator : o.integrators) {
-            const Variant vb = before(integrator), va = after(integrator);
-            const auto b = runs.find(vb.name()), a = runs.find(va.name());
-            if (b == runs.end() || a == runs.end() || b == a) continue;
-            if (!header) {
-                std::cout << "\n" << title << "\n\n| integrator | relMSE before / after at";
-                for (double t : o.budgets) std::cout << " " << t << " s |";
-                std::cout << " time to 1%, before / after |" << (bias ? " bias (rel. RMSE) |" : "") << "\n|---|";
-                for (size_t i = 0; i <= o.budgets.size() + (bias ? 1 : 0); ++i) std::cout << "---:|";
-                std::cout << "\n";
-                header = true;
-            }
-            std::cout << "| " << integrator << " |";
-            for (size_t i = 0; i < o.budgets.size(); ++i)
-                std::cout << " " << std::setprecision(3) << b->second.relMse[i] / a->second.relMse[i] << " |";
-            const ErrorFit &fb = fits[b->first], &fa = fits[a->first];
-            const double tb = fb.timeTo(0.01), ta = fa.timeTo(0.01);
-            if (std::isfinite(tb) || std::isfinite(ta)) std::cout << " " << std::setprecision(3) << tb / ta << " |";
-            else std::cout << " neither reaches it |";
-            if (bias) std::cout << " " << std::sqrt(std::max(0.0, fa.B - fb.B)) << " |";
+// The settings woven render takes by default, of those the options compare.
+struct Defaults {
+    bool filter, denoise;
+    double threshold;
+};
+
+Defaults defaultsOf(const ConvergeOptions& o) {
+    return {std::find(o.filters.begin(), o.filters.end(), "off") == o.filters.end(),
+            std::find(o.denoise.begin(), o.denoise.end(), "on") != o.denoise.end(),
+            std::find(o.thresholds.begin(), o.thresholds.end(), kDefaultNoiseThreshold) != o.thresholds.end()
+                ? kDefaultNoiseThreshold
+                : o.thresholds.front()};
+}
+
+// One table of relMSE at equal time, per budget, of the variants `before` and `after` make of
+// each integrator; none where no integrator ran both.
+void compareVariants(const ConvergeOptions& o, const std::map<std::string, Runs>& runs, std::map<std::string, ErrorFit>& fits,
+                     const std::string& title, const std::function<Variant(const std::string&)>& before,
+                     const std::function<Variant(const std::string&)>& after, bool bias) {
+    bool header = false;
+    for (const std::string& integrator : o.integrators) {
+        const Variant vb = before(integrator), va = after(integrator);
+        const auto b = runs.find(vb.name()), a = runs.find(va.name());
+        if (b == runs.end() || a == runs.end() || b == a) continue;
+        if (!header) {
+            std::cout << "\n" << title << "\n\n| integrator | relMSE before / after at";
+            for (double t : o.budgets) std::cout << " " << t << " s |";
+            std::cout << " time to 1%, before / after |" << (bias ? " bias (rel. RMSE) |" : "") << "\n|---|";
+            for (size_t i = 0; i <= o.budgets.size() + (bias ? 1 : 0); ++i) std::cout << "---:|";
             std::cout << "\n";
+            header = true;
         }
-    };
-    compareVariants("The weave filter: off (before) against on (after), uniform sampling, not denoised; the bias is sqrt(B_on - B_off)",
+        std::cout << "| " << integrator << " |";
+        for (size_t i = 0; i < o.budgets.size(); ++i)
+            std::cout << " " << std::setprecision(3) << b->second.relMse[i] / a->second.relMse[i] << " |";
+        const ErrorFit &fb = fits[b->first], &fa = fits[a->first];
+        const double tb = fb.timeTo(0.01), ta = fa.timeTo(0.01);
+        if (std::isfinite(tb) || std::isfinite(ta)) std::cout << " " << std::setprecision(3) << tb / ta << " |";
+        else std::cout << " neither reaches it |";
+        if (bias) std::cout << " " << std::sqrt(std::max(0.0, fa.B - fb.B)) << " |";
+        std::cout << "\n";
+    }
+}
+
+// The default settings against the filter, adaptive sampling and the denoiser off, one at a
+// time, from the same run: relMSE at equal time (per budget).
+void compareDefaults(const ConvergeOptions& o, const std::map<std::string, Runs>& runs, std::map<std::string, ErrorFit>& fits,
+                     const Defaults& d) {
+    const std::string threshold = std::to_string(d.threshold).substr(0, 4);
+    compareVariants(o, runs, fits, "The weave filter: off (before) against on (after), uniform sampling, not denoised; the bias is sqrt(B_on - B_off)",
                     [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
                     [&](const std::string& i) { return Variant{i, true, 0.0, false}; }, true);
-    compareVariants("The weave filter under the denoiser: off (before) against on (after), T = " +
-                        std::to_string(defaultThreshold).substr(0, 4) + ", denoised; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, true}; },
-                    [&](const std::string& i) { return Variant{i, true, defaultThreshold, true}; }, true);
-    compareVariants("Adaptive sampling: uniform (before) against T = " + std::to_string(defaultThreshold).substr(0, 4) +
-                        " (after), filter off, not denoised",
+    compareVariants(o, runs, fits, "The weave filter under the denoiser: off (before) against on (after), T = " + threshold +
+                        ", denoised; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, d.threshold, true}; },
+                    [&](const std::string& i) { return Variant{i, true, d.threshold, true}; }, true);
+    compareVariants(o, runs, fits, "Adaptive sampling: uniform (before) against T = " + threshold + " (after), filter off, not denoised",
                     [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
-                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, false}; }, false);
-    compareVariants("The denoiser: off (before) against on (after), filter off, T = " +
-                        std::to_string(defaultThreshold).substr(0, 4) + "; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, false}; },
-                    [&](const std::string& i) { return Variant{i, false, defaultThreshold, true}; }, true);
-    compareVariants("The default settings (after) against --noise-threshold 0 --no-denoise without the filter (before)",
+                    [&](const std::string& i) { return Variant{i, false, d.threshold, false}; }, false);
+    compareVariants(o, runs, fits, "The denoiser: off (before) against on (after), filter off, T = " + threshold +
+                        "; the bias is sqrt(B_on - B_off)",
+                    [&](const std::string& i) { return Variant{i, false, d.threshold, false}; },
+                    [&](const std::string& i) { return Variant{i, false, d.threshold, true}; }, true);
+    compareVariants(o, runs, fits, "The default settings (after) against --noise-threshold 0 --no-denoise without the filter (before)",
                     [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
-                    [&](const std::string& i) { return Variant{i, defaultFilter, defaultThreshold, defaultDenoise}; }, false);
+                    [&](const std::string& i) { return Variant{i, d.filter, d.threshold, d.denoise}; }, false);
+}
 
-    // Which integrator is most efficient with the default settings, and what auto picks.
+// Which integrator is most efficient with the default settings, and what auto picks.
+void reportMostEfficient(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o,
+                         const std::map<std::string, Runs>& runs, const Defaults& d) {
     std::string winner;
     double top = -1;
     for (const IntegratorKind& kind : integratorKinds()) {
         if (!kind.make) continue;
-        const auto r = runs.find(Variant{kind.name, defaultFilter, defaultThreshold, defaultDenoise}.name());
+        const auto r = runs.find(Variant{kind.name, d.filter, d.threshold, d.denoise}.name());
         if (r != runs.end() && r->second.efficiency > top) {
             top = r->second.efficiency;
             winner = kind.name;
@@ -403,12 +422,32 @@ void runConverge(const ConvergeOptions& o) {
     }
     if (winner.empty()) return;
     const std::string autoName = autoIntegrator().name;
-    const auto autoRuns = runs.find(Variant{autoName, defaultFilter, defaultThreshold, defaultDenoise}.name());
-    const std::string picked = autoRuns != runs.end()
-                                   ? autoRuns->second.picked
-                                   : renderFor(scene, o, autoName, 0.5, 99, defaultFilter, defaultThreshold).integrator;
+    const auto autoRuns = runs.find(Variant{autoName, d.filter, d.threshold, d.denoise}.name());
+    const std::string picked = autoRuns != runs.end() ? autoRuns->second.picked
+                                                      : renderFor(scene, o, autoName, 0.5, 99, d.filter, d.threshold).integrator;
     std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << picked
               << (picked == winner ? " (agrees)" : " (DISAGREES)") << "\n";
+}
+
+void runConverge(const ConvergeOptions& o) {
+    namespace fs = std::filesystem;
+    auto scene = std::make_shared<const SceneDescription>(loadScene(o.scene));
+    std::error_code ec;
+    fs::create_directories(o.outDir, ec);
+    if (!fs::is_directory(o.outDir, ec)) throw std::invalid_argument(o.outDir + ": cannot make the folder");
+    const std::string stem = fs::path(o.scene).stem().string();
+    const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
+    checkOutput(csvPath);
+    const Image ref = reference(scene, o, stem);
+    const std::vector<Variant> variants = variantsOf(o);
+    std::map<std::string, Runs> runs = measure(scene, o, variants, ref, csvPath);
+    std::string names;
+    for (const Variant& v : variants) names += (names.empty() ? "" : " ") + v.name();
+    plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
+    std::map<std::string, ErrorFit> fits = fitTimes(variants, runs);
+    const Defaults defaults = defaultsOf(o);
+    compareDefaults(o, runs, fits, defaults);
+    reportMostEfficient(scene, o, runs, defaults);
 }
 
 }  // namespace

@@ -5,9 +5,12 @@
 #include "commands.h"
 #include "file_reading.h"
 #include "parse_errors.h"
+#include "version.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"woven: a renderer for woven fabric"};
+    app.set_version_flag("--version", std::string("woven ") + woven::wovenVersion() + " (commit " + woven::wovenCommit() + ")",
+                         "print the version and the git commit woven was built from, and exit");
     app.require_subcommand(1);
     woven::addPatternCommand(app);
     woven::addFabricsCommand(app);

@@ -44,6 +44,78 @@ void deleteTextures(const std::initializer_list<GLuint>& textures) {
     for (GLuint t : textures) glDeleteTextures(1, &t);
 }
 
+bool nearCentre(const PreviewLight& l, const glm::vec3& centre, float radius) {
+    return glm::length(l.position - centre) < kCubeReach * radius;
+}
+
+// The first n lights, strongest first by their irradiance at the scene's centre.
+std::vector<int> byStrength(const PreviewLights& lights, int n, const glm::vec3& centre, float radius) {
+    auto strength = [&](int i) {
+        const PreviewLight& l = lights.lights[i];
+        if (l.type == PreviewLight::Directional) return luminance(l.intensity);
+        const glm::vec3 d = centre - l.position;
+        return luminance(l.intensity) / std::max(glm::dot(d, d), radius * radius * 1e-4f);
+    };
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return strength(a) > strength(b); });
+    return order;
+}
+
+// A flat map's view of the scene's bounding sphere from a light, its texel's size and the
+// light as the depth program takes it.
+struct FlatView {
+    glm::mat4 viewProjection;
+    glm::vec2 texel{0.0f};
+    glm::vec4 light;
+};
+
+FlatView flatView(const PreviewLight& l, const glm::vec3& centre, float radius) {
+    FlatView view;
+    view.light = glm::vec4(l.position, 1.0f);
+    if (l.type == PreviewLight::Directional) {
+        view.light.w = 0.0f;  // lightPosition is the direction travelled
+        // Orthographic over the bounding sphere, looking along the direction the light travels.
+        const glm::vec3 dir = glm::normalize(l.position);
+        const glm::vec3 up = std::abs(dir.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+        view.viewProjection = glm::ortho(-radius, radius, -radius, radius, 0.5f * radius, 3.5f * radius) *
+                              glm::lookAt(centre - 2.0f * radius * dir, centre, up);
+        view.texel.x = 2.0f * radius / float(ShadowMaps::kFlatSize);
+    } else {
+        // A perspective frustum from the light just holding the bounding sphere.
+        const glm::vec3 toCentre = centre - l.position;
+        const float distance = glm::length(toCentre);
+        const float halfAngle = std::asin(std::min(1.0f, radius / distance)) * 1.05f;
+        const glm::vec3 dir = toCentre / distance;
+        const glm::vec3 up = std::abs(dir.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+        view.viewProjection = glm::perspective(2.0f * halfAngle, 1.0f, std::max(distance - 1.05f * radius, distance * 1e-3f),
+                                               distance + 1.05f * radius) *
+                              glm::lookAt(l.position, centre, up);
+        view.texel.y = 2.0f * std::tan(halfAngle) / float(ShadowMaps::kFlatSize);
+    }
+    return view;
+}
+
+// The framebuffer, viewport and clear colour the maps' rendering changes, to put back after it.
+struct DrawTarget {
+    GLint framebuffer = 0, viewport[4];
+    GLfloat clearColor[4];
+};
+
+DrawTarget currentDrawTarget() {
+    DrawTarget target;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target.framebuffer);
+    glGetIntegerv(GL_VIEWPORT, target.viewport);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, target.clearColor);
+    return target;
+}
+
+void restore(const DrawTarget& target) {
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target.framebuffer));
+    glViewport(target.viewport[0], target.viewport[1], target.viewport[2], target.viewport[3]);
+    glClearColor(target.clearColor[0], target.clearColor[1], target.clearColor[2], target.clearColor[3]);
+}
+
 }  // namespace
 
 ShadowMaps::ShadowMaps() {
@@ -77,21 +149,11 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, const Transm
     const glm::vec3 centre = box.centre();
     const float radius = std::max(box.radius(), 1e-4f);
     const int n = std::min<int>(int(lights.lights.size()), PreviewLights::kMaxLights);
-    auto nearCentre = [&](const PreviewLight& l) { return glm::length(l.position - centre) < kCubeReach * radius; };
-    auto strength = [&](int i) {
-        const PreviewLight& l = lights.lights[i];
-        if (l.type == PreviewLight::Directional) return luminance(l.intensity);
-        const glm::vec3 d = centre - l.position;
-        return luminance(l.intensity) / std::max(glm::dot(d, d), radius * radius * 1e-4f);
-    };
-    std::vector<int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return strength(a) > strength(b); });
     std::vector<Shadowed> shadowed;
     int cubes = 0, flats = 0;
-    for (int i : order) {
+    for (int i : byStrength(lights, n, centre, radius)) {
         const PreviewLight& l = lights.lights[i];
-        const bool cube = l.type != PreviewLight::Directional && nearCentre(l);
+        const bool cube = l.type != PreviewLight::Directional && nearCentre(l, centre, radius);
         if (cube ? cubes == kMaxCubes : flats == kMaxFlats) continue;
         (cube ? cubes : flats)++;
         shadowed.push_back({i, l.type, l.position});
@@ -109,11 +171,28 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, const Transm
     flatTexel_.clear();
     if (shadowed_.empty()) return;
 
-    GLint previousFramebuffer = 0, viewport[4];
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previousFramebuffer);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    GLfloat clearColor[4];
-    glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColor);
+    const DrawTarget previous = currentDrawTarget();
+    allocateMaps(cubes, flats);
+    int cubeCount = 0;
+    for (const Shadowed& s : shadowed_) {
+        const PreviewLight& l = lights.lights[s.light];
+        if (l.type != PreviewLight::Directional && nearCentre(l, centre, radius)) {
+            cubeIndex_[s.light] = cubeCount;
+            cubeFar_[s.light] = (glm::length(centre - l.position) + radius) * 1.01f;
+            renderCube(cubeCount++, l.position, cubeFar_[s.light], casters, transmitting);
+            continue;
+        }
+        const FlatView view = flatView(l, centre, radius);
+        flatIndex_[s.light] = int(flatMatrix_.size());
+        glViewport(0, 0, kFlatSize, kFlatSize);
+        renderView(flats_, int(flatMatrix_.size()), view.viewProjection, view.light, 0.0f, casters, transmitting);
+        flatMatrix_.push_back(view.viewProjection);
+        flatTexel_.push_back(view.texel);
+    }
+    restore(previous);
+}
+
+void ShadowMaps::allocateMaps(int cubes, int flats) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
@@ -132,57 +211,18 @@ void ShadowMaps::update(const std::vector<const GpuMesh*>& casters, const Transm
         allocateDepth(GL_TEXTURE_2D_ARRAY, flats_.transmittedDepth, kFlatSize, flatLayers);
         allocateColor(GL_TEXTURE_2D_ARRAY, flats_.transmittedColor, kFlatSize, flatLayers);
     }
+}
 
-    int cubeCount = 0;
-    for (const Shadowed& s : shadowed_) {
-        const PreviewLight& l = lights.lights[s.light];
-        if (l.type != PreviewLight::Directional && nearCentre(l)) {
-            cubeIndex_[s.light] = cubeCount;
-            cubeFar_[s.light] = (glm::length(centre - l.position) + radius) * 1.01f;
-            // GL's cube face order and orientations (+x, -x, +y, -y, +z, -z).
-            static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-            static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-            const float far = cubeFar_[s.light];
-            const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
-            glViewport(0, 0, kCubeSize, kCubeSize);
-            for (int face = 0; face < 6; ++face)
-                renderView(cubes_, 6 * cubeCount + face, projection * glm::lookAt(l.position, l.position + axes[face], ups[face]),
-                           glm::vec4(l.position, 1.0f), far, casters, transmitting);
-            ++cubeCount;
-            continue;
-        }
-        glm::mat4 viewProjection;
-        glm::vec2 texel(0.0f);
-        glm::vec4 light(l.position, 1.0f);
-        if (l.type == PreviewLight::Directional) {
-            light.w = 0.0f;  // lightPosition is the direction travelled
-            // Orthographic over the bounding sphere, looking along the direction the light travels.
-            const glm::vec3 dir = glm::normalize(l.position);
-            const glm::vec3 up = std::abs(dir.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-            viewProjection = glm::ortho(-radius, radius, -radius, radius, 0.5f * radius, 3.5f * radius) *
-                             glm::lookAt(centre - 2.0f * radius * dir, centre, up);
-            texel.x = 2.0f * radius / float(kFlatSize);
-        } else {
-            // A perspective frustum from the light just holding the bounding sphere.
-            const glm::vec3 toCentre = centre - l.position;
-            const float distance = glm::length(toCentre);
-            const float halfAngle = std::asin(std::min(1.0f, radius / distance)) * 1.05f;
-            const glm::vec3 dir = toCentre / distance;
-            const glm::vec3 up = std::abs(dir.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-            viewProjection = glm::perspective(2.0f * halfAngle, 1.0f, std::max(distance - 1.05f * radius, distance * 1e-3f),
-                                              distance + 1.05f * radius) *
-                             glm::lookAt(l.position, centre, up);
-            texel.y = 2.0f * std::tan(halfAngle) / float(kFlatSize);
-        }
-        flatIndex_[s.light] = int(flatMatrix_.size());
-        glViewport(0, 0, kFlatSize, kFlatSize);
-        renderView(flats_, int(flatMatrix_.size()), viewProjection, light, 0.0f, casters, transmitting);
-        flatMatrix_.push_back(viewProjection);
-        flatTexel_.push_back(texel);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
+void ShadowMaps::renderCube(int cube, const glm::vec3& position, float far, const std::vector<const GpuMesh*>& casters,
+                            const TransmittingCasters& transmitting) {
+    // GL's cube face order and orientations (+x, -x, +y, -y, +z, -z).
+    static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
+    glViewport(0, 0, kCubeSize, kCubeSize);
+    for (int face = 0; face < 6; ++face)
+        renderView(cubes_, 6 * cube + face, projection * glm::lookAt(position, position + axes[face], ups[face]),
+                   glm::vec4(position, 1.0f), far, casters, transmitting);
 }
 
 void ShadowMaps::renderView(const MapSet& maps, int layer, const glm::mat4& viewProjection, const glm::vec4& light,

@@ -69,6 +69,11 @@ private:
     struct MapSet {
         GLuint depth = 0, transmittedDepth = 0, transmittedColor = 0;
     };
+    // Sizes the maps for `cubes` cube and `flats` flat maps, and sets the state they are drawn with.
+    void allocateMaps(int cubes, int flats);
+    // Renders the six faces of cube map `cube` from a light at `position`.
+    void renderCube(int cube, const glm::vec3& position, float far, const std::vector<const GpuMesh*>& casters,
+                    const TransmittingCasters& transmitting);
     // Renders one view into `layer` of `maps` (a cube face's layer or a flat map's).
     void renderView(const MapSet& maps, int layer, const glm::mat4& viewProjection, const glm::vec4& light, float far,
                     const std::vector<const GpuMesh*>& casters, const TransmittingCasters& transmitting);

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double pow5(double x) { return (x * x) * (x * x) * x; }
 
@@ -22,7 +22,7 @@ double gltfDiffuseAlbedo() {
         for (int b = 0; b < n; ++b) {
             const double ci = (b + 0.5) / n, si = std::sqrt(1.0 - ci * ci);
             for (int c = 0; c < n; ++c) {
-                const double phi = kPi * (c + 0.5) / n;  // symmetric in phi: half the circle, twice
+                const double phi = kPiDouble * (c + 0.5) / n;  // symmetric in phi: half the circle, twice
                 const double vh = std::sqrt(std::max(0.0, 0.5 * (1.0 + co * ci + so * si * std::cos(phi))));
                 sum += (1.0 - pow5(1.0 - vh)) * co * ci;
             }
@@ -30,15 +30,15 @@ double gltfDiffuseAlbedo() {
     }
     // Integral over d omega_o d omega_i = d cos_o d cos_i d phi_o d phi_i: 2 pi (phi_o) x 2 pi
     // (relative phi, here 2 x pi / n per node) x (1 / n)^2; f = (1 - F) / pi, then / pi.
-    return sum * (2.0 * kPi) * (2.0 * kPi / n) / (double(n) * n) / (kPi * kPi);
+    return sum * (2.0 * kPiDouble) * (2.0 * kPiDouble / n) / (double(n) * n) / (kPiDouble * kPiDouble);
 }
 
 // A-S's at rs = 0: 28 R_d / (23 pi) g(cos_o) g(cos_i), g(c) = 1 - (1 - c / 2)^5, whose integral
 // int_0^1 g(c) c dc = 1/2 - 4 (63/384 - 127/896) is exact.
 double ashikhminShirleyDiffuseAlbedo() {
     const double g = 0.5 - 4.0 * (63.0 / 384.0 - 127.0 / 896.0);
-    const double hemisphere = 2.0 * kPi * g;
-    return 28.0 / (23.0 * kPi) * hemisphere * hemisphere / kPi;
+    const double hemisphere = 2.0 * kPiDouble * g;
+    return 28.0 / (23.0 * kPiDouble) * hemisphere * hemisphere / kPiDouble;
 }
 
 }  // namespace

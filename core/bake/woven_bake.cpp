@@ -163,6 +163,74 @@ const char* BakedMaterial::mapName(int map) {
     return names[map];
 }
 
+namespace {
+
+// What the texels say of the whole bake: whether any has gaps, the range of the yarns' specular
+// reflectance rs, and the most light any texel's yarns pass in a channel (at most 1).
+struct TexelSummary {
+    bool gaps = false;
+    double rsMin = 1.0, rsMax = 0.0, transmission = 0.0;
+};
+
+TexelSummary summarise(const std::vector<TexelSums>& sums) {
+    TexelSummary t;
+    for (const TexelSums& s : sums) {
+        t.gaps = t.gaps || s.covered < s.points;
+        if (s.covered > 0.0) t.rsMin = std::min(t.rsMin, s.rs / s.covered), t.rsMax = std::max(t.rsMax, s.rs / s.covered);
+        if (s.covered > 0.0)
+            t.transmission =
+                std::max({t.transmission, s.transmitted.r / s.covered, s.transmitted.g / s.covered, s.transmitted.b / s.covered});
+    }
+    t.transmission = std::min(t.transmission, 1.0);
+    return t;
+}
+
+// The texels' fits at every mip level, level 0 of `size` down to one texel, each level fitted in
+// the model from the texel sums averaged down (not from the level above's fits); `sizes` gets
+// each level's size.
+std::vector<std::vector<TexelFit>> fitMipLevels(const std::vector<TexelSums>& sums, const glm::ivec2& size, bool anisotropy,
+                                                std::vector<glm::ivec2>& sizes) {
+    std::vector<std::vector<TexelFit>> levels{fitAll(sums, size)};
+    sizes = {size};
+    for (int level = 1; size.x >> (level - 1) > 1 || size.y >> (level - 1) > 1; ++level) {
+        sizes.emplace_back(std::max(1, size.x >> level), std::max(1, size.y >> level));
+        levels.push_back(fitAll(downsample(sums, size, sizes.back()), sizes.back()));
+    }
+    if (!anisotropy)
+        for (std::vector<TexelFit>& level : levels)
+            for (TexelFit& t : level) t = isotropic(t);
+    return levels;
+}
+
+// A texture over one tile of the bake, `uvSize` in the mesh's uv, repeated across it.
+TextureRef tileTexture(const glm::dvec2& uvSize) {
+    TextureRef ref;
+    ref.uvTransform = glm::mat3(float(1.0 / uvSize.x), 0, 0, 0, float(1.0 / uvSize.y), 0, 0, 0, 1);
+    return ref;
+}
+
+// The material's maps that the texels decide (base colour, normal, metallic-roughness and, when
+// anisotropic, the anisotropy), each `ref` with its image, and the factors they scale.
+void setTexelMaps(Material& m, const TextureRef& ref, bool anisotropy) {
+    m.baseColor = glm::vec4(1.0f);
+    m.baseColorTexture = ref;
+    m.baseColorTexture.image = BakedMaterial::kBaseColor;
+    m.baseColorTexture.srgb = true;
+    m.normalTexture = ref;
+    m.normalTexture.image = BakedMaterial::kNormal;
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.metallicRoughnessTexture = ref;
+    m.metallicRoughnessTexture.image = BakedMaterial::kMetallicRoughness;
+    if (anisotropy) {
+        m.anisotropy.strength = 1.0f;
+        m.anisotropy.texture = ref;
+        m.anisotropy.texture.image = BakedMaterial::kAnisotropy;
+    }
+}
+
+}  // namespace
+
 BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     if (o.size < 1 || o.size > kMaxTileSide) throw std::invalid_argument("the bake size must be from 1 to " + std::to_string(kMaxTileSide));
     if (o.repeats < 1 || o.repeats > 1024) throw std::invalid_argument("the repeats must be from 1 to 1024");
@@ -183,46 +251,16 @@ BakedMaterial bakeWoven(const WovenParams& params, const BakeOptions& o) {
     checkBakeFitsInMemory(size);
 
     const std::vector<TexelSums> sums = sampleTexels(model, size, extent, o.supersamples, o.progress);
-    bool gaps = false;
-    double rsMin = 1.0, rsMax = 0.0, transmission = 0.0;
-    for (const TexelSums& s : sums) {
-        gaps = gaps || s.covered < s.points;
-        if (s.covered > 0.0) rsMin = std::min(rsMin, s.rs / s.covered), rsMax = std::max(rsMax, s.rs / s.covered);
-        if (s.covered > 0.0)
-            transmission = std::max({transmission, s.transmitted.r / s.covered, s.transmitted.g / s.covered, s.transmitted.b / s.covered});
-    }
-    transmission = std::min(transmission, 1.0);
-    std::vector<std::vector<TexelFit>> levels{fitAll(sums, size)};
-    std::vector<glm::ivec2> levelSizes{size};
-    for (int level = 1; size.x >> (level - 1) > 1 || size.y >> (level - 1) > 1; ++level) {
-        levelSizes.emplace_back(std::max(1, size.x >> level), std::max(1, size.y >> level));
-        levels.push_back(fitAll(downsample(sums, size, levelSizes.back()), levelSizes.back()));
-    }
-    if (!o.anisotropy)
-        for (std::vector<TexelFit>& level : levels)
-            for (TexelFit& t : level) t = isotropic(t);
+    const TexelSummary texels = summarise(sums);
+    const double rsMin = texels.rsMin, rsMax = texels.rsMax, transmission = texels.transmission;
+    std::vector<glm::ivec2> levelSizes;
+    const std::vector<std::vector<TexelFit>> levels = fitMipLevels(sums, size, o.anisotropy, levelSizes);
     baked.textures = encode(levels[0], size, 0, 1.0f, float(transmission));
 
-    // The material: every texture over one tile of the bake, repeated across the mesh's uv.
-    TextureRef ref;
-    ref.uvTransform = glm::mat3(float(1.0 / baked.uvSize.x), 0, 0, 0, float(1.0 / baked.uvSize.y), 0, 0, 0, 1);
+    const TextureRef ref = tileTexture(baked.uvSize);
     Material& m = baked.material;
-    m.baseColor = glm::vec4(1.0f);
-    m.baseColorTexture = ref;
-    m.baseColorTexture.image = BakedMaterial::kBaseColor;
-    m.baseColorTexture.srgb = true;
-    m.normalTexture = ref;
-    m.normalTexture.image = BakedMaterial::kNormal;
-    m.metallic = 0.0f;
-    m.roughness = 1.0f;
-    m.metallicRoughnessTexture = ref;
-    m.metallicRoughnessTexture.image = BakedMaterial::kMetallicRoughness;
-    if (o.anisotropy) {
-        m.anisotropy.strength = 1.0f;
-        m.anisotropy.texture = ref;
-        m.anisotropy.texture.image = BakedMaterial::kAnisotropy;
-    }
-    m.alphaMode = gaps ? AlphaMode::Mask : AlphaMode::Opaque;
+    setTexelMaps(m, ref, o.anisotropy);
+    m.alphaMode = texels.gaps ? AlphaMode::Mask : AlphaMode::Opaque;
     m.alphaCutoff = 0.5f;
     const double rs = rsMax >= rsMin ? 0.5 * (rsMin + rsMax) : params.rs;
     m.ior = iorForF0(float(rs));

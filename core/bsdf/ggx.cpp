@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace woven {
+#include "math_constants.h"
 
-namespace {
-constexpr float kPi = 3.14159265358979f;
-}  // namespace
+namespace woven {
 
 float TrowbridgeReitz::D(const glm::vec3& h) const {
     if (h.z <= 0.0f) return 0.0f;

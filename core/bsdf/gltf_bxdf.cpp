@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "luminance.h"
+#include "math_constants.h"
 #include "sampling.h"
 #include "thin_film.h"
 
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
 constexpr float kInvPi = 1.0f / kPi;
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
 float clamp01(float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 0.0f; }
 glm::vec3 mirrorThroughSurface(const glm::vec3& w) { return {w.x, w.y, -w.z}; }

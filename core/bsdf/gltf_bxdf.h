@@ -58,7 +58,7 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& wo, const glm::vec2& u, float uc) const;
     // Whether sample() reads uc: a Lambertian surface has one lobe to sample.
     bool choosesLobe() const { return !lambertian_; }
-    // The reflectance the albedo render pass shows (integrator.h's FirstHit): the Fresnel mix at
+    // The reflectance the albedo render pass shows (sample_contributions.h's FirstHit): the Fresnel mix at
     // normal incidence of F0 over the base colour (tinted by the thin transmission's
     // attenuation as far as it transmits) and the metal's base colour; the sheen and the coat
     // above it are left out.

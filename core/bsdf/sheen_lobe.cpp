@@ -4,11 +4,11 @@
 #include <array>
 #include <cmath>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 // Conty Estevez and Kulla's fit of the Charlie Lambda, interpolated in (1 - alpha)^2.
 float fitL(float x, float alpha) {
     const float t = (1.0f - alpha) * (1.0f - alpha);

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 float square(float x) { return x * x; }
 float schlick(float f0, float cosTheta) { return f0 + (1.0f - f0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f); }
 float iorToF0(float transmitted, float incident) { return square((transmitted - incident) / (transmitted + incident)); }

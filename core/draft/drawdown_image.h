@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "scene_description.h"
+#include "image.h"
 #include "weave_pattern.h"
 
 namespace woven {

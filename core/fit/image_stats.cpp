@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "luminance.h"
 #include "power_spectrum.h"
 
 namespace woven {

@@ -17,7 +17,7 @@
 #include <array>
 #include <vector>
 
-#include "scene_description.h"
+#include "image.h"
 #include "tile_fold.h"
 
 namespace woven {

@@ -6,8 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "image.h"
 #include "power_spectrum.h"
-#include "scene_description.h"
 #include "spectral_noise_floor.h"
 
 namespace woven {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <complex>
 
+#include "luminance.h"
+
 namespace woven {
 
 namespace {

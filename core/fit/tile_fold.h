@@ -8,7 +8,9 @@
 // render whose threads lie elsewhere still compare.
 #include <vector>
 
-#include "scene_description.h"
+#include <glm/glm.hpp>
+
+#include "image.h"
 
 namespace woven {
 

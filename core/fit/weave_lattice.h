@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "scene_description.h"
+#include "image.h"
 
 namespace woven {
 

@@ -4,13 +4,12 @@
 #include <cmath>
 
 #include "fast_math.h"
+#include "math_constants.h"
 #include "sampling.h"
 
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 float pow5(float x) { return (x * x) * (x * x) * x; }
 
 // e^x - 1, accurate where e^x rounds to 1: the Taylor series near 0 (|x|^9 / 9! < 2e-8 relative

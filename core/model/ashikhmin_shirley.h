@@ -39,7 +39,7 @@ public:
     bool choosesLobe() const { return true; }  // sample() reads uc
 
     bool transmits() const { return false; }
-    // The reflectance a denoiser's albedo pass shows (integrator.h's FirstHit): the specular
+    // The reflectance a denoiser's albedo pass shows (sample_contributions.h's FirstHit): the specular
     // lobe's at normal incidence (Schlick's F(0) = R_s) over the diffuse colour it leaves.
     glm::vec3 albedo() const { return rd_ * (1.0f - shape_.rs) + shape_.rs; }
     const LobeShape& shape() const { return shape_; }

@@ -2,8 +2,11 @@
 // Warping functions from the unit square, and the counter-based random numbers that make a
 // frame a pure function of (scene, seed, pixel, sample index).
 #include <glm/glm.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "math_constants.h"
 
 namespace woven {
 
@@ -23,6 +26,20 @@ inline glm::vec3 sampleUniformSphere(const glm::vec2& u) {
     const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z));
     const float phi = 6.2831853f * u.y;
     return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+// Uniform point on the unit disk (polar: the radius sqrt(u.x)).
+inline glm::vec2 sampleUniformDisk(const glm::vec2& u) {
+    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+// Cone around +z up to cosMax, uniform in solid angle.
+inline glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
+    const float cosTheta = 1.0f - u.x * (1.0f - cosMax);
+    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    const float phi = 2.0f * kPi * u.y;
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 
 // Uniform point on a triangle (barycentrics b1, b2), Heitz 2019 low-distortion map.

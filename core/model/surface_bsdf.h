@@ -35,7 +35,7 @@ public:
     bool choosesLobe() const { return lobe_.choosesLobe(); }
     // Whether light may pass to the other side of the surface (else the lobe only reflects).
     bool transmits() const { return lobe_.transmits(); }
-    // The reflectance the albedo render pass shows (integrator.h's FirstHit).
+    // The reflectance the albedo render pass shows (sample_contributions.h's FirstHit).
     glm::vec3 albedo() const { return lobe_.albedo(); }
     const Frame& frame() const { return frame_; }
     const glm::vec3& shadingNormal() const { return frame_.z; }

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
 #include "sampling.h"
 
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 float pow5(float x) { return (x * x) * (x * x) * x; }
 // A-S's diffuse factor for one direction: the share that passes its specular coat, up to 1 - R_s.
 float coatPassing(float mu) { return 1.0f - pow5(1.0f - 0.5f * mu); }

@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
@@ -128,7 +130,7 @@ float BdptIntegrator::pdfLight(const Vertex& v, const Vertex& next) const {
             scene_.lights()[size_t(v.light)].pdfLe(Ray{v.p, w}, v.n, &pdf, &pdfDir);
         } else {
             const float r = scene_.bounds().radius();  // the disk light sampling would use
-            pdf = 1.0f / (3.14159265f * r * r);
+            pdf = 1.0f / (kPi * r * r);
         }
     } else {
         const glm::vec3 d = next.p - v.p;

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 enum : int8_t { kNever = 0, kInTree = 1, kInfinite = 2 };

@@ -3,7 +3,7 @@
 // output and the previewer's window alike (shaders/display.frag is its GLSL twin).
 #include <string>
 
-#include "scene_description.h"
+#include "image.h"
 
 namespace woven {
 

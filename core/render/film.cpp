@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "luminance.h"
+
 namespace woven {
 
 int pixelIndex(const glm::vec2& pRaster, int width, int height) {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "frame_io.h"
-#include "integrator.h"
 #include "render_passes.h"
+#include "sample_contributions.h"
 
 namespace woven {
 

@@ -5,6 +5,7 @@
 
 #include "environment_mapping.h"
 #include "frame.h"
+#include "math_constants.h"
 #include "piecewise_constant.h"
 #include "sampling.h"
 #include "spherical_rectangle.h"
@@ -13,25 +14,10 @@
 namespace woven {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
 glm::vec3 orthogonal(const glm::vec3& n, glm::vec3* b) {
     const Frame f = Frame::fromNormal(n);
     *b = f.y;
     return f.x;
-}
-
-glm::vec2 sampleUniformDisk(const glm::vec2& u) {
-    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi)};
-}
-
-// Cone around +z up to cosMax, uniform in solid angle.
-glm::vec3 sampleUniformCone(const glm::vec2& u, float cosMax) {
-    const float cosTheta = 1.0f - u.x * (1.0f - cosMax);
-    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-    const float phi = 2.0f * kPi * u.y;
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 
 float average(const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; }

@@ -221,7 +221,7 @@ public:
         return std::visit([&](const auto& k) { return k.sampleLi(ref, u); }, kind_);
     }
     // The light from one fixed point of it, no random numbers: a triangle's centroid, a delta
-    // light's one point or direction (the direct-light pass's, integrator.h's FirstHit).
+    // light's one point or direction (the direct-light pass's, sample_contributions.h's FirstHit).
     std::optional<LightLiSample> fixedPointLi(const glm::vec3& ref) const;
     // For a direction wi from ref that reaches this light (at pLight with normal nLight for
     // triangles; ignored for the environment). Zero for delta lights.

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
 float safeAcos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }

@@ -13,6 +13,7 @@
 #include "adaptive_sampling.h"
 #include "film.h"
 #include "frame_limits.h"
+#include "integrator.h"
 #include "integrators.h"
 #include "render_scene.h"
 #include "scene_camera.h"

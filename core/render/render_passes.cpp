@@ -4,6 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
+#include "luminance.h"
+
 namespace woven {
 
 PassSums& PassSums::operator+=(const PassSums& other) {

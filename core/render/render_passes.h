@@ -1,14 +1,14 @@
 #pragma once
 // The render passes (AOVs) of a final frame beside its radiance, what a denoiser is guided by and
 // compositors read: per pixel the mean over its camera samples of what their rays first hit
-// (integrator.h's FirstHit: albedo, shading normal, depth, direct light), and the variance of its mean
+// (sample_contributions.h's FirstHit: albedo, shading normal, depth, direct light), and the variance of its mean
 // radiance. A film and a frame file keep them as exact sums (PassSums), as they keep the
 // radiance, so renders of disjoint sample ranges merge into the same passes bit for bit; the
 // passes are computed from those sums (meanPasses()).
 #include <vector>
 
 #include "exact_sum.h"
-#include "scene_description.h"
+#include "image.h"
 
 namespace woven {
 

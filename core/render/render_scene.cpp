@@ -10,11 +10,12 @@
 #include <string>
 
 #include "frame.h"
-#include "light_sampler.h"
 #include "mesh_instances.h"
+#include "render_scene_impl.h"
 #include "sampling.h"
 #include "scene_loader.h"
 #include "scene_validation.h"
+#include "triangle_corners.h"
 
 namespace woven {
 
@@ -38,186 +39,11 @@ constexpr float kShadowEpsilon = 1e-4f;
 // it takes the one of a point of its magnitude.
 float spawnOffset(const SurfaceHit& hit) { return std::max(hit.pError, kPositionError * maxAbs(hit.p)); }
 
-// What an Embree filter callback needs to decide whether a candidate hit lets the ray through.
-struct HitFilter {
-    const Mesh* mesh;
-    const SurfaceMaterial* material;
-    bool random;       // the material's answer depends on a random number (blended alpha)
-    bool singleSided;  // glTF's doubleSided false: camera rays cull its back (RayKind)
-};
-
-// The face of single-sided surfaces a ray passes through: camera rays the back; rays towards the
-// camera the faces that are backs seen from it, so that both ways agree.
-enum class Cull { Back, Front };
-
-// An intersect context that says what its context filter culls: Embree hands the filter back the
-// pointer it was given, so Embree's part comes first.
-struct CullContext {
-    RTCIntersectContext embree;
-    Cull cull = Cull::Back;
-};
-
-// The context filter of camera rays (and of rays towards the camera): only they pay for it, and
-// only in a scene where some mesh is single-sided (Impl::culls).
-void cullSingleSided(const RTCFilterFunctionNArguments* args) {
-    const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
-    if (!filter->singleSided) return;
-    const Cull cull = reinterpret_cast<const CullContext*>(args->context)->cull;
-    const std::vector<glm::vec3>& p = filter->mesh->positions;
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        const glm::uvec3 t = filter->mesh->triangles[RTCHitN_primID(args->hit, args->N, i)];
-        const glm::vec3 front = glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]);  // makeHit's ng
-        const glm::vec3 d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
-                          RTCRayN_dir_z(args->ray, args->N, i));
-        const float towardsBack = glm::dot(front, d);
-        if (cull == Cull::Back ? towardsBack > 0.0f : towardsBack < 0.0f) args->valid[i] = 0;
-    }
-}
-
-CullContext intersectContext(std::optional<Cull> cull) {
-    CullContext context;
-    rtcInitIntersectContext(&context.embree);
-    if (cull) {
-        context.embree.filter = cullSingleSided;
-        context.cull = *cull;
-    }
-    return context;
-}
-
-// A uniform number for stochastic transparency from the ray and the candidate hit: a pure
-// function of the path, so a frame stays a pure function of (scene, seed, sample range).
-float transparencyRandom(const RTCFilterFunctionNArguments* args, unsigned i) {
-    uint64_t h = mix64(uint64_t(RTCHitN_primID(args->hit, args->N, i)) * 0x9e3779b97f4a7c15ULL);
-    // Copies of an instanced mesh see the ray in their own space; their instance keeps them apart.
-    if (args->context->instID[0] != RTC_INVALID_GEOMETRY_ID) h = mix64(h ^ args->context->instID[0]);
-    const float values[] = {RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i),
-                            RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
-                            RTCRayN_dir_z(args->ray, args->N, i), RTCRayN_org_x(args->ray, args->N, i)};
-    for (float v : values) {
-        uint32_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        h = mix64(h ^ bits);
-    }
-    return float(h >> 40) * 0x1p-24f;
-}
-
-// Rejects candidate hits at points that let rays through, for intersection and occlusion rays alike.
-void rejectPassThrough(const RTCFilterFunctionNArguments* args) {
-    const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        const TexCoords tc = interpolateTexCoords(*filter->mesh, RTCHitN_primID(args->hit, args->N, i),
-                                                  RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-        // The hash costs more than most answers: only blended alpha asks for it.
-        const float u = filter->random ? transparencyRandom(args, i) : 0.0f;
-        if (filter->material->passesThrough(tc, u)) args->valid[i] = 0;
-    }
-}
-
 void embreeError(void* userPtr, RTCError code, const char* message) {
     auto* out = static_cast<std::string*>(userPtr);
     if (out->empty()) *out = message ? message : "unknown error";
 }
 
-}  // namespace
-
-struct RenderScene::Impl {
-    std::shared_ptr<const SceneDescription> scene;
-    RTCDevice device = nullptr;
-    RTCScene rtcScene = nullptr;
-    std::string embreeMessage;
-
-    std::optional<SceneMaterials> materials;
-    std::vector<HitFilter> hitFilters;  // per mesh, referenced by Embree
-    // An instanced mesh's triangles are one Embree scene that each of its copies instances; the
-    // copies have the top scene's IDs from meshes.size() on (the other meshes keep their index).
-    struct InstanceRef {
-        unsigned mesh, instance;
-    };
-    std::vector<InstanceRef> instanceRefs;  // by instance ID - meshes.size()
-    // Some mesh is single-sided: only then do camera rays (and rays towards the camera) take the
-    // context filter that culls backs, and the scenes Embree's support for it.
-    bool culls = false;
-    RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;
-
-    std::vector<Light> lights;
-    std::vector<int> directPassLights;
-    std::vector<std::vector<int>> triangleLights;  // per mesh: light index per triangle (or empty)
-    int environment = -1;
-    std::optional<PowerLightSampler> lightSampler;
-    std::optional<BvhLightSampler> lightTree;
-    Bounds bounds;
-
-    ~Impl() {
-        if (rtcScene) rtcReleaseScene(rtcScene);
-        if (device) rtcReleaseDevice(device);
-    }
-
-    [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
-
-    // glTF's doubleSided false.
-    bool singleSided(const Mesh& mesh) const {
-        return mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
-    }
-    void buildGeometry();
-    RTCGeometry triangleGeometry(size_t m);
-    void addInstances(size_t m, RTCGeometry triangles);
-    void buildLights();
-    SurfaceHit makeHit(unsigned meshIndex, int instance, unsigned prim, float b1, float b2, float t,
-                       const glm::vec3& dir) const;
-};
-
-namespace {
-// A hit triangle's corners in world space: the mesh's own, or an instanced copy's placed by its
-// matrix as the loader places a node's mesh (gltf_loader.cpp's addPrimitive: normals by the
-// inverse transpose, tangents by the matrix and made perpendicular again, the winding swapped
-// under a mirroring matrix), so that a copy shades as the same mesh expanded into the world would.
-struct Corners {
-    glm::uvec3 tri;  // the vertex indices in the world's winding
-    float b1, b2;    // the hit's barycentrics in that winding
-    const glm::mat4* placement;  // an instanced copy's matrix, or null
-    bool mirrored;               // the placement swaps the winding
-    glm::vec3 p[3];
-    glm::vec3 n[3];  // where the mesh has normals (hitCorners)
-    glm::vec4 t[3];  // where it has tangents (hitCorners)
-};
-
-// The corners' positions and winding alone: what finding rectangular lamps needs of them.
-Corners cornerPositions(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
-    Corners c;
-    c.tri = mesh.triangles[prim];
-    c.b1 = b1;
-    c.b2 = b2;
-    c.placement = instance >= 0 ? &(*mesh.instances)[size_t(instance)] : nullptr;
-    c.mirrored = c.placement && glm::determinant(glm::mat3(*c.placement)) < 0.0f;
-    if (c.mirrored) {
-        std::swap(c.tri.y, c.tri.z);
-        std::swap(c.b1, c.b2);
-    }
-    const glm::mat4* m = c.placement;
-    for (int k = 0; k < 3; ++k)
-        c.p[k] = m ? glm::vec3(*m * glm::vec4(mesh.positions[c.tri[k]], 1.0f)) : mesh.positions[c.tri[k]];
-    return c;
-}
-
-// The positions, normals and tangents.
-Corners hitCorners(const Mesh& mesh, int instance, unsigned prim, float b1, float b2) {
-    Corners c = cornerPositions(mesh, instance, prim, b1, b2);
-    const glm::mat4* m = c.placement;
-    const glm::mat3 normalMatrix = m ? glm::transpose(glm::inverse(glm::mat3(*m))) : glm::mat3(1.0f);
-    for (int k = 0; k < 3; ++k) {
-        const unsigned v = c.tri[k];
-        if (!mesh.normals.empty()) c.n[k] = m ? glm::normalize(normalMatrix * mesh.normals[v]) : mesh.normals[v];
-        if (!mesh.tangents.empty()) {
-            const glm::vec4& t = mesh.tangents[v];
-            c.t[k] = m ? glm::vec4(Frame::fromNormalAndAxis(c.n[k], glm::mat3(*m) * glm::vec3(t)).x,
-                                   c.mirrored ? -t.w : t.w)
-                       : t;
-        }
-    }
-    return c;
-}
 }  // namespace
 
 void RenderScene::Impl::buildGeometry() {
@@ -301,106 +127,6 @@ void RenderScene::Impl::addInstances(size_t m, RTCGeometry triangles) {
         instanceRefs.push_back({unsigned(m), unsigned(i)});
     }
     rtcReleaseScene(own);  // its instances hold it
-}
-
-namespace {
-// Two triangles that together make a rectangle, as a modeller splits a quad: sharing a diagonal
-// (two vertex indices), wound alike, and the far corners mirror images about the diagonal's
-// midpoint with a right angle there. Returns the rectangle's corner and edges (their cross
-// product along the first triangle's normal). The tolerance is relative to the edges, far below
-// anything a render could show; a quad whose placed corners round beyond it stays two triangles,
-// which is always right.
-struct RectangleShape {
-    glm::vec3 corner, ex, ey;
-};
-std::optional<RectangleShape> rectangleOf(const Corners& first, const Corners& second) {
-    constexpr float kTolerance = 1e-5f;
-    int shared = 0, lone1 = -1, lone2 = -1;
-    for (int i = 0; i < 3; ++i) {
-        bool inSecond = false;
-        for (int j = 0; j < 3; ++j) inSecond = inSecond || first.tri[i] == second.tri[j];
-        if (inSecond) ++shared;
-        else lone1 = i;
-    }
-    for (int j = 0; j < 3; ++j)
-        if (second.tri[j] != first.tri[0] && second.tri[j] != first.tri[1] && second.tri[j] != first.tri[2]) lone2 = j;
-    if (shared != 2 || lone1 < 0 || lone2 < 0) return std::nullopt;
-    const glm::vec3 u = first.p[lone1], v = second.p[lone2];
-    const glm::vec3 x = first.p[(lone1 + 1) % 3], y = first.p[(lone1 + 2) % 3];
-    const glm::vec3 ex = x - u, ey = y - u;
-    const float width = glm::length(ex), height = glm::length(ey);
-    // Relative to the shorter edge and to both, so that a long thin strip is held as tightly.
-    if (!(std::min(width, height) > 0.0f) || glm::length(u + v - x - y) > kTolerance * std::min(width, height) ||
-        std::abs(glm::dot(ex, ey)) > kTolerance * width * height)
-        return std::nullopt;
-    const glm::vec3 n1 = glm::cross(first.p[1] - first.p[0], first.p[2] - first.p[0]);
-    const glm::vec3 n2 = glm::cross(second.p[1] - second.p[0], second.p[2] - second.p[0]);
-    if (!(glm::dot(n1, n2) > 0.0f)) return std::nullopt;
-    // (u, x, y) is the first triangle's winding, so ex x ey is along its normal.
-    return RectangleShape{u, ex, ey};
-}
-}  // namespace
-
-void RenderScene::Impl::buildLights() {
-    triangleLights.resize(scene->meshes.size());
-    for (size_t m = 0; m < scene->meshes.size(); ++m) {
-        const Mesh& mesh = scene->meshes[m];
-        const SurfaceMaterial& material = (*materials)[mesh.material];
-        if (!material.emits()) continue;
-        // An instanced emitter's copies are each a light (by instance, then triangle).
-        const size_t n = mesh.triangles.size();
-        triangleLights[m].assign(copies(mesh) * n, -1);
-        for (size_t i = 0; i < copies(mesh); ++i)
-            for (size_t t = 0; t < n; ++t) {
-                const int instance = mesh.instances ? int(i) : -1;
-                if (material.uniformEmission() && t + 1 < n) {
-                    // A rectangle of one radiance is one light, sampled whole (spherical_rectangle.h).
-                    const std::optional<RectangleShape> r = rectangleOf(cornerPositions(mesh, instance, unsigned(t), 0.0f, 0.0f),
-                                                                        cornerPositions(mesh, instance, unsigned(t + 1), 0.0f, 0.0f));
-                    if (r) {
-                        Light light = Light::rectangle(r->corner, r->ex, r->ey, material.emission(TexCoords{}),
-                                                       material.twoSidedEmission());
-                        if (light.power() != glm::vec3(0.0f)) {
-                            triangleLights[m][i * n + t] = triangleLights[m][i * n + t + 1] = int(lights.size());
-                            lights.push_back(std::move(light));
-                        }
-                        ++t;
-                        continue;
-                    }
-                }
-                const Corners c = hitCorners(mesh, instance, unsigned(t), 0.0f, 0.0f);
-                const std::array<TexCoords, 3> corners = {interpolateTexCoords(mesh, unsigned(t), 0.0f, 0.0f),
-                                                          interpolateTexCoords(mesh, unsigned(t), 1.0f, 0.0f),
-                                                          interpolateTexCoords(mesh, unsigned(t), 0.0f, 1.0f)};
-                const bool mirrored = c.tri != mesh.triangles[t];
-                Light light = Light::triangle(c.p[0], c.p[1], c.p[2], material,
-                                              mirrored ? std::array<TexCoords, 3>{corners[0], corners[2], corners[1]} : corners);
-                if (!(light.power() != glm::vec3(0.0f))) continue;  // degenerate: never hit, never sampled
-                triangleLights[m][i * n + t] = int(lights.size());
-                lights.push_back(std::move(light));
-            }
-    }
-    for (const PunctualLight& p : scene->lights) lights.push_back(Light::punctual(p));
-    const Environment& env = scene->environment;
-    bool envShines = glm::max(env.color.r, glm::max(env.color.g, env.color.b)) > 0.0f;
-    if (envShines && env.image)
-        envShines = std::any_of(env.image->pixels.begin(), env.image->pixels.end(),
-                                [](const glm::vec3& p) { return glm::max(p.r, glm::max(p.g, p.b)) > 0.0f; });
-    if (envShines) {
-        environment = int(lights.size());
-        lights.push_back(Light::environment(env));
-    }
-    for (Light& light : lights) light.setSceneBounds(bounds);
-    // The direct-light pass's lights: the most powerful, each a BSDF evaluation per camera sample;
-    // ties go to the lower index, so the choice is the same on every machine.
-    std::vector<std::pair<float, int>> byPower;
-    for (size_t i = 0; i < lights.size(); ++i)
-        if (int(i) != environment) byPower.push_back({-luminance(lights[i].power()), int(i)});
-    const size_t kept = std::min(byPower.size(), size_t(kDirectPassLights));
-    std::partial_sort(byPower.begin(), byPower.begin() + ptrdiff_t(kept), byPower.end());
-    for (size_t i = 0; i < kept; ++i) directPassLights.push_back(byPower[i].second);
-    lightSampler.emplace(lights);
-    lightTree.emplace(lights);
 }
 
 SurfaceHit RenderScene::Impl::makeHit(unsigned meshIndex, int instance, unsigned prim, float u, float v, float t,

@@ -45,7 +45,7 @@ public:
     glm::vec3 emitted(const SurfaceHit& hit, const glm::vec3& w) const;
 
     const std::vector<Light>& lights() const;
-    // The lights whose light the direct-light pass shows (integrator.h's FirstHit): those but the
+    // The lights whose light the direct-light pass shows (sample_contributions.h's FirstHit): those but the
     // environment (whose light only noisy sampling finds), at most kDirectPassLights of them,
     // the most powerful first.
     static constexpr int kDirectPassLights = 4;

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
 #include "spherical_triangle.h"
 
 namespace woven {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 }  // namespace
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
+
 namespace woven {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 float safeAsin(float x) { return std::asin(std::clamp(x, -1.0f, 1.0f)); }
 float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }

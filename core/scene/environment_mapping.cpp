@@ -2,11 +2,9 @@
 
 #include <cmath>
 
-namespace woven {
+#include "math_constants.h"
 
-namespace {
-constexpr float kPi = 3.14159265358979323846f;
-}
+namespace woven {
 
 glm::vec3 equirectDirection(const glm::vec2& uv) {
     const float theta = kPi * uv.y, phi = 2.0f * kPi * uv.x;

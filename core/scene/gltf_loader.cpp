@@ -3,11 +3,9 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -20,6 +18,9 @@
 
 #include "frame.h"
 #include "coordinate_limits.h"
+#include "glb_container.h"
+#include "gpu_instancing.h"
+#include "gltf_file_access.h"
 #include "decoded_limits.h"
 #include "draco_decoding.h"
 #include "gltf_accessor.h"
@@ -111,9 +112,6 @@ std::string nameOr(const std::string& name, const char* kind, int index) {
     return name.empty() ? kind + std::to_string(index) : name;
 }
 
-// A glTF file or one of its buffers: far beyond any asset woven renders, well within memory.
-constexpr size_t kMaxGltfFileBytes = size_t(4) << 30;
-
 // KHR_lights_punctual gives candela (point, spot) and lux (directional); woven's lights are
 // radiometric (W/sr, W/m^2). Blender's importer divides by 683 lm/W (its default "Standard"
 // lighting mode), and so does woven, so a file lights the same in both.
@@ -151,48 +149,6 @@ private:
         std::cerr << "warning: " << path_ << ": " << message << "\n";
     }
 
-    // A .glb's chunks must lie within the file its header sizes: tinygltf copies a chunk by the
-    // length the chunk claims, so a file cut short (or a length field out of range) would have it
-    // read past the end of the buffer.
-    void checkGlbChunks(const std::vector<unsigned char>& file) const {
-        if (file.size() < 4 || std::memcmp(file.data(), "glTF", 4) != 0) return;
-        if (file.size() < 20) fail("cannot read glTF binary: the file is cut short: " + std::to_string(file.size()) + " bytes, under its 20-byte header");
-        uint32_t total = 0;
-        std::memcpy(&total, file.data() + 8, 4);
-        if (total > file.size())
-            fail("cannot read glTF binary: the file is cut short: its header says " + std::to_string(total) + " bytes, the file has " +
-                 std::to_string(file.size()));
-        for (size_t at = 12; at < total;) {
-            if (total - at < 8) fail("cannot read glTF binary: the chunk header at byte " + std::to_string(at) + " is cut short");
-            uint32_t length = 0;
-            std::memcpy(&length, file.data() + at, 4);
-            if (length > total - at - 8)
-                fail("cannot read glTF binary: the chunk at byte " + std::to_string(at) + " says " + std::to_string(length) +
-                     " bytes, past the file's end (" + std::to_string(total - at - 8) + " bytes left)");
-            at += 8 + size_t(length);
-        }
-    }
-
-    // The JSON part of the file (the first chunk of a .glb), or null when it cannot be parsed.
-    // What tinygltf would read other than as written (untrusted_json.h: nesting deeper than woven
-    // reads, a NUL byte, a key twice, U+0000 in a string; glTF's JSON forbids them) is refused
-    // here, before tinygltf walks it.
-    nlohmann::json jsonPart(const std::vector<unsigned char>& file) const {
-        std::string_view bytes(reinterpret_cast<const char*>(file.data()), file.size());
-        if (bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0) {
-            uint32_t length = 0;
-            std::memcpy(&length, bytes.data() + 12, 4);
-            bytes = bytes.substr(20, std::min<size_t>(length, bytes.size() - 20));
-        }
-        try {
-            return parseUntrustedJson(bytes);
-        } catch (const JsonAsWrittenError& e) {
-            fail(e.what());
-        } catch (const std::invalid_argument&) {
-            return nlohmann::json();  // tinygltf names what is malformed
-        }
-    }
-
     void readModel() {
         std::vector<unsigned char> file;
         try {
@@ -201,9 +157,9 @@ private:
             throw SceneError(e.what());
         }
         scene_.inputFiles.push_back(path_);
-        checkGlbChunks(file);
+        checkGlbChunks(file, path_);
         // Compressed files fail inside tinygltf with a confusing buffer error: name the cause first.
-        document_ = jsonPart(file);
+        document_ = gltfJson(file, path_);
         // Compressed files hold what tinygltf refuses: stand-ins (replaced when decoding) first.
         const bool meshoptStubbed = stubMeshoptFallbackBuffers(document_);
         const bool dracoStoodIn = standInDracoIndexViews(document_);
@@ -214,7 +170,7 @@ private:
                 if (name.is_string() && kCompressionExtensions.count(name.get<std::string>()))
                     failCompressed(name.get<std::string>());
         tinygltf::TinyGLTF reader;
-        reader.SetFsCallbacks({fileExists, keepPath, readFile, refuseWrite, this});
+        files_.serve(reader);
         reader.SetImageLoader(keepEncodedImage, &imageSink_);
         reader.SetStoreOriginalJSONForExtrasAndExtensions(true);
         std::string err, warn;
@@ -238,57 +194,6 @@ private:
         }
     }
 
-    // The file with its JSON replaced by `document`: a .glb keeps its binary chunk.
-    static std::vector<unsigned char> withJson(const std::vector<unsigned char>& file, const nlohmann::json& document) {
-        std::string json = document.dump();
-        if (file.size() < 20 || std::memcmp(file.data(), "glTF", 4) != 0) return {json.begin(), json.end()};
-        uint32_t jsonLength = 0;
-        std::memcpy(&jsonLength, file.data() + 12, 4);
-        const size_t rest = std::min<size_t>(size_t(20) + jsonLength, file.size());
-        json.resize((json.size() + 3) / 4 * 4, ' ');  // chunks are 4-byte aligned, JSON padded with spaces
-        std::vector<unsigned char> out(file.begin(), file.begin() + 12);
-        const uint32_t length = uint32_t(json.size()), total = uint32_t(12 + 8 + json.size() + (file.size() - rest));
-        std::memcpy(out.data() + 8, &total, 4);
-        out.insert(out.end(), reinterpret_cast<const unsigned char*>(&length), reinterpret_cast<const unsigned char*>(&length) + 4);
-        out.insert(out.end(), file.begin() + 16, file.begin() + 20);  // the chunk type, "JSON"
-        out.insert(out.end(), json.begin(), json.end());
-        out.insert(out.end(), file.begin() + rest, file.end());
-        return out;
-    }
-
-    // tinygltf's file access, for the buffers and images a file names: only regular files, of a
-    // bounded size, inside the glTF file's folder (unless LoadOptions::anyPath).
-    std::string allowedFile(const std::string& path) const {
-        namespace fs = std::filesystem;
-        std::error_code error;
-        const fs::path resolved = fs::weakly_canonical(fs::path(path), error);
-        if (error) return "cannot resolve the path";
-        if (options_.anyPath) return "";
-        const fs::path folder = fs::weakly_canonical(fs::absolute(fs::path(path_)).parent_path(), error);
-        const auto [end, unused] = std::mismatch(folder.begin(), folder.end(), resolved.begin(), resolved.end());
-        if (end != folder.end()) return "is outside the glTF file's folder (" + folder.string() + "; --allow-any-path reads it)";
-        return "";
-    }
-    // Whether it exists at all; readFile then says why a file that does is refused.
-    static bool fileExists(const std::string& path, void*) {
-        std::error_code error;
-        return std::filesystem::exists(path, error);
-    }
-    static std::string keepPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
-    static bool readFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
-        if (const std::string problem = static_cast<GltfLoader*>(self)->allowedFile(path); !problem.empty()) {
-            *err = path + ": " + problem;
-            return false;
-        }
-        try {
-            *out = readRegularFile(path, kMaxGltfFileBytes);
-        } catch (const FileReadError& e) {
-            *err = e.what();
-            return false;
-        }
-        static_cast<GltfLoader*>(self)->scene_.inputFiles.push_back(path);
-        return true;
-    }
     // The images tinygltf could not read because their file is not there: in none of the places
     // it looked (the glTF file's folder, then the current one), and not outside the folder, which
     // stays an error without --allow-any-path whether or not the file exists.
@@ -302,28 +207,10 @@ private:
             const std::string file = uriFilePath(uri);
             std::error_code inFolder, inCurrent;
             if (!fs::exists(folder / file, inFolder) && !inFolder && !fs::exists(file, inCurrent) && !inCurrent &&
-                allowedFile((folder / file).string()).empty())
+                files_.refusal((folder / file).string()).empty())
                 absent.insert(int(i));
         }
         return absent;
-    }
-    // The file a relative URI names, decoded as tinygltf decodes it (%XX, and '+' as a space).
-    static std::string uriFilePath(const std::string& uri) {
-        std::string file;
-        for (size_t i = 0; i < uri.size(); ++i) {
-            if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-                std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-                file += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-                i += 2;
-            } else {
-                file += uri[i] == '+' ? ' ' : uri[i];
-            }
-        }
-        return file;
-    }
-    static bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-        *err = "woven does not write through the glTF loader";
-        return false;
     }
 
 
@@ -486,7 +373,7 @@ private:
         // A node's weights override its mesh's; missing ones are 0.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         const std::vector<glm::mat4> joints = node.skin >= 0 ? GltfPrimitiveReader(model_, path_).skinMatrices(node.skin, nodeWorld_, nodeName) : std::vector<glm::mat4>{};
-        std::shared_ptr<std::vector<glm::mat4>> instances = instanceMatrices(node, nodeName);
+        std::shared_ptr<std::vector<glm::mat4>> instances = instanceMatrices(model_, node, nodeName, instances_, path_);
         // An instanced mesh stays in its own space and each instance places it: world x TRS, or
         // the TRS alone after a skin, which ignores the node (and, being linear, commutes with it).
         if (instances && joints.empty())
@@ -505,59 +392,6 @@ private:
             scene_.meshes[m].nodePath = nodePath;
         }
         if (instances) placeInstances(std::move(instances), first, nodeName);
-    }
-
-    // EXT_mesh_gpu_instancing's per-instance TRANSLATION, ROTATION (a quaternion, perhaps normalized
-    // integers) and SCALE as matrices in the node's space, or none when the node is not instanced.
-    std::shared_ptr<std::vector<glm::mat4>> instanceMatrices(const tinygltf::Node& node, const std::string& nodeName) {
-        const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
-        if (it == node.extensions.end()) return nullptr;
-        const std::string where = "node '" + nodeName + "': EXT_mesh_gpu_instancing";
-        const tinygltf::Value& attributes = it->second.Get("attributes");
-        if (!attributes.IsObject()) fail(where + " has no attributes object");
-        AccessorData trs[3];
-        const char* semantics[3] = {"TRANSLATION", "ROTATION", "SCALE"};
-        size_t count = size_t(-1);
-        for (int a = 0; a < 3; ++a) {
-            const tinygltf::Value& index = attributes.Get(semantics[a]);
-            if (!index.IsInt() && !index.IsNumber()) continue;  // absent: identity
-            const int accessor = index.IsInt() ? index.Get<int>() : int(index.GetNumberAsDouble());
-            // Before reading it: the accessor's count is what the limit bounds.
-            if (accessor >= 0 && size_t(accessor) < model_.accessors.size() &&
-                model_.accessors[size_t(accessor)].count > kMaxInstances - instances_)
-                fail(where + " " + semantics[a] + ": " + std::to_string(model_.accessors[size_t(accessor)].count) +
-                     " instances bring the file's past woven's limit of " + std::to_string(kMaxInstances) +
-                     " (docs/LIMITS.md)");
-            try {
-                trs[a] = readAccessor(model_, accessor);
-            } catch (const AccessorError& e) {
-                fail(where + " " + semantics[a] + ": " + e.what());
-            }
-            if (trs[a].components != (a == 1 ? 4 : 3))
-                fail(where + " " + semantics[a] + " must be a " + (a == 1 ? "VEC4" : "VEC3") + " accessor");
-            if (count != size_t(-1) && trs[a].count != count)
-                fail(where + ": TRANSLATION, ROTATION and SCALE must have one element per instance each (" +
-                     std::to_string(count) + " and " + std::to_string(trs[a].count) + ")");
-            count = trs[a].count;
-            for (double v : trs[a].values)
-                if (!std::isfinite(v)) fail(where + " " + semantics[a] + " holds a NaN or infinite value");
-        }
-        if (count == size_t(-1)) fail(where + " names none of TRANSLATION, ROTATION and SCALE");
-        instances_ += count;
-        auto matrices = std::make_shared<std::vector<glm::mat4>>(count);
-        for (size_t i = 0; i < count; ++i) {
-            glm::vec3 t(0.0f), s(1.0f);
-            glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
-            if (trs[0].count) t = glm::vec3(trs[0].at(i, 0), trs[0].at(i, 1), trs[0].at(i, 2));
-            if (trs[1].count) {
-                r = glm::quat(float(trs[1].at(i, 3)), float(trs[1].at(i, 0)), float(trs[1].at(i, 1)), float(trs[1].at(i, 2)));
-                if (!(glm::length(r) > 0.0f)) fail(where + " ROTATION " + std::to_string(i) + " is a zero quaternion");
-                r = glm::normalize(r);
-            }
-            if (trs[2].count) s = glm::vec3(trs[2].at(i, 0), trs[2].at(i, 1), trs[2].at(i, 2));
-            (*matrices)[i] = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
-        }
-        return matrices;
     }
 
     // Gives the node's primitives (scene_.meshes from `first`) their instances. One with a zero
@@ -726,6 +560,7 @@ private:
     size_t instances_ = 0;  // so far, against kMaxInstances
     DroppedTriangles degenerate_, duplicate_;
     SceneDescription scene_;
+    GltfFileAccess files_{path_, options_.anyPath, scene_.inputFiles};
 };
 
 }  // namespace

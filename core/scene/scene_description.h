@@ -9,24 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "image.h"
+#include "luminance.h"
 #include "textile_units.h"
 #include "woven_params.h"
 
 namespace woven {
-
-// Luminance of linear Rec. 709 RGB, in float or double.
-template <typename T, glm::qualifier Q>
-T luminance(const glm::vec<3, T, Q>& c) {
-    return T(0.2126) * c.r + T(0.7152) * c.g + T(0.0722) * c.b;
-}
-
-// Linear RGB float image, row 0 at the top (frames and environment maps).
-struct Image {
-    int width = 0, height = 0;
-    std::vector<glm::vec3> pixels;
-    glm::vec3& at(int x, int y) { return pixels[size_t(y) * width + x]; }
-    const glm::vec3& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
-};
 
 // A texture image as decoded, before any colour decoding: every channel normalised to [0, 1]
 // (or, for float formats, as stored), always RGBA (grey and grey-alpha expanded, alpha 1 where

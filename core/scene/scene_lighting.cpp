@@ -11,6 +11,7 @@
 #include "studio_environments.h"
 #include "image_io.h"
 #include "light_limits.h"
+#include "math_constants.h"
 #include "mesh_instances.h"
 #include "scene_camera.h"
 #include "scene_loader.h"
@@ -135,7 +136,7 @@ float lightIrradianceAtCentre(const SceneDescription& scene) {
         for (const glm::vec3& p : env.image->pixels) total += luminance(p);
         mean *= float(total / double(env.image->pixels.size()));
     }
-    return sum + 3.14159265f * mean + emitterIrradiance(scene, centre);
+    return sum + kPi * mean + emitterIrradiance(scene, centre);
 }
 
 DefaultLighting lightByDefault(SceneDescription& scene) {
