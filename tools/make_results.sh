@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates docs/RESULTS.md and its pictures: convergence of both integrators on the two
+# Regenerates the pictures of docs/RESULTS.md and a full log of the commands and their tables,
+# docs/results/make_results_log.md, from which RESULTS.md's tables are updated by hand (RESULTS.md
+# keeps one current table a claim; the long logs stay out of it). Convergence of both integrators on the two
 # convergence scenes, what --integrator auto picks, what each woven feature costs, the model and
 # render benchmarks, preview frame time, the paper's figures and the sample drafts, the weave
 # filter's time to a clean frame on the default scene and the paper's satin, the bakes, and the
@@ -12,7 +14,7 @@ cmake -S . -B "$build" -G Ninja >/dev/null && cmake --build "$build" >/dev/null
 woven="$build/app/woven"
 out=docs/results
 mkdir -p "$out"
-md=docs/RESULTS.md
+md=docs/results/make_results_log.md
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
 
