@@ -301,6 +301,8 @@ void PreviewWindow::drawDraftWindow() {
     const float left = panel ? panel->Rect().Max.x + 8.0f : 456.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(std::max(display.x - left - 8.0f, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
+    // Collapsed at first, to its title bar: beside the panel it would hide a third of the view.
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     ImGui::Begin("Draft");
     attempt([&] {
         if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {

@@ -91,8 +91,11 @@ void PreviewWindow::drawPanel() {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float labels = labelWidth() + style.ItemInnerSpacing.x;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float width = std::min(kFieldWidth + labels + 2.0f * style.WindowPadding.x + style.ScrollbarSize,
-                                 std::max(display.x - 16.0f, 100.0f));
+    // At most 35 % of the window, so that the cloth keeps the view, unless the fields would then
+    // be narrower than half their width; never wider than the window.
+    const float chrome = labels + 2.0f * style.WindowPadding.x + style.ScrollbarSize;
+    const float width = std::min({kFieldWidth + chrome, std::max(0.35f * display.x - 8.0f, 0.5f * kFieldWidth + chrome),
+                                  std::max(display.x - 16.0f, 100.0f)});
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, display.y - 16), ImGuiCond_FirstUseEver);
     // Never larger than the window, which may shrink: every control is reached by scrolling.

@@ -21,6 +21,7 @@
 #include "image_texture.h"
 #include "scene_loader.h"
 #include "woven_assignment.h"
+#include "woven_params_json.h"
 
 namespace woven {
 
@@ -410,7 +411,9 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
                     {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
                     {"tile_rows", p->tile.size()},
                     {"draft_open", draft_.has_value() && draftEdit_ == editIndex_},
-                    {"measures", measuresLine_}};
+                    {"measures", measuresLine_},
+                    // Every parameter, for the tests to tell whether an undo restored them all.
+                    {"params", paramsToJson(*p)}};
     }
     map["state"] = {
         {"frame", frame_},
