@@ -95,12 +95,13 @@ std::string inactiveBecause(const ParamInfo& info, const WovenParams& p) {
     if (name == "transmission_gloss" && p.transmission == 0.0f && !anyYarnSets(p, kYarnTransmission))
         return "yarn transmission is 0: no light passes through the yarns to take this gloss";
     if (name == "noise_scale" && p.noise == 0.0f && !anyYarnSets(p, kYarnNoise)) return "noise is 0: there is no noise to scale";
-    if (name == "backing_color") {
-        if (p.backing == 0) return "gaps are see-through (backing 0): set \"gaps show backing\" to 1 to see this colour";
+    if (name == "backing" || name == "backing_color") {
+        if (name == "backing_color" && p.backing == 0)
+            return "gaps are see-through (backing 0): set \"gaps show backing\" to 1 to see this colour";
         const bool narrowYarns = p.yarn_width < 1.0f || p.warp_width < 1.0f ||
                                  std::any_of(p.yarns.begin(), p.yarns.end(),
                                              [](const YarnSpec& y) { return y.set[kYarnWidth] && y.value[kYarnWidth] < 1.0f; });
-        if (!narrowYarns) return "the yarns fill their cells (widths 1): no gap shows the backing";
+        if (!narrowYarns) return "the yarns fill their cells (widths 1): there are no gaps";
     }
     return "";
 }

@@ -2,6 +2,7 @@
 
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 
@@ -54,6 +55,8 @@ void WidgetMap::record(const char* label, const char* kind) {
     const bool group = g.LastItemData.ID == 0;
     item.frameMin = group ? item.min : g.LastItemData.NavRect.Min;
     item.frameMax = group ? item.max : g.LastItemData.NavRect.Max;
+    // A group's fields end where the item width does, before its label.
+    if (group) item.frameMax.x = std::min(item.max.x, item.min.x + ImGui::CalcItemWidth());
     item.visible = ImGui::IsItemVisible();
     item.disabled = (g.CurrentItemFlags & ImGuiItemFlags_Disabled) != 0;
     items_.push_back(std::move(item));

@@ -20,7 +20,7 @@ struct WidgetItem {
     std::string window;  // the ImGui window it was drawn in
     uint32_t id = 0;     // the ID its label makes in the ID stack it was drawn in
     ImVec2 min, max;     // the whole item, label included (ImGui::GetItemRectMin/Max)
-    ImVec2 frameMin, frameMax;  // the part that takes a click (a field's frame, without its label)
+    ImVec2 frameMin, frameMax;  // the part that takes a click (a field's frame, a group's fields, without the label)
     bool visible = false;       // not clipped away (scrolled out, a collapsed window)
     bool disabled = false;      // drawn disabled (ImGui::BeginDisabled): it takes no input
 };

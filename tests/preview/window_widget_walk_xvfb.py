@@ -42,8 +42,7 @@ def nudge(window, label, kind):
     wx, wy = window.map['state']['window']['pos']
     # A colour's first field (red), a pair's first value, a single slider or drag from its middle.
     pair = label.endswith('(1/n, 1/m)')
-    # (A group's frame runs to the end of its label: a pair's first value is in its first tenth.)
-    x = x0 + (x1 - x0) * (0.15 if kind == 'colour' else 0.1 if pair else 0.5)
+    x = x0 + (x1 - x0) * (0.15 if kind == 'colour' else 0.25 if pair else 0.5)
     y = (y0 + y1) / 2
     window.xdotool('mousemove', str(int(wx + x)), str(int(wy + y)))
     window.frames()
