@@ -63,6 +63,7 @@ void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>
     }
     draft_ = DraftEditor::open(wif, warnings);
     draftEdit_ = editIndex_;
+    showDraftWindow_ = true;
     copyToBuffer(draftPath_, wif);
 }
 
@@ -302,8 +303,10 @@ void PreviewWindow::drawDraftWindow() {
     const float left = panel ? panel->Rect().Max.x + 8.0f : 456.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(std::max(display.x - left - 8.0f, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
-    // Collapsed at first, to its title bar: beside the panel it would hide a third of the view.
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // A scene's own draft starts collapsed to its title bar (beside the panel it would hide a third
+    // of the view); a draft the user opens is shown.
+    ImGui::SetNextWindowCollapsed(!showDraftWindow_, showDraftWindow_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
+    showDraftWindow_ = false;
     ImGui::Begin("Draft");
     attempt([&] {
         if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {

@@ -189,6 +189,7 @@ void PreviewWindow::openDraft(const std::string& path) {
     *p = editor.material(*p);
     draft_ = std::move(editor);
     draftEdit_ = editIndex_;
+    showDraftWindow_ = true;
     materialEdited();
     applyEdits();
     copyToBuffer(draftPath_, path);

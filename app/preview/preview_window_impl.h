@@ -204,6 +204,7 @@ private:
     std::optional<DraftEditor> draft_;
     int draftEdit_ = -1;
     DraftView draftView_;
+    bool showDraftWindow_ = false;  // expand the Draft window next frame: the user opened a draft
     char draftPath_[512] = "draft.wif";
 
     // The Fabrics menu, made on first use (with the GL context current, as it must be when it
