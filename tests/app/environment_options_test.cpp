@@ -21,23 +21,12 @@ namespace {
 
 using test::TempDir;
 
-int run(const std::string& args, std::string* errors = nullptr) {
-    const std::string errorFile = testing::TempDir() + "woven_environment_options_stderr_" + std::to_string(::getpid()) + ".txt";
-    const int status = test::runWoven(args + " 2>" + errorFile).exitCode;
-    if (errors) {
-        std::ifstream in(errorFile);
-        *errors = std::string(std::istreambuf_iterator<char>(in), {});
-    }
-    std::remove(errorFile.c_str());
-    return status;
-}
-
 const std::string kScene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
 const std::string kFrame = " --width 32 --height 24 --spp 2 --integrator path --no-denoise --noise-threshold 0";
 
 Image render(const TempDir& dir, const std::string& name, const std::string& options) {
     const std::string path = dir.file(name + ".exr");
-    EXPECT_EQ(run("render " + kScene + kFrame + " " + options + " -o " + path), 0) << options;
+    EXPECT_EQ(test::runWovenWithErrors("render " + kScene + kFrame + " " + options + " -o " + path), 0) << options;
     return readExr(path).image;
 }
 
@@ -125,8 +114,8 @@ TEST(EnvironmentOptions, RotationTurnsTheLightAlikeInTheGlslViewAndThePathTracer
                                   std::to_string(degrees);
         const std::string glsl = dir.file("glsl" + std::to_string(-degrees) + ".exr");
         const std::string traced = dir.file("traced" + std::to_string(-degrees) + ".exr");
-        ASSERT_EQ(run("preview " + box + light + " --headless --screenshot " + glsl), 0);
-        ASSERT_EQ(run("preview " + box + light + " --headless --viewport rendered --passes 16 --no-denoise --screenshot " + traced), 0);
+        ASSERT_EQ(test::runWovenWithErrors("preview " + box + light + " --headless --screenshot " + glsl), 0);
+        ASSERT_EQ(test::runWovenWithErrors("preview " + box + light + " --headless --viewport rendered --passes 16 --no-denoise --screenshot " + traced), 0);
         for (const std::string& file : {glsl, traced}) {
             const double ratio = rightOverLeft(readExr(file).image);
 
@@ -139,11 +128,11 @@ TEST(EnvironmentOptions, RotationTurnsTheLightAlikeInTheGlslViewAndThePathTracer
 TEST(EnvironmentOptions, BadValuesNameTheOption) {
     TempDir dir;
     std::string errors;
-    EXPECT_NE(run("render " + kScene + kFrame + " --environment-intensity -1 -o " + dir.file("a.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("render " + kScene + kFrame + " --environment-intensity -1 -o " + dir.file("a.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--environment-intensity"));
-    EXPECT_NE(run("render " + kScene + kFrame + " --environment-rotation nan -o " + dir.file("b.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("render " + kScene + kFrame + " --environment-rotation nan -o " + dir.file("b.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--environment-rotation"));
-    EXPECT_NE(run("render " + kScene + kFrame + " --environment 5000 --environment-intensity 1e6 -o " + dir.file("c.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("render " + kScene + kFrame + " --environment 5000 --environment-intensity 1e6 -o " + dir.file("c.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--environment-intensity: times the environment's colour is"));
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.exr")) || std::filesystem::exists(dir.file("b.exr")) ||
                  std::filesystem::exists(dir.file("c.exr")));

@@ -24,24 +24,11 @@ namespace {
 
 using test::TempDir;
 
-// Runs `woven ARGS`; its stderr goes to `errors` when given.
-int run(const std::string& args, std::string* errors = nullptr) {
-    // One file per test process: CTest runs this suite's tests side by side.
-    const std::string errorFile = testing::TempDir() + "woven_render_button_stderr_" + std::to_string(::getpid()) + ".txt";
-    const int status = test::runWoven(args + " 2>" + errorFile).exitCode;
-    if (errors) {
-        std::ifstream in(errorFile);
-        *errors = std::string(std::istreambuf_iterator<char>(in), {});
-    }
-    std::remove(errorFile.c_str());
-    return status;
-}
-
 // Renders `scene` both ways with `options`; expects identical radiance and sample counts.
 ExrImage expectRenderButtonEqualsRender(const TempDir& dir, const std::string& scene, const std::string& options) {
     const std::string rendered = dir.file("render.exr"), button = dir.file("button.exr");
-    EXPECT_EQ(run("render " + scene + " " + options + " -o " + rendered), 0);
-    EXPECT_EQ(run("preview " + scene + " --headless --final " + options + " --screenshot " + button), 0);
+    EXPECT_EQ(test::runWovenWithErrors("render " + scene + " " + options + " -o " + rendered), 0);
+    EXPECT_EQ(test::runWovenWithErrors("preview " + scene + " --headless --final " + options + " --screenshot " + button), 0);
     const ExrImage a = readExr(rendered), b = readExr(button);
     EXPECT_EQ(a.image.width, b.image.width);
     EXPECT_EQ(a.image.height, b.image.height);
@@ -123,9 +110,9 @@ TEST(RenderButton, PngsGoThroughTheSameDisplayTransform) {
     TempDir dir;
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
     const std::string options = " --width 24 --height 18 --spp 1 --integrator path --exposure 1 --tone-map reinhard";
-    ASSERT_EQ(run("render " + scene + options + " -o " + dir.file("r.png")), 0);
-    ASSERT_EQ(run("preview " + scene + " --headless --final" + options + " --screenshot " + dir.file("b.png")), 0);
-    ASSERT_EQ(run("render " + scene + options + " -o " + dir.file("r.exr")), 0);
+    ASSERT_EQ(test::runWovenWithErrors("render " + scene + options + " -o " + dir.file("r.png")), 0);
+    ASSERT_EQ(test::runWovenWithErrors("preview " + scene + " --headless --final" + options + " --screenshot " + dir.file("b.png")), 0);
+    ASSERT_EQ(test::runWovenWithErrors("render " + scene + options + " -o " + dir.file("r.exr")), 0);
     const Image r = readImage(dir.file("r.png"), ChannelEncoding::Linear);
     const Image b = readImage(dir.file("b.png"), ChannelEncoding::Linear);
     EXPECT_TRUE(r.pixels == b.pixels);
@@ -142,17 +129,17 @@ TEST(RenderButton, BadOptionsFailClearlyAndWriteNothing) {
     TempDir dir;
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
     std::string errors;
-    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --woven 'NoSuchMaterial={}' --screenshot " +
+    EXPECT_NE(test::runWovenWithErrors("preview " + scene + " --headless --final --spp 1 --woven 'NoSuchMaterial={}' --screenshot " +
                       dir.file("x.exr"),
                   &errors),
               0);
     EXPECT_THAT(errors, testing::HasSubstr("'NoSuchMaterial' names nothing"));
     EXPECT_THAT(errors, testing::HasSubstr("'Cloth'"));  // the names it has
-    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --tone-map sepia --screenshot " + dir.file("y.png"),
+    EXPECT_NE(test::runWovenWithErrors("preview " + scene + " --headless --final --spp 1 --tone-map sepia --screenshot " + dir.file("y.png"),
                   &errors),
               0);
     EXPECT_THAT(errors, testing::HasSubstr("--tone-map"));
-    EXPECT_NE(run("preview " + scene + " --headless --final --spp 1 --screenshot " + dir.file("z.tiff"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + scene + " --headless --final --spp 1 --screenshot " + dir.file("z.tiff"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("z.tiff: unknown image type '.tiff' (expected .exr or .png)"));
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }

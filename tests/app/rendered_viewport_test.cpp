@@ -21,18 +21,6 @@ namespace {
 
 using test::TempDir;
 
-// Runs `woven ARGS`; its stderr goes to `errors` when given.
-int run(const std::string& args, std::string* errors = nullptr) {
-    const std::string errorFile = testing::TempDir() + "woven_rendered_viewport_stderr_" + std::to_string(::getpid()) + ".txt";
-    const int status = test::runWoven(args + " 2>" + errorFile).exitCode;
-    if (errors) {
-        std::ifstream in(errorFile);
-        *errors = std::string(std::istreambuf_iterator<char>(in), {});
-    }
-    std::remove(errorFile.c_str());
-    return status;
-}
-
 const std::string kScene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
 const std::string kFrame = " --width 64 --height 48 --seed 5";
 
@@ -40,8 +28,8 @@ TEST(RenderedViewCommand, UndenoisedFrameAfterNPassesIsWovenRendersOfNSamplesBit
     TempDir dir;
     const std::string rendered = dir.file("render.exr"), view = dir.file("view.exr");
     // The view renders with the path tracer where the scene leaves the integrator to auto.
-    ASSERT_EQ(run("render " + kScene + kFrame + " --spp 4 --noise-threshold 0 --no-denoise --integrator path -o " + rendered), 0);
-    ASSERT_EQ(run("preview " + kScene + kFrame + " --headless --viewport rendered --passes 4 --no-denoise --screenshot " + view), 0);
+    ASSERT_EQ(test::runWovenWithErrors("render " + kScene + kFrame + " --spp 4 --noise-threshold 0 --no-denoise --integrator path -o " + rendered), 0);
+    ASSERT_EQ(test::runWovenWithErrors("preview " + kScene + kFrame + " --headless --viewport rendered --passes 4 --no-denoise --screenshot " + view), 0);
     const ExrImage a = readExr(rendered), b = readExr(view);
     ASSERT_EQ(b.image.width, 64);
     ASSERT_EQ(b.image.height, 48);
@@ -56,8 +44,8 @@ TEST(RenderedViewCommand, UndenoisedFrameAfterNPassesIsWovenRendersOfNSamplesBit
 TEST(RenderedViewCommand, DenoisedFrameKeepsTheRunningMeanBeside) {
     TempDir dir;
     const std::string rendered = dir.file("render.exr"), view = dir.file("view.exr");
-    ASSERT_EQ(run("render " + kScene + kFrame + " --spp 3 --noise-threshold 0 --no-denoise --integrator path -o " + rendered), 0);
-    ASSERT_EQ(run("preview " + kScene + kFrame + " --headless --viewport rendered --passes 3 --screenshot " + view), 0);
+    ASSERT_EQ(test::runWovenWithErrors("render " + kScene + kFrame + " --spp 3 --noise-threshold 0 --no-denoise --integrator path -o " + rendered), 0);
+    ASSERT_EQ(test::runWovenWithErrors("preview " + kScene + kFrame + " --headless --viewport rendered --passes 3 --screenshot " + view), 0);
     const ExrImage a = readExr(rendered), b = readExr(view);
     ASSERT_TRUE(b.noisy.has_value()) << "the last pass is denoised";
     EXPECT_TRUE(b.noisy->pixels == a.image.pixels);
@@ -67,17 +55,17 @@ TEST(RenderedViewCommand, DenoisedFrameKeepsTheRunningMeanBeside) {
 TEST(RenderedViewCommand, MisplacedOptionsAreRefusedByName) {
     TempDir dir;
     std::string errors;
-    EXPECT_NE(run("preview " + kScene + " --headless --passes 2 --screenshot " + dir.file("a.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + kScene + " --headless --passes 2 --screenshot " + dir.file("a.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--passes"));
     EXPECT_THAT(errors, testing::HasSubstr("--viewport rendered"));
-    EXPECT_NE(run("preview " + kScene + " --headless --final --viewport rendered --screenshot " + dir.file("b.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + kScene + " --headless --final --viewport rendered --screenshot " + dir.file("b.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--final"));
-    EXPECT_NE(run("preview " + kScene + " --headless --viewport raytraced --screenshot " + dir.file("c.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + kScene + " --headless --viewport raytraced --screenshot " + dir.file("c.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--viewport"));
-    EXPECT_NE(run("preview " + kScene + " --headless --viewport rendered --passes 0 --screenshot " + dir.file("d.exr"), &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + kScene + " --headless --viewport rendered --passes 0 --screenshot " + dir.file("d.exr"), &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--passes"));
     // The window's count of passes is --spp: --passes is the headless frame's alone.
-    EXPECT_NE(run("preview " + kScene + " --viewport rendered --passes 2", &errors), 0);
+    EXPECT_NE(test::runWovenWithErrors("preview " + kScene + " --viewport rendered --passes 2", &errors), 0);
     EXPECT_THAT(errors, testing::HasSubstr("--passes is for --headless"));
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }

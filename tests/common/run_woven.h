@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "temp_dir_test.h"
@@ -34,6 +36,19 @@ inline RunResult runWoven(const std::string& args) {
 
 // Standard output and standard error together, in the order written.
 inline RunResult runWovenCommand(const std::string& args) { return runWoven(args + " 2>&1"); }
+
+// Its exit code; standard error goes to `errors` when given (through a file of this test
+// process's own: CTest runs a suite's tests side by side).
+inline int runWovenWithErrors(const std::string& args, std::string* errors = nullptr) {
+    const std::string errorFile = testing::TempDir() + "woven_stderr_" + std::to_string(::getpid()) + ".txt";
+    const int status = runWoven(args + " 2>" + errorFile).exitCode;
+    if (errors) {
+        std::ifstream in(errorFile);
+        *errors = std::string(std::istreambuf_iterator<char>(in), {});
+    }
+    std::remove(errorFile.c_str());
+    return status;
+}
 
 class CommandTest : public TempDirTest {};
 

@@ -23,7 +23,7 @@ import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from window_click_xvfb import check, run, window_under_xvfb  # noqa: E402
-from window_truth_xvfb import scroll_to  # noqa: E402
+from window_truth_xvfb import drag, scroll_to  # noqa: E402
 
 SIZE, SPP = (160, 120), 24
 
@@ -57,21 +57,6 @@ def sky_with_a_window(tmp):
         f.write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)) +
                 chunk(b'IDAT', zlib.compress(rows)) + chunk(b'IEND', b''))
     return path
-
-
-def drag(window, label, kind, dx):
-    """Drags the widget's frame `dx` pixels to the right, in four steps, as a hand does."""
-    scroll_to(window, label, kind)
-    x0, y0, x1, y1 = window.item(label, kind)['frame']
-    wx, wy = window.map['state']['window']['pos']
-    window.xdotool('mousemove', str(int(wx + (x0 + x1) / 2)), str(int(wy + (y0 + y1) / 2)))
-    window.frames()
-    window.xdotool('mousedown', '1')
-    window.frames()
-    for _ in range(4):
-        window.xdotool('mousemove_relative', '--', str(dx // 4), '0')
-        window.frames()
-    window.xdotool('mouseup', '1')
 
 
 def restarted_and_converged(window, before, what):

@@ -62,6 +62,23 @@ def scroll_to(window, label, kind):
     raise Failure(f'"{label}" could not be scrolled into view')
 
 
+def drag(window, label, kind, dx, at=0.5):
+    """Drags the widget's frame `dx` pixels to the right from `at` of its width, in four steps, as a
+    hand does."""
+    scroll_to(window, label, kind)
+    x0, y0, x1, y1 = window.item(label, kind)['frame']
+    wx, wy = window.map['state']['window']['pos']
+    window.xdotool('mousemove', str(int(wx + x0 + (x1 - x0) * at)), str(int(wy + (y0 + y1) / 2)))
+    window.frames()
+    window.xdotool('mousedown', '1')
+    window.frames()
+    for _ in range(4):
+        window.xdotool('mousemove_relative', '--', str(dx // 4), '0')
+        window.frames()
+    window.xdotool('mouseup', '1')
+    window.frames()
+
+
 def render_and_save(window, tmp):
     """The Render button's frame, saved by Save PNG to its default path beside the scene: its pixels."""
     scroll_to(window, 'Render', 'button')
@@ -108,17 +125,7 @@ def main(woven, assets):
         render_and_save(window, tmp)
 
         # A slider moved: the denim's final frame is stale, and hidden.
-        scroll_to(window, 'weft e_x (along yarn)', 'drag')
-        x0, y0, x1, y1 = window.item('weft e_x (along yarn)', 'drag')['frame']
-        wx, wy = window.map['state']['window']['pos']
-        window.xdotool('mousemove', str(int(wx + (x0 + x1) / 2)), str(int(wy + (y0 + y1) / 2)))
-        window.frames()
-        window.xdotool('mousedown', '1')
-        window.frames()
-        for _ in range(4):
-            window.xdotool('mousemove_relative', '--', '10', '0')
-            window.frames()
-        window.xdotool('mouseup', '1')
+        drag(window, 'weft e_x (along yarn)', 'drag', 40)
         m = window.wait('the final frame hidden', lambda m: not m['state']['final']['shown'], 30)
         print('a slider moved after Render hides the final frame')
 

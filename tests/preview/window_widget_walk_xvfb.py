@@ -16,7 +16,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from window_click_xvfb import Failure, check, run, window_under_xvfb  # noqa: E402
-from window_truth_xvfb import scene_in, scroll_to  # noqa: E402
+from window_truth_xvfb import drag, scene_in, scroll_to  # noqa: E402
 
 VALUE_KINDS = ('slider', 'drag', 'colour', 'checkbox')
 SIZE = ('--width', '640', '--height', '480')
@@ -36,27 +36,13 @@ def material_controls(m):
 
 
 def nudge(window, label, kind):
-    scroll_to(window, label, kind)
-    item = window.item(label, kind)
-    x0, y0, x1, y1 = item['frame']
-    wx, wy = window.map['state']['window']['pos']
-    # A colour's first field (red), a pair's first value, a single slider or drag from its middle.
-    pair = label.endswith('(1/n, 1/m)')
-    x = x0 + (x1 - x0) * (0.15 if kind == 'colour' else 0.25 if pair else 0.5)
-    y = (y0 + y1) / 2
-    window.xdotool('mousemove', str(int(wx + x)), str(int(wy + y)))
-    window.frames()
+    """A checkbox clicked; a colour's first field (red), a pair's first value, a single slider or
+    drag from its middle, dragged 40 pixels."""
     if kind == 'checkbox':
-        window.xdotool('click', '1')
-        window.frames()
+        window.click(label, kind)
         return
-    window.xdotool('mousedown', '1')
-    window.frames()
-    for _ in range(4):
-        window.xdotool('mousemove_relative', '--', '10', '0')
-        window.frames()
-    window.xdotool('mouseup', '1')
-    window.frames()
+    at = 0.15 if kind == 'colour' else 0.25 if label.endswith('(1/n, 1/m)') else 0.5
+    drag(window, label, kind, 40, at)
 
 
 def walk(window, cloth):
