@@ -4,6 +4,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -12,6 +13,7 @@
 #include "material_file.h"
 #include "preview_window_impl.h"
 #include "uv_scale.h"
+#include "weave_draft.h"
 #include "weave_presets.h"
 #include "woven_params.h"
 
@@ -29,6 +31,7 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
             p = chosen.params;
             materialEdited();
             showDraftOf(chosen.wif, warnings);
+            if (chosen.wif.empty()) showWeaveAsDraft(p, name);
             chosenFabric_ = std::move(chosen);
             status_ = "fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")");
             for (const std::string& w : warnings) warn(w);
@@ -65,6 +68,17 @@ void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>
     draftEdit_ = editIndex_;
     showDraftWindow_ = true;
     copyToBuffer(draftPath_, wif);
+}
+
+void PreviewWindow::showWeaveAsDraft(const WovenParams& p, const std::string& name) {
+    std::string file = name;  // a material's name may hold what a file name cannot
+    for (char& c : file)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    const std::string path = besideScene(scenePath_, "-" + file + ".wif", file + ".wif");
+    draft_ = DraftEditor(weaveDraft(p, name), path);
+    draftEdit_ = editIndex_;
+    showDraftWindow_ = true;
+    copyToBuffer(draftPath_, path);
 }
 
 namespace {
@@ -203,7 +217,13 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
                 ui::SliderFloat(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
             break;
         case ParamType::Int:
-            ui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
+            // A switch (0 or 1) is a checkbox: a slider of two values moves only past its middle.
+            if (info.min == 0 && info.max == 1) {
+                bool on = *reinterpret_cast<int*>(field) != 0;
+                if (ui::Checkbox(info.label, &on)) *reinterpret_cast<int*>(field) = on;
+            } else {
+                ui::SliderInt(info.label, reinterpret_cast<int*>(field), int(info.min), int(info.max));
+            }
             break;
         case ParamType::Vec2:
             ui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
@@ -260,7 +280,10 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     }
     if (!draft_ || draftEdit_ != editIndex_) {
         ImGui::SameLine();
-        ImGui::TextDisabled("(or drop a .wif on the window)");
+        if (ui::Button("Draft view")) attempt([&] { showWeaveAsDraft(p, "weave"); });
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("this weave and its thread colours as a draft, to edit thread by thread and save as WIF "
+                              "(or drop a .wif on the window)");
         return;
     }
     ImGui::SameLine();

@@ -44,14 +44,6 @@ std::string checksum(const Image& image) {
 // Weaving programs write .wif and .WIF alike.
 bool isDraftFile(const std::string& path) { return hasExtension(path, ".wif") || hasExtension(path, ".WIF"); }
 
-// An output's default path: beside the scene, named after it (the procedural cloth's: `fallback`
-// in the working directory).
-std::string besideScene(const std::string& scene, const std::string& suffix, const char* fallback) {
-    if (scene.empty()) return fallback;
-    const std::filesystem::path path(scene);
-    return (path.parent_path() / (path.stem().string() + suffix)).string();
-}
-
 // A window with the newest core context the driver gives, 4.5 down to 3.3.
 GLFWwindow* createWindow(int width, int height) {
     static const int versions[][2] = {{4, 5}, {4, 1}, {3, 3}};
@@ -69,6 +61,12 @@ GLFWwindow* createWindow(int width, int height) {
 }
 
 }  // namespace
+
+std::string besideScene(const std::string& scene, const std::string& suffix, const std::string& fallback) {
+    if (scene.empty()) return fallback;
+    const std::filesystem::path path(scene);
+    return (path.parent_path() / (path.stem().string() + suffix)).string();
+}
 
 PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
     : options_(options), filterWeave_(!options.frame.noFilter) {
@@ -155,12 +153,17 @@ void PreviewWindow::openScene(const std::string& path) {
     for (const Material& m : scene().materials)
         if (m.woven) {
             editIndex_ = edits_->makeWoven(literalTarget(TargetKind::Material, m.name));
-            // A material made from a draft ("wif") opens it in the draft view.
+            // A material made from a draft ("wif") opens it in the draft view; one whose threads
+            // have colours of their own, its weave drawn as a draft.
+            const WovenParams& p = edits_->params(editIndex_);
             if (!m.draft.empty()) {
                 std::vector<std::string> warnings;  // printed when the scene was read
                 draft_ = DraftEditor::open(m.draft, warnings);
                 draftEdit_ = editIndex_;
                 copyToBuffer(draftPath_, draft_->name());
+            } else if (!p.warp_colors.empty() || !p.weft_colors.empty()) {
+                attempt([&] { showWeaveAsDraft(p, m.name); });
+                showDraftWindow_ = false;  // collapsed, as a scene's own draft
             }
             break;
         }

@@ -45,6 +45,10 @@ inline bool hasExtension(const std::string& path, const char* ext) {
     return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
 }
 
+// An output's default path: beside the scene, named after it (the procedural cloth's: `fallback`
+// in the working directory).
+std::string besideScene(const std::string& scene, const std::string& suffix, const std::string& fallback);
+
 // What an undo restores: every edit, the edit the panel tunes, and the draft being edited.
 struct MaterialState {
     std::vector<WovenEdit> edits;
@@ -92,6 +96,9 @@ private:
     // A material's draft ("wif") in the draft view of the edited material; none: that edit's
     // draft is closed, for it no longer describes the material.
     void showDraftOf(const std::string& wif, std::vector<std::string>& warnings);
+    // The edited material's weave and thread colours as a draft (weave_draft.h) in the draft
+    // view, for a fabric that has no draft file: its threads are edited as a draft's are.
+    void showWeaveAsDraft(const WovenParams& p, const std::string& name);
     void drawDraftWindow();
     void applyEdits();
     // Any change of a material: the shown final frame is of the old cloth, and the change is

@@ -85,7 +85,7 @@ def main(woven, assets):
             window.wait('the first widget map', lambda m: m['state']['frame'] >= 2, 60)
             walk(window, 'the denim draft')
         tartan = ('--woven', 'Cloth={"preset": "tartan"}')
-        with window_under_xvfb(woven, tmp, SIZE + tartan + (scene_in(tmp, assets),)) as window:
+        with window_under_xvfb(woven, tmp, SIZE + (scene_in(tmp, assets),) + tartan) as window:
             m = window.wait('the first widget map', lambda m: m['state']['frame'] >= 2, 60)
             check(m['state']['material']['tile_rows'] > 0, f'the tartan did not open: {m["state"]["material"]}')
             walk(window, 'the tartan')
