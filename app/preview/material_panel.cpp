@@ -196,6 +196,25 @@ void PreviewWindow::drawThreadPalette(WovenParams& p) {
     }
 }
 
+// The thread spacing as a weaver gives it, ends and picks per centimetre, where the meshes' size
+// is known (else false: the repeat per UV unit is all there is to set).
+bool PreviewWindow::drawThreadsPerCm(WovenParams& p, const ParamInfo& repeat) {
+    const std::optional<glm::dvec2>& scale = metresPerUvOf(edits_->edits()[size_t(editIndex_)].target);
+    if (!scale) return false;
+    const glm::vec2 cmPerUv = glm::vec2(100.0 * *scale);
+    glm::vec2 perCm = p.repeat / cmPerUv;
+    ParamInfo range = repeat;
+    range.min = repeat.min / std::max(cmPerUv.x, cmPerUv.y);
+    range.max = repeat.max / std::min(cmPerUv.x, cmPerUv.y);
+    if (ui::DragFloat2("ends, picks per cm", &perCm.x, logDragSpeed(range), range.min, range.max, "%.4g",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+        p.repeat = glm::clamp(perCm * cmPerUv, repeat.min, repeat.max);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("repeat: warp ends and weft picks per centimetre on these meshes (%.4g x %.4g cm per UV unit)\n"
+                          "(Ctrl+click to type a value)", cmPerUv.x, cmPerUv.y);
+    return true;
+}
+
 void PreviewWindow::drawMaterialControls(WovenParams& p) {
     drawFabricControls(p);
     drawWeaveControls(p);
@@ -226,6 +245,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             }
             break;
         case ParamType::Vec2:
+            if (info.name == std::string("repeat") && drawThreadsPerCm(p, info)) break;
             ui::SliderFloat2(info.label, reinterpret_cast<float*>(field), info.min, info.max, "%.4g", flags);
             break;
         case ParamType::Vec3:

@@ -401,7 +401,12 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     glfwGetWindowPos(window_, &x, &y);
     glfwGetWindowSize(window_, &width, &height);
     nlohmann::json image = nullptr;
-    if (finalImage_) image = {finalImage_->radiance.width, finalImage_->radiance.height};
+    nlohmann::json finalMean = nullptr;
+    if (finalImage_) {
+        image = {finalImage_->radiance.width, finalImage_->radiance.height};
+        const glm::dvec3 m = meanColour(finalImage_->radiance);
+        finalMean = {m.r, m.g, m.b};
+    }
     // The edited material as the panel shows it: its fabric, repeat and measures.
     nlohmann::json material = nullptr;
     if (const WovenParams* p = editedParams()) {
@@ -428,6 +433,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"resolution_scale", resolution_.scale()},
         {"refinement", std::min(refinement_ + 1, kRefinementFrames)},
         {"view_checksum", viewChecksum_},
+        {"view_mean", {viewMean_.r, viewMean_.g, viewMean_.b}},
         {"material", material},
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
@@ -437,7 +443,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
                  {"loss_points", fit_.lossHistory().size()}}},
         {"rendered", renderedViewState()},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
-                   {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image},
+                   {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image}, {"mean", finalMean},
                    {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},
     };
     const std::string tmp = path + ".tmp";
@@ -563,8 +569,10 @@ void PreviewWindow::run() {
                     preview.pixelOffset = refinementOffset(refinement_);
                     renderer_->render(scene(), lights_, camera, size, preview);
                     // For the window tests: what the settled view shows, to tell whether an edit changed it.
-                    if (refinement_ == kRefinementFrames - 1 && !options_.widgetMap.empty())
+                    if (refinement_ == kRefinementFrames - 1 && !options_.widgetMap.empty()) {
                         viewChecksum_ = checksum(renderer_->radiance());
+                        viewMean_ = meanColour(renderer_->radiance());
+                    }
                 }
                 renderer_->display(0, {0, 0}, {width, height}, display_);
             });

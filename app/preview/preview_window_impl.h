@@ -45,6 +45,14 @@ inline bool hasExtension(const std::string& path, const char* ext) {
     return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
 }
 
+// The mean of every pixel, summed in double (an empty image: 0): how the widget map says what a
+// view or a frame shows.
+inline glm::dvec3 meanColour(const Image& image) {
+    glm::dvec3 sum(0.0);
+    for (const glm::vec3& c : image.pixels) sum += glm::dvec3(c);
+    return image.pixels.empty() ? sum : sum / double(image.pixels.size());
+}
+
 // An output's default path: beside the scene, named after it (the procedural cloth's: `fallback`
 // in the working directory).
 std::string besideScene(const std::string& scene, const std::string& suffix, const std::string& fallback);
@@ -91,6 +99,7 @@ private:
     void drawMaterialControls(WovenParams& p);
     void drawWeaveControls(WovenParams& p);
     void drawThreadPalette(WovenParams& p);
+    bool drawThreadsPerCm(WovenParams& p, const ParamInfo& repeat);
     void drawDraftControls(WovenParams& p);
     void drawFabricControls(WovenParams& p);
     // A material's draft ("wif") in the draft view of the edited material; none: that edit's
@@ -195,6 +204,7 @@ private:
     RefinedView refinedView_;
     int refinement_ = 0;  // the frame of the running mean last rendered
     std::string viewChecksum_;  // of the last settled view, with --widget-map
+    glm::dvec3 viewMean_{0.0};  // its mean linear radiance
     std::string status_;
     std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
     char materialPath_[512] = "material.json";

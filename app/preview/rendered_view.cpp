@@ -52,10 +52,8 @@ nlohmann::json PreviewWindow::renderedViewState() const {
     const ViewportProgress p = rendered_.progress();
     nlohmann::json mean = nullptr;
     if (renderedImage_ && !renderedImage_->pixels.empty()) {
-        glm::dvec3 sum(0.0);
-        for (const glm::vec3& c : renderedImage_->pixels) sum += glm::dvec3(c);
-        sum /= double(renderedImage_->pixels.size());
-        mean = {sum.r, sum.g, sum.b};
+        const glm::dvec3 m = meanColour(*renderedImage_);
+        mean = {m.r, m.g, m.b};
     }
     return {{"on", renderedView_},
             {"samples", p.samples},

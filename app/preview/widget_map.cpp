@@ -153,6 +153,10 @@ bool SliderInt(const char* label, int* v, int min, int max) {
 bool DragFloat(const char* label, float* v, float speed, float min, float max, const char* format, ImGuiSliderFlags flags) {
     return recorded(ImGui::DragFloat(label, v, speed, min, max, format, flags), label, "drag");
 }
+bool DragFloat2(const char* label, float v[2], float speed, float min, float max, const char* format,
+                ImGuiSliderFlags flags) {
+    return recorded(ImGui::DragFloat2(label, v, speed, min, max, format, flags), label, "drag");
+}
 bool DragFloat3(const char* label, float v[3], float speed) {
     return recorded(ImGui::DragFloat3(label, v, speed), label, "drag");
 }

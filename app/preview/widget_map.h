@@ -86,6 +86,8 @@ bool SliderFloat3(const char* label, float v[3], float min, float max);
 bool SliderInt(const char* label, int* v, int min, int max);
 bool DragFloat(const char* label, float* v, float speed, float min, float max, const char* format,
                ImGuiSliderFlags flags = 0);
+bool DragFloat2(const char* label, float v[2], float speed, float min, float max, const char* format,
+                ImGuiSliderFlags flags = 0);
 bool DragFloat3(const char* label, float v[3], float speed);
 bool ColorEdit3(const char* label, float col[3], ImGuiColorEditFlags flags = 0);
 bool InputInt(const char* label, int* v, int step = 1, int stepFast = 100, ImGuiInputTextFlags flags = 0);

@@ -4,8 +4,13 @@ says why it cannot"). Under Xvfb, on three kinds of cloth: the procedural cloth 
 of the panel's own parameters), the default scene's denim (from a draft) and the library's tartan
 (per-thread colours), the walk nudges each slider, drag, colour and checkbox of the Material
 section as a user would (a drag of 40 pixels, a click) and waits for the settled view to change;
-the Undo button must then bring back every parameter as it was (Ctrl+Z is the truth test's). A control that changes nothing and is not
-drawn disabled fails the test.
+then it presses Render and checks that the final frame changed too, and the same way: where both
+mean colours moved by more than MOVED of their size, the two moves point the same way (a positive
+dot product). The Undo button must then bring back every parameter as it was (Ctrl+Z is the truth
+test's). A control that changes nothing, in the view or the frame, and is not drawn disabled fails.
+
+The Render button renders 1 sample a pixel with the path tracer, not denoised: a frame is a pure
+function of the scene and the seed, so any change of it is the material's.
 
 Usage: window_widget_walk_xvfb.py WOVEN_BINARY ASSETS_DIR
 """
@@ -19,7 +24,12 @@ from window_click_xvfb import Failure, check, run, window_under_xvfb  # noqa: E4
 from window_truth_xvfb import drag, scene_in, scroll_to  # noqa: E402
 
 VALUE_KINDS = ('slider', 'drag', 'colour', 'checkbox')
-SIZE = ('--width', '640', '--height', '480')
+SIZE = ('--width', '640', '--height', '480', '--spp', '1', '--noise-threshold', '0', '--integrator', 'path',
+        '--no-denoise')
+# A mean colour "moved" by more than this share of its length. The preview and the render differ by
+# up to 15 % a block (the fidelity harness), so smaller moves may differ in direction and are not
+# compared.
+MOVED = 0.01
 
 
 def settled(window, timeout=60):
@@ -41,15 +51,38 @@ def nudge(window, label, kind):
     if kind == 'checkbox':
         window.click(label, kind)
         return
-    at = 0.15 if kind == 'colour' else 0.25 if label.endswith('(1/n, 1/m)') else 0.5
+    pair = label.endswith('(1/n, 1/m)') or label == 'ends, picks per cm'
+    at = 0.15 if kind == 'colour' else 0.25 if pair else 0.5
     drag(window, label, kind, 40, at)
+
+
+def final_mean(window):
+    """The Render button's frame: its mean linear colour. The frame is then hidden again, so that
+    the view shows (and refines) the preview."""
+    scroll_to(window, 'Render', 'button')
+    window.click('Render', 'button')
+    m = window.wait('the final frame', lambda m: m['state']['final']['done'] and m['state']['final']['shown'], 180)
+    scroll_to(window, 'show the rendered frame', 'checkbox')
+    window.click('show the rendered frame', 'checkbox')
+    window.wait('the preview shown again', lambda m: not m['state']['final']['shown'], 30)
+    return m['state']['final']['mean']
+
+
+def moved(before, after):
+    """The move from one mean colour to another, None where it is under MOVED of the colour's size."""
+    d = [a - b for a, b in zip(after, before)]
+    size = sum(b * b for b in before) ** 0.5
+    return d if sum(x * x for x in d) ** 0.5 > MOVED * size else None
 
 
 def walk(window, cloth):
     m = window.read()
     controls = material_controls(m)
     check(len(controls) >= 15, f'{cloth}: only {len(controls)} material controls: {controls}')
-    silent, disabled, unrestored = [], [], []
+    settled(window)
+    view_before = window.read()['state']['view_mean']
+    frame_before = final_mean(window)
+    silent, unrendered, opposite, disabled, unrestored = [], [], [], [], []
     for label, kind, off in controls:
         if off:
             disabled.append(label)
@@ -64,6 +97,13 @@ def walk(window, cloth):
         if after == before:
             silent.append(label)
             continue
+        view_after = window.read()['state']['view_mean']
+        frame_after = final_mean(window)
+        view_move, frame_move = moved(view_before, view_after), moved(frame_before, frame_after)
+        if frame_after == frame_before:
+            unrendered.append(label)
+        elif view_move and frame_move and sum(a * b for a, b in zip(view_move, frame_move)) <= 0:
+            opposite.append(f'{label}: view {view_move}, frame {frame_move}')
         scroll_to(window, 'Undo', 'button')
         window.click('Undo', 'button')
         # The edit was committed once the control was let go (nothing to redo); the undo makes one.
@@ -73,6 +113,8 @@ def walk(window, cloth):
     acted = len(controls) - len(silent) - len(disabled)
     print(f'{cloth}: {acted} controls act, disabled: {disabled}')
     check(not silent, f'{cloth}: controls that change nothing and are not disabled: {silent}')
+    check(not unrendered, f'{cloth}: controls that change the view but not the Render button\'s frame: {unrendered}')
+    check(not opposite, f'{cloth}: controls that move the view and the frame different ways: {opposite}')
     check(not unrestored, f'{cloth}: Undo did not bring back the parameters after: {unrestored}')
 
 
