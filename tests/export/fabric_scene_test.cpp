@@ -55,10 +55,17 @@ TEST_F(FabricSceneTest, EachFormOfAFabricLiesOnTheDrape) {
 
 TEST_F(FabricSceneTest, WhatIsNoFabricIsRefusedByNameAndNothingIsWritten) {
     std::ofstream(file("notes.txt")) << "hello";
+    // A draft that gives no thread spacing has no real size to lay it on the drape at.
+    std::ifstream draft(std::string(WOVEN_ASSETS_DIR) + "/drafts/houndstooth.wif");
+    std::ofstream unspaced(file("unspaced.wif"));
+    for (std::string line; std::getline(draft, line);)
+        if (line.rfind("Spacing=", 0) != 0) unspaced << line << "\n";
+    unspaced.close();
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"no_such_fabric", "no_such_fabric: no such file, nor a fabric of the library (woven fabrics lists them)"},
         {file("notes.txt"), "notes.txt: unknown scene file type '.txt'"},
         {file("missing.wif"), "missing.wif"},
+        {file("unspaced.wif"), "unspaced.wif: the draft gives no warp spacing"},
     };
     for (const auto& [argument, message] : cases)
         for (const std::string command : {"share '" + argument + "' -o '" + file("page") + "'",
