@@ -1,5 +1,5 @@
 #pragma once
-// What `woven export` and `woven share` take as their first argument: a scene (.gltf, .glb, a
+// What `woven export`, `woven bake` and `woven share` take as their first argument: a scene (.gltf, .glb, a
 // woven scene file), or a bare fabric shown on woven's drape (assets/cloth_drape.glb, seen as
 // assets/default_scene.json sees it, in the default studio light): a library fabric's name
 // (`woven fabrics`), a fabric file ({"name", "title", "source", "material"}), a woven
