@@ -11,6 +11,7 @@
 
 #include "bake_report.h"
 #include "commands.h"
+#include "fabric_scene.h"
 #include "number_checks.h"
 #include "flat_cloth.h"
 #include "frame_io.h"
@@ -20,7 +21,6 @@
 #include "progress_bar.h"
 #include "scene_camera.h"
 #include "scene_export.h"
-#include "scene_loader.h"
 #include "share_page.h"
 #include "u3m_export.h"
 #include "woven_assignment.h"
@@ -40,14 +40,19 @@ struct ExportCommand {
     ShareOptions share;
 };
 
-// The scene with the command line's --woven edits; no default lighting (glTF has no place for it).
+// The scene (or a bare fabric on the drape) with the command line's --woven edits; no default
+// lighting (glTF has no place for it).
 SceneDescription loadWithEdits(const ExportCommand& o) {
-    SceneDescription scene = loadScene(o.scene);
+    SceneDescription scene = loadSceneOrFabric(o.scene);
     std::vector<WovenAssignment> assignments;
     for (const std::string& option : o.woven) assignments.push_back(parseWovenOption(scene, option));
     if (!assignments.empty()) assignWoven(scene, assignments);
     return scene;
 }
+
+constexpr const char* kSceneHelp =
+    "scene file (.gltf, .glb or a woven .json scene file), or a fabric shown on woven's drape: a library fabric's name, a "
+    "fabric or material .json, a .wif draft or a .u3ma/.u3m";
 
 void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
     cmd.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven first (as woven render's --woven)");
@@ -226,7 +231,7 @@ void runShare(ExportCommand o) {
 void addExportCommands(CLI::App& app) {
     auto e = std::make_shared<ExportCommand>();
     CLI::App* cmd = app.add_subcommand("export", "Write a scene as a standard glTF file, each woven material baked to textures");
-    cmd->add_option("scene", e->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    cmd->add_option("scene", e->scene, kSceneHelp)->required();
     cmd->add_option("-o,--out", e->out, "the file to write: .glb (binary glTF), .gltf (images embedded), .u3ma (one woven material as a "
                                         "U3M archive) or .u3m (the same as a file and a folder of textures)")->required();
     addBakeOptions(*cmd, *e);
@@ -242,7 +247,7 @@ void addExportCommands(CLI::App& app) {
 
     auto b = std::make_shared<ExportCommand>();
     CLI::App* bake = app.add_subcommand("bake", "Bake each woven material of a scene to glTF textures (PNG) and a sample .gltf");
-    bake->add_option("scene", b->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    bake->add_option("scene", b->scene, kSceneHelp)->required();
     bake->add_option("-o,--out", b->out, "the folder to write into")->required();
     addBakeOptions(*bake, *b);
     bake->add_flag("--mips", b->mips, "also write every mip level, fitted in the model (NAME_MAP_mipN.png)");
@@ -250,7 +255,7 @@ void addExportCommands(CLI::App& app) {
 
     auto p = std::make_shared<ExportCommand>();
     CLI::App* share = app.add_subcommand("share", "Write a web page that shows the scene's cloth in a browser, offline (model-viewer)");
-    share->add_option("scene", p->scene, "scene file (.gltf, .glb or a woven .json scene file)")->required();
+    share->add_option("scene", p->scene, kSceneHelp)->required();
     share->add_option("-o,--out", p->out, "the page's folder (created if missing): index.html, scene.glb, poster.png, ...")->required();
     addBakeOptions(*share, *p);
     share->add_option("--poster-size", p->share.posterSize, "pixels along the poster render's longer side (default 640)")->check(CLI::Range(16, 8192));

@@ -167,7 +167,11 @@ std::vector<std::string> writeSharePage(const SceneDescription& scene, const std
     try {
         warnings = exportScene(scene, (dir / "scene.glb").string(), options.exportOptions);
         writeBytes((dir / "model-viewer.min.js").string(), viewer);
-        const std::vector<unsigned char> poster = encodeTexturePng(renderFinalPreview(scene, options.posterSize, options.posterSpp));
+        // The poster is seen from where the page opens, so a room around the cloth does not make it a speck either.
+        SceneDescription framed = scene;
+        framed.camera = clothCamera(scene);
+        framed.hasCamera = true;
+        const std::vector<unsigned char> poster = encodeTexturePng(renderFinalPreview(framed, options.posterSize, options.posterSpp));
         writeBytes((dir / "poster.png").string(), std::string(poster.begin(), poster.end()));
         const std::string hdr = radianceHdr(*studioEnvironment().image);
         writeBytes((dir / "environment.hdr").string(), hdr);

@@ -1,14 +1,15 @@
 // Opens a `woven share` page in headless Chromium (Debian's), from disk with the network off,
 // waits for <model-viewer>'s load event and a few frames, and prints one JSON line: whether it
 // loaded, the console errors and uncaught exceptions, the mean colour and coverage of
-// model-viewer's own frame, and the mean colour of the poster (woven's render of the same view).
-// Usage: node share_page_check.js PAGE/index.html CHROMIUM   (puppeteer-core from npm drives it)
+// model-viewer's own frame, and the mean colour of the poster (woven's render of the same view);
+// with FRAME.png, model-viewer's frame is also written there, for the test to measure.
+// Usage: node share_page_check.js PAGE/index.html CHROMIUM [FRAME.png]   (puppeteer-core drives it)
 const fs = require('fs');
 const path = require('path');
 const puppeteer = require('puppeteer-core');
 
 (async () => {
-  const [page_, chromium] = process.argv.slice(2);
+  const [page_, chromium, framePng] = process.argv.slice(2);
   const browser = await puppeteer.launch({
     executablePath: chromium,
     headless: true,
@@ -52,8 +53,11 @@ const puppeteer = require('puppeteer-core');
       mv.resetTurntableRotation(0);
       mv.jumpCameraToGoal();
       await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-      return { frame: await mean(mv.toDataURL('image/png')), poster: await mean(poster) };
+      const frame = mv.toDataURL('image/png');
+      return { frame: await mean(frame), poster: await mean(poster), png: frame };
     }, poster);
+    if (framePng) fs.writeFileSync(framePng, Buffer.from(stats.png.split(',')[1], 'base64'));
+    delete stats.png;
     Object.assign(result, stats);
   } catch (e) {
     result.errors.push('check: ' + String(e));

@@ -245,11 +245,33 @@ TEST_F(U3mCommandTest, LibraryFabricsPassTheSchemaWithTheirWeightConstructionAnd
             }
         EXPECT_GE(maps, 2 * 6);  // base colour, alpha, normal, roughness, anisotropy's value and rotation
         // Denim (25 x 16 per cm, 4 x 4 threads) has repeats of 1.6 x 2.5 mm, the figure.
-        if (name == "denim") EXPECT_NEAR(m["front"]["basecolor"]["texture"]["image"]["width"].get<double>(), 1.6, 1e-9);
+        if (name == "denim") {
+            EXPECT_NEAR(m["front"]["basecolor"]["texture"]["image"]["width"].get<double>(), 1.6, 1e-9);
+        }
         // What woven reads back: its parameters at the real thread count.
         EXPECT_EQ(a.u3m["custom"]["woven"]["material"]["ends_per_cm"], fabric["ends_per_cm"]);
         EXPECT_FALSE(m["front"]["preview"].is_null());
     }
+}
+
+// A WIF draft given bare (woven's drape at the draft's threads per cm) exports as its library fabric
+// does: the schema, the construction, the same maps in mm; its weight is the one from the yarn widths
+// (the draft names no yarn counts), which `woven fabrics` cannot print for it.
+TEST_F(U3mCommandTest, ABareWifDraftExportsAsItsLibraryFabric) {
+    const std::string draft = file("draft.u3ma"), library = file("library.u3ma");
+    for (const auto& [input, out] : {std::pair{std::string(WOVEN_ASSETS_DIR) + "/drafts/houndstooth.wif", draft}, std::pair{drapeIn("houndstooth"), library}}) {
+        const test::RunResult r = runWovenCommand("export '" + input + "' -o '" + out + "' --size 64 --preview-size 24 --preview-spp 1");
+        ASSERT_EQ(r.exitCode, 0) << r.out;
+    }
+    const Archive a = readArchive(draft), b = readArchive(library);
+    SchemaCheck check{a.files, {}};
+    check.document(a.u3m);
+    for (const std::string& p : check.problems) ADD_FAILURE() << p;
+    EXPECT_EQ(a.u3m["material"]["name"], "houndstooth");
+    EXPECT_EQ(a.u3m["material"]["physics"]["construction"], b.u3m["material"]["physics"]["construction"]);
+    for (const char* side : {"width", "height"})
+        EXPECT_EQ(a.u3m["material"]["front"]["basecolor"]["texture"]["image"][side], b.u3m["material"]["front"]["basecolor"]["texture"]["image"][side]);
+    EXPECT_GT(a.u3m["material"]["physics"]["weight"].get<double>(), 0.0);
 }
 
 // A warp-faced cloth shows its warp on the front and its weft on the back: denim's indigo and ecru.
