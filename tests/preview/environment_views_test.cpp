@@ -73,6 +73,19 @@ glm::dvec2 highlight(const Image& image) {
 }
 double azimuth(const glm::dvec2& at) { return std::atan2(at.y, at.x); }
 
+// The path tracer's settings here: kSize x kSize, 32 samples a pixel, direct light (where the two
+// views are to agree: the GLSL view has no other).
+RenderSettings directLight() {
+    RenderSettings settings;
+    settings.width = settings.height = kSize;
+    settings.spp = 32;
+    settings.integrator = "path";
+    settings.maxDepth = 1;
+    settings.noiseThreshold = 0.0;
+    settings.renderPasses = false;
+    return settings;
+}
+
 // a - b in (-pi, pi].
 double angleBetween(double a, double b) { return std::remainder(a - b, 2.0 * M_PI); }
 
@@ -83,13 +96,7 @@ double angleBetween(double a, double b) { return std::remainder(a - b, 2.0 * M_P
 // that turned the environment the wrong way would put the highlight 34 degrees or more from the
 // sun at every step here; one that ignored the rotation, 17 degrees or more.
 TEST(EnvironmentRotation, TurnsTheHighlightTheSameWayInTheGlslViewAndThePathTracer) {
-    RenderSettings settings;
-    settings.width = settings.height = kSize;
-    settings.spp = 32;
-    settings.integrator = "path";
-    settings.maxDepth = 1;  // the highlight is direct light
-    settings.noiseThreshold = 0.0;
-    settings.renderPasses = false;
+    RenderSettings settings = directLight();
     settings.seed = 7;
     const Environment sky = sunSky();
     constexpr int kRotations = 8;
@@ -117,13 +124,7 @@ TEST(EnvironmentRotation, TurnsTheHighlightTheSameWayInTheGlslViewAndThePathTrac
 // (Lambert, and glossy of roughness 0.3): 0.97 to 1.04 of it; the bound is twice the worst. Where
 // the light falls on the sphere agrees less: docs/RESULTS.md, "The rendered view".
 TEST(EnvironmentStrength, StudioEnvironmentsLightASphereAsStronglyInBothViews) {
-    RenderSettings settings;
-    settings.width = settings.height = kSize;
-    settings.spp = 32;
-    settings.integrator = "path";
-    settings.maxDepth = 1;
-    settings.noiseThreshold = 0.0;
-    settings.renderPasses = false;
+    RenderSettings settings = directLight();
     for (const float roughness : {1.0f, 0.3f})
         for (const StudioEnvironment& studio : studioEnvironments()) {
             Material grey;
