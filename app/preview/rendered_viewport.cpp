@@ -167,14 +167,19 @@ void RenderedViewport::render(const Request& request) {
         return;
     }
     const Clock::time_point start = Clock::now();
-    // Only a changed scene is built again; a camera or size change renders the one built.
+    // Only a changed scene is built again, on the BVH already built unless its geometry changed;
+    // a camera or size change renders the one built.
     if (!built_ || builtHash_ != request.sceneHash) {
-        built_.reset();  // first: two scenes need not fit in memory together
+        std::shared_ptr<RenderScene> previous = std::move(built_);
         builtHash_.clear();
-        built_ = std::make_shared<const RenderScene>(request.scene);
+        // The last job has ended: nothing else holds the scene it rendered.
+        built_ = previous && previous.use_count() == 1 ? std::make_shared<RenderScene>(request.scene, std::move(*previous))
+                                                       : std::make_shared<RenderScene>(request.scene);
+        previous.reset();
         builtHash_ = request.sceneHash;
         std::lock_guard<std::mutex> lock(mutex_);
         ++progress_.builds;
+        if (!built_->tookGeometry()) ++progress_.bvhBuilds;
     }
     if (cancel_) return;
     RenderJob job(built_, request.settings);

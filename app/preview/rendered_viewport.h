@@ -2,9 +2,10 @@
 // The view's Rendered mode: core's path tracer renders what the window shows (its scene as
 // edited, its camera, the Render button's size, sampler and seed) progressively on a thread of its
 // own, one sample a pixel a pass, the view showing the running mean and, every few passes,
-// woven's denoiser's frame of it. Any change starts it again: a changed scene is built again
-// (BVH and materials), a camera or size change reuses the scene already built. While the camera
-// or a slider moves, passes render at a lower resolution, shown scaled up.
+// woven's denoiser's frame of it. Any change starts it again: a camera or size change renders the
+// scene already built; a material or light edit builds the materials and lights again on the BVH
+// already built; only a change of the geometry builds the BVH again. While the camera or a slider
+// moves, passes render at a lower resolution, shown scaled up.
 //
 // The frame after N passes is the Render button's (and `woven render`'s) frame of N samples a
 // pixel with no noise threshold, bit for bit: the same RenderJob over the same sample range.
@@ -37,7 +38,8 @@ struct ViewportProgress {
     int denoisings = 0;           // how many frames of this restart it denoised
     bool converged = false;
     uint64_t restarts = 0;  // how many times the view started again
-    uint64_t builds = 0;    // how many times it built a scene (BVH, materials, lights)
+    uint64_t builds = 0;    // how many times it built a scene (materials, lights)
+    uint64_t bvhBuilds = 0;  // of those, how many built the BVH too (the geometry changed)
 };
 
 class RenderedViewport {
@@ -96,7 +98,7 @@ private:
     std::atomic<bool> cancel_{false};  // the job in flight stops after the tile it renders
 
     // Built once a scene, shared with the job in flight; only the worker touches it.
-    std::shared_ptr<const RenderScene> built_;
+    std::shared_ptr<RenderScene> built_;
     std::string builtHash_;
 
     // What the worker publishes, under mutex_.

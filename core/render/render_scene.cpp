@@ -8,6 +8,7 @@
 #include <cstring>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "frame.h"
 #include "mesh_instances.h"
@@ -83,6 +84,37 @@ void RenderScene::Impl::buildGeometry() {
     }
     rtcCommitScene(rtcScene);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE) fail("Embree cannot build the scene: " + embreeMessage);
+}
+
+bool RenderScene::Impl::sameGeometry(const SceneDescription& next, const SceneMaterials& nextMaterials) const {
+    if (!rtcScene || next.meshes.size() != scene->meshes.size()) return false;
+    for (size_t m = 0; m < next.meshes.size(); ++m) {
+        const Mesh &was = scene->meshes[m], &is = next.meshes[m];
+        const bool sameInstances =
+            was.instances == is.instances || (was.instances && is.instances && *was.instances == *is.instances);
+        if (!sameInstances || was.positions != is.positions || was.triangles != is.triangles ||
+            singleSided(was) != singleSided(next, is) ||
+            (*materials)[was.material].mayPassThrough(was) != nextMaterials[is.material].mayPassThrough(is))
+            return false;
+    }
+    return true;
+}
+
+void RenderScene::Impl::takeGeometry(Impl& from) {
+    device = std::exchange(from.device, nullptr);
+    rtcScene = std::exchange(from.rtcScene, nullptr);
+    rtcSetDeviceErrorFunction(device, embreeError, &embreeMessage);
+    hitFilters = std::move(from.hitFilters);  // the same elements, whose addresses Embree holds
+    instanceRefs = std::move(from.instanceRefs);
+    culls = from.culls;
+    sceneFlags = from.sceneFlags;
+    bounds = from.bounds;
+    for (size_t m = 0; m < scene->meshes.size(); ++m) {
+        const Mesh& mesh = scene->meshes[m];
+        const SurfaceMaterial& material = (*materials)[mesh.material];
+        hitFilters[m] = HitFilter{&mesh, &material, material.passesRandomly(), singleSided(mesh)};
+    }
+    tookGeometry = true;
 }
 
 RTCGeometry RenderScene::Impl::triangleGeometry(size_t m) {
@@ -211,6 +243,21 @@ RenderScene::RenderScene(std::shared_ptr<const SceneDescription> scene) : impl_(
     validateScene(*impl_->scene);
     impl_->materials.emplace(*impl_->scene);
     impl_->buildGeometry();
+    impl_->buildLights();
+}
+
+RenderScene::RenderScene(std::shared_ptr<const SceneDescription> scene, RenderScene&& previous)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->scene = std::move(scene);
+    validateScene(*impl_->scene);
+    impl_->materials.emplace(*impl_->scene);
+    if (previous.impl_ && previous.impl_->sameGeometry(*impl_->scene, *impl_->materials)) {
+        impl_->takeGeometry(*previous.impl_);
+        previous.impl_.reset();
+    } else {
+        previous.impl_.reset();  // first: two BVHs need not fit in memory together
+        impl_->buildGeometry();
+    }
     impl_->buildLights();
 }
 
@@ -345,6 +392,7 @@ RenderScene::GeometryCounts RenderScene::geometryCounts() const {
 }
 
 const Bounds& RenderScene::bounds() const { return impl_->bounds; }
+bool RenderScene::tookGeometry() const { return impl_->tookGeometry; }
 const SceneDescription& RenderScene::description() const { return *impl_->scene; }
 
 }  // namespace woven

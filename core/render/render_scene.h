@@ -22,6 +22,12 @@ class RenderScene {
 public:
     // Throws SceneError (scene_loader.h) for what cannot be rendered: NaN vertices, no geometry.
     explicit RenderScene(std::shared_ptr<const SceneDescription> scene);
+    // `scene` as an edit of `previous`'s: where only materials or lights changed (the same meshes,
+    // positions, triangles and instances, whose materials let rays through and cull backs as
+    // before) it takes previous's BVH and builds its materials and lights alone, as the rendered
+    // viewport does for a slider; else it builds everything. Its frames are the constructor
+    // above's, bit for bit. `previous` is left empty, fit only to be destroyed.
+    RenderScene(std::shared_ptr<const SceneDescription> scene, RenderScene&& previous);
     ~RenderScene();
     RenderScene(const RenderScene&) = delete;
     RenderScene& operator=(const RenderScene&) = delete;
@@ -68,6 +74,7 @@ public:
     GeometryCounts geometryCounts() const;
 
     const Bounds& bounds() const;
+    bool tookGeometry() const;  // built from a previous scene's BVH rather than its own
     const SceneDescription& description() const;
 
 private:

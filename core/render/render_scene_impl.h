@@ -51,11 +51,20 @@ struct RenderScene::Impl {
 
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(scene->source + ": " + what); }
 
+    bool tookGeometry = false;  // the BVH is a previous scene's (takeGeometry())
+
     // glTF's doubleSided false.
-    bool singleSided(const Mesh& mesh) const {
-        return mesh.material >= 0 && !scene->materials[size_t(mesh.material)].doubleSided;
+    static bool singleSided(const SceneDescription& in, const Mesh& mesh) {
+        return mesh.material >= 0 && !in.materials[size_t(mesh.material)].doubleSided;
     }
+    bool singleSided(const Mesh& mesh) const { return singleSided(*scene, mesh); }
     void buildGeometry();
+    // Whether the Embree scene built for this scene holds `next` (with its materials) as well:
+    // what Embree holds of a material is whether its meshes take the pass-through filter and
+    // whether they cull backs.
+    bool sameGeometry(const SceneDescription& next, const SceneMaterials& nextMaterials) const;
+    // The Embree scene of `from`, its hit filters pointed at this scene's meshes and materials.
+    void takeGeometry(Impl& from);
     RTCGeometry triangleGeometry(size_t m);
     void addInstances(size_t m, RTCGeometry triangles);
     void buildLights();

@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <atomic>
+
 #include "orbit_camera.h"
 #include "rendered_viewport.h"
 #include "scene_loader.h"
@@ -55,6 +57,7 @@ TEST(RenderedViewport, AnUnchangedViewDoesNotStartAgain) {
     EXPECT_EQ(first.samples, 2);
     EXPECT_EQ(first.restarts, 1u);
     EXPECT_EQ(first.builds, 1u);
+    EXPECT_EQ(first.bvhBuilds, 1u);
     EXPECT_EQ(showAndWait(view, state).restarts, 1u);
     // A button held over the view that changes nothing (a header clicked) changes nothing.
     EXPECT_EQ(showAndWait(view, state, true).restarts, 1u);
@@ -70,13 +73,14 @@ TEST(RenderedViewport, ACameraMoveRendersTheSceneAlreadyBuiltAndMovingBackTheSam
     const ViewportProgress moved = showAndWait(view, state);
     EXPECT_EQ(moved.restarts, 2u);
     EXPECT_EQ(moved.builds, 1u);
+    EXPECT_EQ(moved.bvhBuilds, 1u);
     EXPECT_FALSE(view.frame()->radiance.pixels == before.radiance.pixels);
     state.settings.camera = original;
     EXPECT_EQ(showAndWait(view, state).builds, 1u);
     EXPECT_TRUE(view.frame()->radiance.pixels == before.radiance.pixels);
 }
 
-TEST(RenderedViewport, AMaterialEditBuildsTheSceneAgain) {
+TEST(RenderedViewport, AMaterialEditBuildsTheMaterialsAgainOnTheBvhAlreadyBuilt) {
     ViewState state;
     RenderedViewport view;
     showAndWait(view, state);
@@ -85,7 +89,25 @@ TEST(RenderedViewport, AMaterialEditBuildsTheSceneAgain) {
     const ViewportProgress edited = showAndWait(view, state);
     EXPECT_EQ(edited.restarts, 2u);
     EXPECT_EQ(edited.builds, 2u);
+    EXPECT_EQ(edited.bvhBuilds, 1u);
     EXPECT_FALSE(view.frame()->radiance.pixels == before.radiance.pixels);
+    // The frame of the edited scene built whole, bit for bit.
+    RenderJob whole(std::make_shared<const SceneDescription>(state.scene), state.settings);
+    std::atomic<bool> cancel{false};
+    whole.run(cancel);
+    EXPECT_TRUE(view.frame()->radiance.pixels == whole.snapshot().radiance.pixels);
+}
+
+TEST(RenderedViewport, OnlyAGeometryChangeBuildsTheBvhAgain) {
+    ViewState state;
+    RenderedViewport view;
+    showAndWait(view, state);
+    state.scene.environment.color *= 1.5f;  // a light edit
+    EXPECT_EQ(showAndWait(view, state).bvhBuilds, 1u);
+    state.scene.meshes[0].positions[0].y += 0.01f;
+    const ViewportProgress moved = showAndWait(view, state);
+    EXPECT_EQ(moved.builds, 3u);
+    EXPECT_EQ(moved.bvhBuilds, 2u);
 }
 
 TEST(RenderedViewport, TheEndOfADragStartsAgainAtFullSizeDenoised) {

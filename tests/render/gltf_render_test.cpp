@@ -16,10 +16,12 @@
 namespace woven {
 namespace {
 
+using test::lookingDown;
 using test::occludedFrom;
 using test::quad;
 using test::render;
 using test::sceneWith;
+using test::uvSphere;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -32,34 +34,6 @@ Material lambert(float albedo) {
     m.roughness = 1.0f;
     m.specular = 0.0f;
     return m;
-}
-
-Mesh uvSphere(float radius, int rings, int segments, int material) {
-    Mesh m;
-    m.name = "sphere";
-    for (int r = 0; r <= rings; ++r)
-        for (int s = 0; s <= segments; ++s) {
-            const float theta = float(kPi) * r / rings, phi = 2.0f * float(kPi) * s / segments;
-            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            m.positions.push_back(radius * n);
-            m.normals.push_back(n);
-            m.uvs.emplace_back(float(s) / segments, float(r) / rings);
-        }
-    for (int r = 0; r < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            const unsigned a = unsigned(r * (segments + 1) + s), b = a + 1, c = a + unsigned(segments + 1), d = c + 1;
-            m.triangles.emplace_back(a, b, c);  // outward: counter-clockwise seen from outside
-            m.triangles.emplace_back(b, d, c);
-        }
-    m.material = material;
-    return m;
-}
-
-Camera lookingDown(float height, float yfov) {
-    Camera c;
-    c.cameraToWorld = glm::inverse(glm::lookAt(glm::vec3(0, height, 0), glm::vec3(0), glm::vec3(0, 0, -1)));
-    c.yfov = yfov;
-    return c;
 }
 
 class GltfFurnace : public ::testing::TestWithParam<const char*> {};

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "sampling.h"
@@ -219,6 +220,58 @@ std::shared_ptr<SceneDescription> clothOverFloor(const WovenParams& params, bool
                                 quad("floor", {-1, -1, -1}, {2, -1, -1}, {2, 2, -1}, {-1, 2, -1})};
     if (!clothHasUvs) meshes[0].uvs.clear();
     return sceneWith(meshes, {cloth});
+}
+
+// A scene built as an edit of another (the rendered viewport's slider): a material edit keeps the
+// BVH, and the scene then answers every ray and renders every pixel as one built whole; anything
+// that changes what Embree holds builds it again.
+TEST(RenderSceneEdits, AMaterialEditKeepsTheBvhAndRendersAsASceneBuiltWhole) {
+    const std::shared_ptr<SceneDescription> before = clothOverFloor(gappyWeave());
+    WovenParams wider = gappyWeave();
+    wider.yarn_width = wider.warp_width = 0.8f;  // other gaps, still gaps
+    std::shared_ptr<SceneDescription> after = clothOverFloor(wider);
+    after->environment.color = glm::vec3(1.0f);
+    auto edited = std::make_shared<RenderScene>(after, RenderScene(before));
+    EXPECT_TRUE(edited->tookGeometry());
+    const RenderScene whole(after);
+    EXPECT_FALSE(whole.tookGeometry());
+    int throughGaps = 0;
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 40; ++x) {
+            const Ray ray = rayDown((x + 0.5f) / 40.0f, (y + 0.5f) / 40.0f);
+            const std::optional<SurfaceHit> a = edited->intersect(ray), b = whole.intersect(ray);
+            ASSERT_TRUE(a && b);
+            EXPECT_EQ(a->mesh, b->mesh);
+            EXPECT_EQ(a->t, b->t);
+            throughGaps += a->mesh == 1;
+        }
+    EXPECT_GT(throughGaps, 0);
+    RenderSettings settings;
+    settings.width = settings.height = 24;
+    settings.spp = 2;
+    settings.integrator = "path";
+    settings.camera = Camera{glm::inverse(glm::lookAt(glm::vec3(0.5f, 0.5f, 3.0f), glm::vec3(0.5f, 0.5f, 0.0f), glm::vec3(0, 1, 0))), 0.4f};
+    RenderJob job(std::shared_ptr<const RenderScene>(edited), settings);
+    std::atomic<bool> cancel{false};
+    job.run(cancel);
+    EXPECT_TRUE(job.snapshot().radiance.pixels == test::render(after, settings).radiance.pixels);
+}
+
+TEST(RenderSceneEdits, AGeometryEditOrAMaterialEditThatChangesWhatEmbreeHoldsBuildsTheBvh) {
+    const std::shared_ptr<SceneDescription> before = clothOverFloor(gappyWeave());
+    std::shared_ptr<SceneDescription> moved = clothOverFloor(gappyWeave());
+    moved->meshes[1].positions[0].z = -1.5f;
+    const RenderScene afterMove(moved, RenderScene(before));
+    EXPECT_FALSE(afterMove.tookGeometry());
+    Ray corner = rayDown(-0.99f, -0.99f);
+    ASSERT_TRUE(afterMove.intersect(corner));
+    EXPECT_GT(afterMove.intersect(corner)->t, 4.0f);  // the floor's corner moved down
+    WovenParams backed = gappyWeave();
+    backed.backing = 1;  // no gaps: the cloth's triangles no longer take the pass-through filter
+    EXPECT_FALSE(RenderScene(clothOverFloor(backed), RenderScene(before)).tookGeometry());
+    std::shared_ptr<SceneDescription> singleSided = clothOverFloor(gappyWeave());
+    singleSided->materials[0].doubleSided = false;  // camera rays cull its back
+    EXPECT_FALSE(RenderScene(singleSided, RenderScene(before)).tookGeometry());
 }
 
 // glTF's doubleSided false: camera rays pass through the back (glTF viewers cull it); bounces

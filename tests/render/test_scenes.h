@@ -1,6 +1,9 @@
 #pragma once
 // Small hand-made scenes for the render tests: every vertex, normal and uv is known, so
 // expected values come from geometry, not from the code under test.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,6 +52,39 @@ inline std::vector<Mesh> boxInside(const glm::vec3& lo, const glm::vec3& hi, int
         walls.push_back(inwards ? quad(names[f], a, b, c, d, material) : quad(names[f], a, d, c, b, material));
     }
     return walls;
+}
+
+// A sphere about the origin, `rings` x `segments` quads of its latitude-longitude grid, with
+// its normals and uv = (longitude, latitude) / their ranges.
+inline Mesh uvSphere(float radius, int rings, int segments, int material) {
+    constexpr float kPi = 3.14159265358979323846f;
+    Mesh m;
+    m.name = "sphere";
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const float theta = kPi * r / rings, phi = 2.0f * kPi * s / segments;
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            m.positions.push_back(radius * n);
+            m.normals.push_back(n);
+            m.uvs.emplace_back(float(s) / segments, float(r) / rings);
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const unsigned a = unsigned(r * (segments + 1) + s), b = a + 1, c = a + unsigned(segments + 1), d = c + 1;
+            m.triangles.emplace_back(a, b, c);  // outward: counter-clockwise seen from outside
+            m.triangles.emplace_back(b, d, c);
+        }
+    m.material = material;
+    return m;
+}
+
+// A camera `height` above the origin looking straight down, image up towards -z (so image x
+// runs along +x and image y down the page along +z).
+inline Camera lookingDown(float height, float yfov) {
+    Camera c;
+    c.cameraToWorld = glm::inverse(glm::lookAt(glm::vec3(0, height, 0), glm::vec3(0), glm::vec3(0, 0, -1)));
+    c.yfov = yfov;
+    return c;
 }
 
 inline std::shared_ptr<SceneDescription> sceneWith(std::vector<Mesh> meshes, std::vector<Material> materials = {}) {
