@@ -29,8 +29,8 @@ bool recorded(bool result, const char* label, const char* kind) {
 void setCurrentWidgetMap(WidgetMap* map) { current = map; }
 
 void WidgetMap::noteChange(const char* kind) {
-    // Buttons act and checkboxes toggle the view; the others hold a value.
-    static const std::set<std::string> values = {"slider", "drag", "colour", "input", "selectable"};
+    // Buttons act; the others hold a value (a checkbox, a switch of the material or of the view).
+    static const std::set<std::string> values = {"slider", "drag", "colour", "input", "selectable", "checkbox"};
     if (values.count(kind)) ++valueChanges_;
 }
 

@@ -44,7 +44,7 @@ public:
 
     // A widget returned true ("changed" for a value, "pressed" for a button).
     void noteChange(const char* kind);
-    // How many value widgets (sliders, drags, colours, fields, selectables) changed a value so far:
+    // How many value widgets (sliders, drags, colours, fields, selectables, checkboxes) changed a value so far:
     // the difference across a section says whether the user edited anything in it.
     size_t valueChanges() const { return valueChanges_; }
 

@@ -136,13 +136,18 @@ class Window:
     def xdotool(self, *args):
         subprocess.run(['xdotool', *args], env=self.env, check=True, timeout=10)
 
+    def move_to(self, x, y):
+        """The pointer to (x, y), by way of the pixel beside it: a resting window draws on input
+        alone, and a move to where the pointer already is sends none."""
+        self.xdotool('mousemove', str(x + 1), str(y))
+        self.xdotool('mousemove', str(x), str(y))
+        self.frames()
+
     def click(self, label, kind=None, at_frame=True):
         """A left click at the centre of the widget's frame (a field's box, not its label)."""
         x0, y0, x1, y1 = self.item(label, kind)['frame' if at_frame else 'rect']
         wx, wy = self.map['state']['window']['pos']
-        x, y = int(wx + (x0 + x1) / 2), int(wy + (y0 + y1) / 2)
-        self.xdotool('mousemove', str(x), str(y))
-        self.frames()
+        self.move_to(int(wx + (x0 + x1) / 2), int(wy + (y0 + y1) / 2))
         self.xdotool('mousedown', '1')
         self.frames()
         self.xdotool('mouseup', '1')

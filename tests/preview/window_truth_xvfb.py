@@ -68,8 +68,7 @@ def drag(window, label, kind, dx, at=0.5):
     scroll_to(window, label, kind)
     x0, y0, x1, y1 = window.item(label, kind)['frame']
     wx, wy = window.map['state']['window']['pos']
-    window.xdotool('mousemove', str(int(wx + x0 + (x1 - x0) * at)), str(int(wy + (y0 + y1) / 2)))
-    window.frames()
+    window.move_to(int(wx + x0 + (x1 - x0) * at), int(wy + (y0 + y1) / 2))
     window.xdotool('mousedown', '1')
     window.frames()
     for _ in range(4):

@@ -49,6 +49,7 @@ def nudge(window, label, kind):
     """A checkbox clicked; a colour's first field (red), a pair's first value, a single slider or
     drag from its middle, dragged 40 pixels."""
     if kind == 'checkbox':
+        scroll_to(window, label, kind)
         window.click(label, kind)
         return
     pair = label.endswith('(1/n, 1/m)') or label == 'ends, picks per cm'
@@ -94,6 +95,7 @@ def walk(window, cloth):
         after = before
         while after == before and time.monotonic() < deadline:
             after = settled(window)
+        print(f'{cloth}: {label}', flush=True)
         if after == before:
             silent.append(label)
             continue
