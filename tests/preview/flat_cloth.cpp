@@ -85,7 +85,20 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
     return glm::normalize(glm::mat3(camera.cameraToWorld) * local);
 }
 
-Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask) {
+namespace {
+// A number in [0, 1) from `key` (a 32-bit integer hash, "lowbias32" by Chris Wellons).
+float hashed(uint32_t key) {
+    key ^= key >> 16;
+    key *= 0x7feb352dU;
+    key ^= key >> 15;
+    key *= 0x846ca68bU;
+    key ^= key >> 16;
+    return float(key >> 8) * 0x1p-24f;
+}
+}  // namespace
+
+Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask,
+                         bool jittered) {
     const SceneMaterials materials(scene);
     const Camera& cam = scene.camera;
     const glm::vec3 eye(cam.cameraToWorld[3]);
@@ -102,7 +115,13 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
             int yarnHits = 0;
             for (int sy = 0; sy < n; ++sy)
                 for (int sx = 0; sx < n; ++sx) {
-                    const glm::vec3 d = cameraRayDirection(cam, px + (sx + 0.5f) / n, py + (sy + 0.5f) / n, width, height);
+                    glm::vec2 at(0.5f);
+                    if (jittered) {
+                        const uint32_t key = ((uint32_t(py) * uint32_t(width) + uint32_t(px)) * uint32_t(n * n) +
+                                              uint32_t(sy * n + sx)) * 2U;
+                        at = {hashed(key), hashed(key + 1U)};
+                    }
+                    const glm::vec3 d = cameraRayDirection(cam, px + (sx + at.x) / n, py + (sy + at.y) / n, width, height);
                     const float t = -eye.y / d.y;
                     const glm::vec3 p = eye + t * d;
                     glm::vec3 L = scene.environment.color;
