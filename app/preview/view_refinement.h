@@ -23,4 +23,11 @@ inline glm::vec2 refinementOffset(int index) {
     return cell / 3.0f + glm::vec2(cell.y, cell.x) / 9.0f;
 }
 
+// The side of the box, in pixels, that frame `index`'s sample stands for in the weave filter's
+// far field (woven.frag's footprintBox): the whole pixel for the first frame, which a moving view
+// shows alone, a third for the others, each its cell of the grid. Whole pixels around every point
+// would blur the resting view by a further pixel: a houndstooth's dark blocks at 3 pixels a thread
+// came out a third too bright.
+inline float refinementFootprint(int index) { return index == 0 ? 1.0f : 1.0f / 3.0f; }
+
 }  // namespace woven

@@ -99,18 +99,16 @@ BlockErrors blockErrors(const Image& preview, const Image& core, const std::vect
 // The cases that miss the bounds (median 5 %, worst block 15 %), measured on llvmpipe with the
 // refinement, each held at 1.3 x its measured figure so that it cannot get worse unseen
 // (docs/RESULTS.md, "The preview against core on everything woven ships"):
-// - houndstooth and the houndstooth draft mid (worst 0.32, 0.20): its 2/2 twill of 4-and-4
-//   colour blocks at 3 pixels a thread: the far field's fade starts while the colour blocks still
-//   alias in the 3 x 3 samples;
+// - houndstooth mid (worst 0.22): its 2/2 twill of 4-and-4 colour blocks at 3 pixels a thread,
+//   where the far field's fade has begun; without the far field the worst block is 0.06;
 // - voile mid (worst 0.22): an open weave whose gaps show the background, which the far field
-//   averages as coverage while core's pixels see it.
+//   averages as coverage (a screen door) while core's pixels see it; 0.14 without the far field.
 struct KnownMiss {
     const char* name;
     double median, worst;
 };
 constexpr KnownMiss kKnownMisses[] = {
-    {"houndstooth_mid", 0.05, 0.42},
-    {"draft_houndstooth_mid", 0.05, 0.26},
+    {"houndstooth_mid", 0.05, 0.29},
     {"voile_mid", 0.05, 0.29},
 };
 
