@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include "display_transform.h"
 #include "fabric_library.h"
 #include "flat_cloth.h"
 #include "gl_test_context.h"
@@ -96,6 +98,27 @@ BlockErrors blockErrors(const Image& preview, const Image& core, const std::vect
     return e;
 }
 
+// With $WOVEN_FIDELITY_PICTURES naming a folder, each case writes there its preview beside core's
+// image at half size, <subject>_<distance>.png: docs/RESULTS.md's pictures.
+void writePicture(const std::string& name, const Image& preview, const Image& core) {
+    const char* folder = std::getenv("WOVEN_FIDELITY_PICTURES");
+    if (!folder) return;
+    Image picture;
+    picture.width = core.width;
+    picture.height = core.height / 2;
+    picture.pixels.assign(size_t(picture.width) * size_t(picture.height), glm::vec3(0.0f));
+    const Image* halves[2] = {&preview, &core};
+    for (int half = 0; half < 2; ++half)
+        for (int y = 0; y < picture.height; ++y)
+            for (int x = 0; x < core.width / 2; ++x) {
+                const Image& from = *halves[half];
+                picture.at(half * (core.width / 2) + x, y) =
+                    0.25f * (from.at(2 * x, 2 * y) + from.at(2 * x + 1, 2 * y) + from.at(2 * x, 2 * y + 1) +
+                             from.at(2 * x + 1, 2 * y + 1));
+            }
+    writePng(std::string(folder) + "/" + name + ".png", picture);
+}
+
 // The cases that miss the bounds (median 5 %, worst block 15 %), measured on llvmpipe with the
 // refinement, each held at 1.3 x its measured figure so that it cannot get worse unseen
 // (docs/RESULTS.md, "The preview against core on everything woven ships"):
@@ -130,6 +153,7 @@ TEST_P(PreviewFidelity, BlockMeansMatchCore) {
     // As a resting window shows it: the mean of the refinement's 3 x 3 sample points a pixel.
     const Image preview = previewRadiance(scene, kWidth, kHeight, true, false, true, true);
     const BlockErrors e = blockErrors(preview, core, onCloth);
+    writePicture(c.subject.name + "_" + c.distance.name, preview, core);
     std::cout << "fidelity " << c.subject.name << " " << c.distance.name << ": " << e.blocks
               << " blocks, median " << e.median << ", worst " << e.worst << "\n";
     ASSERT_GT(e.blocks, size_t(50));
