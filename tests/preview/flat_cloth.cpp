@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene_materials.h"
+#include "yarn_noise.h"
 
 namespace woven::test {
 
@@ -85,18 +86,6 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
     return glm::normalize(glm::mat3(camera.cameraToWorld) * local);
 }
 
-namespace {
-// A number in [0, 1) from `key` (a 32-bit integer hash, "lowbias32" by Chris Wellons).
-float hashed(uint32_t key) {
-    key ^= key >> 16;
-    key *= 0x7feb352dU;
-    key ^= key >> 15;
-    key *= 0x846ca68bU;
-    key ^= key >> 16;
-    return float(key >> 8) * 0x1p-24f;
-}
-}  // namespace
-
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask,
                          bool jittered) {
     const SceneMaterials materials(scene);
@@ -119,7 +108,7 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
                     if (jittered) {
                         const uint32_t key = ((uint32_t(py) * uint32_t(width) + uint32_t(px)) * uint32_t(n * n) +
                                               uint32_t(sy * n + sx)) * 2U;
-                        at = {hashed(key), hashed(key + 1U)};
+                        at = glm::vec2(float(hash32(key) >> 8), float(hash32(key + 1U) >> 8)) * 0x1p-24f;
                     }
                     const glm::vec3 d = cameraRayDirection(cam, px + (sx + at.x) / n, py + (sy + at.y) / n, width, height);
                     const float t = -eye.y / d.y;
