@@ -18,6 +18,11 @@ uniform float alphaCutoff;
 #ifdef MAP_NORMAL
 uniform float normalScale;
 #endif
+#ifdef WOVEN_FILTER
+// The far field's box as a share of the pixel's side (view_refinement.h): where the progressive
+// refinement samples the pixel at several points, each stands for its part of the pixel.
+uniform float footprintBox;
+#endif
 
 // A projection keeps a fair part of its vector, else it is rounding noise (as core).
 bool usableProjection(vec3 projected, vec3 original) {
@@ -131,8 +136,9 @@ vec3 transmittedLight(YarnPoint y, Frame tangent, YarnPoint other, Frame otherTa
 // type weighted by the area it covers, its cross-section sampled uniformly across (crimp and
 // noise average out and are left out). Returns radiance x coverage; `coverage` = the opaque
 // fraction (1 unless gaps are see-through). Per-thread colours enter as the mean colour of the
-// threads the pixel covers on each side, whatever the weave shows of each (`footprint`: the
-// position and its screen derivatives in threads, as e and de/dx, de/dy); yarn types other than
+// threads the pixel covers on each side, each cell weighted by how much of that side shows in it
+// (footprintColors(): a houndstooth's dark warp shows mostly where it is on top) (`footprint`:
+// the position and its screen derivatives in threads, as e and de/dx, de/dy); yarn types other than
 // the material's own are not averaged: the lobes are the material's warp and weft (an
 // approximation for drafts whose yarns differ in exponents or c_y; their widths are in the
 // coverage).
@@ -179,13 +185,15 @@ vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec
     // The pixel's box of elements (whole repeats where the uv cannot resolve it): each side's
     // share as the box shows it.
     vec2 halfBox = 0.5 * (abs(dedx) + abs(dedy));
-    if (dedx.x < 1e29) {
+    bool resolved = dedx.x < 1e29;
+    if (resolved) {
         vec3 scales = footprintScales(face, e - halfBox, e + halfBox);
         yarnArea *= scales.yx;
     }
 #ifdef WOVEN_THREADS
     vec3 warpColor = footprintColor(warpColorTexture, threadPeriod.x, e.x, dedx.x, dedy.x);
     vec3 weftColor = footprintColor(weftColorTexture, threadPeriod.y, e.y, dedx.y, dedy.y);
+    if (resolved) footprintColors(face, e - halfBox, e + halfBox, warpColor, weftColor);
 #else
     vec3 weftColor = material.weft_color, warpColor = material.warp_color;
 #endif
@@ -269,6 +277,8 @@ void main() {
     float farWeight = smoothstep(0.25, 1.0, max(pixel, unknown));
     // Where the spacing passes the pixel's footprint the point is anywhere in it: the mean colour
     // of whole periods (the coarsest mip level), as core's shadeFiltered().
+    dedx *= footprintBox;
+    dedy *= footprintBox;
     if (unknown > pixel) dedx = vec2(1e30);
 #else
     const float farWeight = 0.0;

@@ -28,47 +28,45 @@ uniform vec4 yarnCoverage;
 // core's WeaveFarField::footprintScales(): what a footprint smaller than the repeat sees of each
 // colour's lobes (warp, weft, backing), from the share of its box whose cells have the warp on
 // top (a twill's diagonals, a satin's dots), so the weave's pattern stays where its threads are
-// finer than the pixels. Per face: the table of warp-top cells below and left of each corner of
-// the tile ((width + 1) x (height + 1), the tile being weaveTile's size), whether the split
-// applies (0: the repeat's shares everywhere), and per colour its share of the repeat, of the
-// warp-top cells and of the others.
-uniform sampler2D frontWarpTopSums, backWarpTopSums;
+// finer than the pixels. The front face's table of warp-top cells below and left of each corner of
+// the tile ((width + 1) x (height + 1), the tile being weaveTile's size; the back face's warp-top
+// cells are the front's others); per face whether the split applies (0: the repeat's shares
+// everywhere), and per colour its share of the repeat, of the warp-top cells and of the others.
+uniform sampler2D warpTopSums;
 uniform int splitsByFootprint[2];
 uniform vec3 farShares[2], inWarpCells[2], inWeftCells[2];
 
-float warpTopSum(int face, ivec2 corner) {
-    return face == 0 ? texelFetch(frontWarpTopSums, corner, 0).r : texelFetch(backWarpTopSums, corner, 0).r;
+// The integral over the box [e0, e1] of a function constant on each unit cell and periodic over
+// `size` cells, from its table of sums below and left of each corner, at `origin` in `sums`
+// (core's periodicBoxIntegral): the box moved into the first period, so the sums stay small,
+// then whole periods and the table bilinearly inside one (exact for a piecewise-constant function).
+vec4 inPeriod(sampler2D sums, ivec2 origin, vec2 x, ivec2 size) {
+    ivec2 c = origin + min(ivec2(x), size - 1);
+    vec2 f = x - vec2(c - origin);
+    return mix(mix(texelFetch(sums, c, 0), texelFetch(sums, c + ivec2(1, 0), 0), f.x),
+               mix(texelFetch(sums, c + ivec2(0, 1), 0), texelFetch(sums, c + ivec2(1, 1), 0), f.x), f.y);
 }
-
-// The cells' indicator integrated from the tile's corner to x, 0 <= x <= tile: the table
-// bilinearly inside a cell (exact for a piecewise-constant function).
-float warpTopInTile(int face, vec2 x, ivec2 tile) {
-    ivec2 c = min(ivec2(x), tile - 1);
-    vec2 f = x - vec2(c);
-    return mix(mix(warpTopSum(face, c), warpTopSum(face, c + ivec2(1, 0)), f.x),
-               mix(warpTopSum(face, c + ivec2(0, 1)), warpTopSum(face, c + ivec2(1, 1)), f.x), f.y);
+vec4 integralTo(sampler2D sums, ivec2 origin, vec2 x, ivec2 size) {
+    vec2 period = vec2(size);
+    vec2 q = floor(x / period), r = x - q * period;
+    return q.x * q.y * texelFetch(sums, origin + size, 0) + q.x * inPeriod(sums, origin, vec2(period.x, r.y), size) +
+           q.y * inPeriod(sums, origin, vec2(r.x, period.y), size) + inPeriod(sums, origin, r, size);
 }
-
-// From the tile's corner to any x >= 0: whole tiles, then the table inside one.
-float warpTopIntegral(int face, vec2 x, ivec2 tile) {
-    vec2 size = vec2(tile);
-    vec2 q = floor(x / size), r = x - q * size;
-    return q.x * q.y * warpTopSum(face, tile) + q.x * warpTopInTile(face, vec2(size.x, r.y), tile) +
-           q.y * warpTopInTile(face, vec2(r.x, size.y), tile) + warpTopInTile(face, r, tile);
+vec4 periodicBoxIntegral(sampler2D sums, ivec2 origin, ivec2 size, vec2 e0, vec2 e1) {
+    vec2 shift = floor(e0 / vec2(size)) * vec2(size);
+    vec2 a = e0 - shift, b = e1 - shift;
+    return integralTo(sums, origin, b, size) - integralTo(sums, origin, vec2(a.x, b.y), size) -
+           integralTo(sums, origin, vec2(b.x, a.y), size) + integralTo(sums, origin, a, size);
 }
 
 // The factor on each colour's lobes (warp, weft, backing) for the box [e0, e1] in weave elements.
 vec3 footprintScales(int face, vec2 e0, vec2 e1) {
     if (splitsByFootprint[face] == 0) return vec3(1.0);
     ivec2 tile = textureSize(weaveTile, 0);
-    // The box moved into the first repeat, so the integrals stay small.
-    vec2 shift = floor(e0 / vec2(tile)) * vec2(tile);
-    vec2 a = e0 - shift, b = e1 - shift;
-    float area = (b.x - a.x) * (b.y - a.y);
+    float area = (e1.x - e0.x) * (e1.y - e0.y);
     if (!(area > 0.0)) return vec3(1.0);
-    float warpTop = warpTopIntegral(face, b, tile) - warpTopIntegral(face, vec2(a.x, b.y), tile) -
-                    warpTopIntegral(face, vec2(b.x, a.y), tile) + warpTopIntegral(face, a, tile);
-    float f = clamp(warpTop / area, 0.0, 1.0);
+    float warpTop = periodicBoxIntegral(warpTopSums, ivec2(0), tile, e0, e1).r;
+    float f = clamp((face == 0 ? warpTop : area - warpTop) / area, 0.0, 1.0);
     vec3 box = f * inWarpCells[face] + (1.0 - f) * inWeftCells[face];
     vec3 shares = farShares[face];
     vec3 scale = vec3(shares.x > 0.0 ? box.x / shares.x : 0.0, shares.y > 0.0 ? box.y / shares.y : 0.0,
@@ -95,5 +93,39 @@ vec3 footprintColor(sampler1D colors, int period, float e, float dedx, float ded
             sum += textureGrad(colors, x * scale, 0.25 * dedx * scale, 0.25 * dedy * scale);
         }
     return sum.rgb / max(sum.a, 1e-6);
+}
+
+// core's WeaveFarField::footprintColors(): each side's colours over the box [e0, e1] weighted by
+// each cell's share of that side's yarn, from the front face's tables of (warp-top cells x the
+// side's colour, warp-top cells) over the joint period of the tile and the side's colours (the
+// back face's warp-top cells are the front's others): the warp's at (0, 0) of colorTopSums, the
+// weft's below it. `warp` and `weft`: the plain means in, the weighted ones out.
+uniform sampler2D colorTopSums;
+uniform ivec4 colorTableSizes;  // the warp's table (xy) and the weft's (zw) in cells; 0 where unused
+
+void footprintColors(int face, vec2 e0, vec2 e1, inout vec3 warp, inout vec3 weft) {
+    float area = (e1.x - e0.x) * (e1.y - e0.y);
+    if (splitsByFootprint[face] == 0 || !(area > 0.0)) return;
+    for (int side = 0; side < 2; ++side) {
+        ivec2 size = side == 0 ? colorTableSizes.xy : colorTableSizes.zw;
+        if (size.x == 0) continue;
+        vec4 s = periodicBoxIntegral(colorTopSums, ivec2(0, side == 0 ? 0 : colorTableSizes.y + 1), size, e0, e1);
+        vec3 all = (side == 0 ? warp : weft) * area;
+        float warpTop = clamp(s.a, 0.0, area);
+        if (face == 1) {
+            s.rgb = all - s.rgb;
+            warpTop = area - warpTop;
+        }
+        vec3 topColor = side == 0 ? s.rgb : all - s.rgb, otherColor = all - topColor;
+        float top = side == 0 ? warpTop : area - warpTop;
+        float inTop = side == 0 ? inWarpCells[face].x : inWeftCells[face].y;
+        float inOther = side == 0 ? inWeftCells[face].x : inWarpCells[face].y;
+        float weight = inTop * top + inOther * (area - top);
+        if (weight > 1e-6 * area) {
+            vec3 c = (inTop * topColor + inOther * otherColor) / weight;
+            if (side == 0) warp = c;
+            else weft = c;
+        }
+    }
 }
 #endif

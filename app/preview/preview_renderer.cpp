@@ -318,6 +318,8 @@ void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, in
     if (material.doubleSided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
     uploadMaterial(program, material, materialIndex);
+    glUniform1f(program.uniform("footprintBox"), refinementFootprint(options.refinement));
+    glUniform1i(program.uniform("refinementFrame"), options.refinement);
     // After the weave's update, which binds on the active unit; the transmitted maps after the
     // material's textures (a woven material's kept surface has at most two, on units 8 and 9;
     // its far field's tables are on 14 and 15).

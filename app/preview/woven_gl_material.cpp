@@ -75,8 +75,11 @@ void uploadColorTrack(GLuint texture, const ThreadLayout& side) {
     glBindTexture(GL_TEXTURE_1D, texture);
     glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA32F, bins, 0, GL_RGBA, GL_FLOAT, texels.data());
     glGenerateMipmap(GL_TEXTURE_1D);
-    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Nearest within a level: a footprint inside one bin sees that bin's colour alone, as core's
+    // box means do; linear filtering blended each thread with its neighbour over a whole thread
+    // (a houndstooth's dark blocks came out a third too bright at 3 pixels a thread).
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glBindTexture(GL_TEXTURE_1D, 0);
 }
@@ -153,12 +156,13 @@ WeaveTextures::WeaveTextures() {
     glGenTextures(2, colorTracks_);
     glGenBuffers(1, &threadBuffer_);
     glGenBuffers(1, &yarnBuffer_);
-    glGenTextures(2, warpTopSums_);
+    glGenTextures(1, &warpTopSums_);
+    glGenTextures(1, &colorTopSums_);
 }
 
 WeaveTextures::~WeaveTextures() {
-    const GLuint textures[] = {tile_,           floats_,         threadTable_,    yarnTable_,
-                               colorTracks_[0], colorTracks_[1], warpTopSums_[0], warpTopSums_[1]};
+    const GLuint textures[] = {tile_,           floats_,      threadTable_, yarnTable_, colorTracks_[0],
+                               colorTracks_[1], warpTopSums_, colorTopSums_};
     glDeleteTextures(8, textures);
     const GLuint buffers[] = {threadBuffer_, yarnBuffer_};
     glDeleteBuffers(2, buffers);
@@ -227,16 +231,38 @@ void WeaveTextures::updateFootprintSplit(const Weave& weave, const WovenParams& 
     // A float table counts cells exactly up to 2^24; larger tiles are left unsplit (the repeat's
     // shares at every footprint, as for unevenly spaced threads).
     constexpr size_t kMaxTableTexels = size_t(1) << 22;
+    auto fits = [&](glm::ivec2 size) { return size_t(size.x + 1) * size_t(size.y + 1) <= kMaxTableTexels; };
+    colorTableSizes_ = glm::ivec4(0);
     for (int face = 0; face < 2; ++face) {
         const WeaveFarField far(weave, p, face == 1);
-        const glm::ivec2 tile = far.tileSize();
-        splitsByFootprint_[face] = far.splitsByFootprint() && size_t(tile.x + 1) * size_t(tile.y + 1) <= kMaxTableTexels;
+        splitsByFootprint_[face] = far.splitsByFootprint() && fits(far.tileSize());
         farShares_[face] = far.colorShares();
         inWarpCells_[face] = far.sharesInWarpCells();
         inWeftCells_[face] = far.sharesInWeftCells();
-        if (!splitsByFootprint_[face]) continue;
-        glBindTexture(GL_TEXTURE_2D, warpTopSums_[face]);
+        // The front face's tables; the shader turns them into the back's (whose warp-top cells are
+        // the front's others).
+        if (face == 1 || !splitsByFootprint_[face]) continue;
+        const glm::ivec2 tile = far.tileSize();
+        glBindTexture(GL_TEXTURE_2D, warpTopSums_);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, tile.x + 1, tile.y + 1, 0, GL_RED, GL_FLOAT, far.warpTopSums().data());
+        setNearest(GL_TEXTURE_2D);
+        // The warp's colour table at the top left, the weft's below it.
+        const glm::ivec2 warp = far.weightsColors(0) && fits(far.colorTableSize(0)) ? far.colorTableSize(0) : glm::ivec2(0);
+        const glm::ivec2 weft = far.weightsColors(1) && fits(far.colorTableSize(1)) ? far.colorTableSize(1) : glm::ivec2(0);
+        colorTableSizes_ = glm::ivec4(warp, weft);
+        if (warp.x == 0 && weft.x == 0) continue;
+        const int width = std::max(warp.x, weft.x) + 1, weftRow = warp.y + 1;
+        std::vector<glm::vec4> texels(size_t(width) * size_t(weftRow + weft.y + 1), glm::vec4(0.0f));
+        for (int side = 0; side < 2; ++side) {
+            const glm::ivec2 size = side == 0 ? warp : weft;
+            if (size.x == 0) continue;
+            const std::vector<glm::vec4>& sums = far.colorTopSums(side);
+            for (int v = 0; v <= size.y; ++v)
+                std::copy_n(sums.begin() + ptrdiff_t(v) * (size.x + 1), size.x + 1,
+                            texels.begin() + ptrdiff_t(v + (side == 0 ? 0 : weftRow)) * width);
+        }
+        glBindTexture(GL_TEXTURE_2D, colorTopSums_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, weftRow + weft.y + 1, 0, GL_RGBA, GL_FLOAT, texels.data());
         setNearest(GL_TEXTURE_2D);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -273,17 +299,21 @@ void WeaveTextures::bind(const ShaderProgram& program) const {
         glUniform1i(program.uniform("weftColorTexture"), 7);
     }
     if (program.uniform("splitsByFootprint[0]") >= 0) {
-        const char* samplers[2] = {"frontWarpTopSums", "backWarpTopSums"};
-        for (int face = 0; face < 2; ++face) {
-            glActiveTexture(GLenum(GL_TEXTURE14 + face));
-            glBindTexture(GL_TEXTURE_2D, warpTopSums_[face]);
-            glUniform1i(program.uniform(samplers[face]), 14 + face);
-        }
+        glActiveTexture(GL_TEXTURE14);
+        glBindTexture(GL_TEXTURE_2D, warpTopSums_);
+        glUniform1i(program.uniform("warpTopSums"), 14);
         const GLint split[2] = {splitsByFootprint_[0], splitsByFootprint_[1]};
         glUniform1iv(program.uniform("splitsByFootprint[0]"), 2, split);
         glUniform3fv(program.uniform("farShares[0]"), 2, glm::value_ptr(farShares_[0]));
         glUniform3fv(program.uniform("inWarpCells[0]"), 2, glm::value_ptr(inWarpCells_[0]));
         glUniform3fv(program.uniform("inWeftCells[0]"), 2, glm::value_ptr(inWeftCells_[0]));
+    }
+    const GLint colorTables = program.uniform("colorTableSizes");
+    if (colorTables >= 0) {
+        glActiveTexture(GL_TEXTURE15);
+        glBindTexture(GL_TEXTURE_2D, colorTopSums_);
+        glUniform1i(program.uniform("colorTopSums"), 15);
+        glUniform4iv(colorTables, 1, glm::value_ptr(colorTableSizes_));
     }
     const glm::vec4 coverage(coverage_[0].weft, coverage_[0].warp, coverage_[1].weft, coverage_[1].warp);
     glUniform4fv(program.uniform("yarnCoverage"), 1, glm::value_ptr(coverage));

@@ -42,8 +42,8 @@ public:
     // thread and yarn tables (a few kilobytes) when anything about the threads did.
     void update(const WovenParams& p);
     // Binds the textures to units 0 (tile), 3 (floats), 4 (threads), 5 (yarns), 6 and 7 (the
-    // filter's warp and weft colours), 14 and 15 (the filter's warp-top tables of the front and the
-    // back) and sets the uniforms that go with them.
+    // filter's warp and weft colours), 14 (its warp-top table) and 15 (its colour tables) and sets
+    // the uniforms that go with them.
     void bind(const ShaderProgram& program) const;
 
 private:
@@ -55,11 +55,15 @@ private:
     GLuint colorTracks_[2] = {0, 0};  // warp, weft: the weave filter's mipmapped thread colours
     glm::ivec2 threadPeriod_{1}, threadSpaced_{0};
     WeaveCoverage coverage_[2];  // front, back
-    // Per face, the far field's split by top yarn (WeaveFarField::footprintScales()): its table of
-    // warp-top cells, and per colour the shares of the repeat, of warp-top and of other cells.
-    GLuint warpTopSums_[2] = {0, 0};
+    // The far field's split by top yarn (WeaveFarField::footprintScales()): the table of warp-top
+    // cells, and per face and colour the shares of the repeat, of warp-top and of other cells.
+    GLuint warpTopSums_ = 0;  // the front face's
     bool splitsByFootprint_[2] = {false, false};
     glm::vec3 farShares_[2], inWarpCells_[2], inWeftCells_[2];
+    // The front face's colour tables of the warp and the weft (WeaveFarField::footprintColors()),
+    // one texture, and their sizes in cells (0 where unused).
+    GLuint colorTopSums_ = 0;
+    glm::ivec4 colorTableSizes_{0};
     std::optional<WovenParams> uploaded_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "weave_coverage.h"
 #include "yarn_geometry.h"
@@ -14,6 +15,45 @@ float farFieldWeight(float elements) {
 }
 
 namespace {
+// The integral over the box [e0, e1] of a function constant on each unit cell and periodic over
+// width x height cells, from its table of sums below and left of each corner ((width + 1) x
+// (height + 1)): the box moved into the first period (so the sums stay small and exact for any
+// uv), then whole periods and the table bilinearly inside one (exact for a piecewise-constant
+// function).
+template <class Sum, class Stored>
+Sum periodicBoxIntegral(const std::vector<Stored>& sums, glm::ivec2 size, const glm::dvec2& e0, const glm::dvec2& e1) {
+    const size_t stride = size_t(size.x) + 1;
+    auto at = [&](int u, int v) { return Sum(sums[size_t(v) * stride + size_t(u)]); };
+    auto inPeriod = [&](double x, double y) {  // 0 <= x <= width, 0 <= y <= height
+        const int u = std::min(int(x), size.x - 1), v = std::min(int(y), size.y - 1);
+        const double fx = x - u, fy = y - v;
+        return (1 - fx) * (1 - fy) * at(u, v) + fx * (1 - fy) * at(u + 1, v) + (1 - fx) * fy * at(u, v + 1) +
+               fx * fy * at(u + 1, v + 1);
+    };
+    const glm::dvec2 period(size);
+    auto integral = [&](double x, double y) {
+        const double qx = std::floor(x / period.x), qy = std::floor(y / period.y);
+        const double rx = x - qx * period.x, ry = y - qy * period.y;
+        return qx * qy * at(size.x, size.y) + qx * inPeriod(period.x, ry) + qy * inPeriod(rx, period.y) + inPeriod(rx, ry);
+    };
+    const glm::dvec2 shift = glm::floor(e0 / period) * period;
+    const glm::dvec2 a = e0 - shift, b = e1 - shift;
+    return integral(b.x, b.y) - integral(a.x, b.y) - integral(b.x, a.y) + integral(a.x, a.y);
+}
+
+// The table of sums below and left of each corner of f(u, v) over width x height cells.
+template <class T, class F>
+std::vector<T> cornerSums(glm::ivec2 size, F f) {
+    const size_t stride = size_t(size.x) + 1;
+    std::vector<T> sums(stride * (size_t(size.y) + 1), T(0));
+    for (int v = 0; v < size.y; ++v)
+        for (int u = 0; u < size.x; ++u)
+            sums[(size_t(v) + 1) * stride + size_t(u) + 1] = sums[size_t(v) * stride + size_t(u) + 1] +
+                                                             sums[(size_t(v) + 1) * stride + size_t(u)] -
+                                                             sums[size_t(v) * stride + size_t(u)] + f(u, v);
+    return sums;
+}
+
 bool sameLobe(const FarFieldLobe& a, const FarFieldLobe& b) {
     return a.color == b.color && a.frame.x == b.frame.x && a.frame.z == b.frame.z && a.shape.ex == b.shape.ex &&
            a.shape.ey == b.shape.ey && a.shape.rs == b.shape.rs;
@@ -73,44 +113,34 @@ WeaveFarField::WeaveFarField(const Weave& weave, const WovenParams& p, bool back
     }
     tileWidth_ = pattern.width();
     tileHeight_ = pattern.height();
-    const size_t stride = size_t(tileWidth_) + 1;
-    warpTopSums_.assign(stride * (size_t(tileHeight_) + 1), 0.0f);
-    for (int v = 0; v < tileHeight_; ++v)
-        for (int u = 0; u < tileWidth_; ++u)
-            warpTopSums_[(size_t(v) + 1) * stride + size_t(u) + 1] =
-                warpTopSums_[size_t(v) * stride + size_t(u) + 1] + warpTopSums_[(size_t(v) + 1) * stride + size_t(u)] -
-                warpTopSums_[size_t(v) * stride + size_t(u)] + (pattern.topInTile(u, v) == YarnType::Warp ? 1.0f : 0.0f);
-}
+    auto warpTop = [&](int u, int v) { return pattern.topInTile(u, v) == YarnType::Warp ? 1.0f : 0.0f; };
+    warpTopSums_ = cornerSums<float>({tileWidth_, tileHeight_}, warpTop);
 
-double WeaveFarField::warpTopArea(double x0, double y0, double x1, double y1) const {
-    // The cells' indicator integrated from the tile's corner to (x, y), for any x, y >= 0: whole
-    // tiles, then the table bilinearly inside one (exact for a piecewise-constant function).
-    const size_t stride = size_t(tileWidth_) + 1;
-    auto at = [&](int u, int v) { return double(warpTopSums_[size_t(v) * stride + size_t(u)]); };
-    auto inTile = [&](double x, double y) {  // 0 <= x <= width, 0 <= y <= height
-        const int u = std::min(int(x), tileWidth_ - 1), v = std::min(int(y), tileHeight_ - 1);
-        const double fx = x - u, fy = y - v;
-        return (1 - fx) * (1 - fy) * at(u, v) + fx * (1 - fy) * at(u + 1, v) + (1 - fx) * fy * at(u, v + 1) +
-               fx * fy * at(u + 1, v + 1);
-    };
-    auto integral = [&](double x, double y) {
-        const double W = tileWidth_, H = tileHeight_;
-        const double qx = std::floor(x / W), qy = std::floor(y / H);
-        const double rx = x - qx * W, ry = y - qy * H;
-        return qx * qy * at(tileWidth_, tileHeight_) + qx * inTile(W, ry) + qy * inTile(rx, H) + inTile(rx, ry);
-    };
-    return integral(x1, y1) - integral(x0, y1) - integral(x1, y0) + integral(x0, y0);
+    // footprintColors()'s tables, over the joint period of the tile and each side's colours: a
+    // float table counts cells exactly up to 2^24, and a draft's periods rarely pass a few hundred.
+    constexpr int64_t kMaxColorTable = int64_t(1) << 20;
+    const ThreadLayout* sides[2] = {&weave.warp(), &weave.weft()};
+    for (int side = 0; side < 2; ++side) {
+        const int period = sides[side]->period();
+        if (period == 1) continue;
+        const int tile = side == 0 ? tileWidth_ : tileHeight_;
+        const int64_t joint = std::min(std::lcm(int64_t(tile), int64_t(period)), kMaxColorTable);
+        const glm::ivec2 size = side == 0 ? glm::ivec2(int(joint), tileHeight_) : glm::ivec2(tileWidth_, int(joint));
+        if ((int64_t(size.x) + 1) * (int64_t(size.y) + 1) > kMaxColorTable) continue;
+        colorTableSize_[side] = size;
+        colorTops_[side] = cornerSums<glm::vec4>(size, [&](int u, int v) {
+            const float top = warpTop(u % tileWidth_, v % tileHeight_);
+            return glm::vec4(top * sides[side]->color((side == 0 ? u : v) % period), top);
+        });
+    }
 }
 
 glm::vec3 WeaveFarField::footprintScales(const glm::dvec2& e0, const glm::dvec2& e1) const {
     if (!byFootprint_) return glm::vec3(1.0f);
-    // The box moved into the first repeat, so the integrals stay small and exact for any uv.
-    const glm::dvec2 tile(tileWidth_, tileHeight_);
-    const glm::dvec2 shift = glm::floor(e0 / tile) * tile;
-    const glm::dvec2 a = e0 - shift, b = e1 - shift;
-    const double area = (b.x - a.x) * (b.y - a.y);
+    const double area = (e1.x - e0.x) * (e1.y - e0.y);
     if (!(area > 0.0)) return glm::vec3(1.0f);
-    const float f = float(std::clamp(warpTopArea(a.x, a.y, b.x, b.y) / area, 0.0, 1.0));
+    const double warpTop = periodicBoxIntegral<double>(warpTopSums_, {tileWidth_, tileHeight_}, e0, e1);
+    const float f = float(std::clamp(warpTop / area, 0.0, 1.0));
     glm::vec3 scale;
     float total = 0.0f;
     for (int c = 0; c < 3; ++c) {
@@ -119,6 +149,25 @@ glm::vec3 WeaveFarField::footprintScales(const glm::dvec2& e0, const glm::dvec2&
         total += boxShare;
     }
     return total > 0.0f ? scale / total : glm::vec3(1.0f);
+}
+
+void WeaveFarField::footprintColors(const glm::dvec2& e0, const glm::dvec2& e1, glm::vec3& warp, glm::vec3& weft) const {
+    const double area = (e1.x - e0.x) * (e1.y - e0.y);
+    if (!(area > 0.0)) return;
+    // Each side's yarn covers one share of the cells where it is on top and another of the
+    // others: its colour is the mean over the box of each cell's colour weighted by that share.
+    glm::vec3* colors[2] = {&warp, &weft};
+    const double inTop[2] = {inWarpCells_[0], inWeftCells_[1]}, inOther[2] = {inWeftCells_[0], inWarpCells_[1]};
+    for (int side = 0; side < 2; ++side) {
+        if (!weightsColors(side)) continue;
+        const glm::dvec4 s = periodicBoxIntegral<glm::dvec4>(colorTops_[side], colorTableSize_[side], e0, e1);
+        const glm::dvec3 all = glm::dvec3(*colors[side]) * area, inWarpTop(s);
+        const double warpTop = std::clamp(s.w, 0.0, area);
+        const glm::dvec3 topColor = side == 0 ? inWarpTop : all - inWarpTop, otherColor = all - topColor;
+        const double top = side == 0 ? warpTop : area - warpTop;
+        const double weight = inTop[side] * top + inOther[side] * (area - top);
+        if (weight > 1e-9 * area) *colors[side] = glm::vec3((inTop[side] * topColor + inOther[side] * otherColor) / weight);
+    }
 }
 
 }  // namespace woven

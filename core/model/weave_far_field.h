@@ -57,6 +57,15 @@ public:
     // unevenly spaced threads (whose cells are not the tile's unit cells).
     glm::vec3 footprintScales(const glm::dvec2& e0, const glm::dvec2& e1) const;
 
+    // What a footprint smaller than the repeat sees of each side's colours: where threads of
+    // different colours cross (a houndstooth's blocks, a gingham's checks) the warp shows its own
+    // colour only in the cells where it shows at all, mostly those with the warp on top. Given the
+    // plain means of the warp's and the weft's colours over the box [e0, e1] (ThreadLayout::
+    // meanColor()), returns them weighted by each cell's share of that side's yarn. Unchanged where
+    // the side has one colour, where footprintScales() does not split, and for footprints of
+    // whole repeats of the tile and the colours (to which the weighting tends).
+    void footprintColors(const glm::dvec2& e0, const glm::dvec2& e1, glm::vec3& warp, glm::vec3& weft) const;
+
     // What footprintScales() is computed from, for its GLSL twin (woven.frag): whether it splits
     // by top yarn at all, each colour's share of the repeat and of the cells with the warp on top
     // and of the others, and the (width + 1) x (height + 1) table of warp-top cells below and
@@ -67,13 +76,22 @@ public:
     glm::vec3 sharesInWeftCells() const { return {inWeftCells_[0], inWeftCells_[1], inWeftCells_[2]}; }
     glm::ivec2 tileSize() const { return {tileWidth_, tileHeight_}; }
     const std::vector<float>& warpTopSums() const { return warpTopSums_; }
+    // What footprintColors() is computed from, per side (0 the warp, 1 the weft): whether it
+    // weights that side's colours, the size of its table (the joint period of the tile and the
+    // side's colours along its threads' axis, the tile's along the other) and the table of
+    // (warp-top cells x the side's colour, warp-top cells) below and left of each corner, (width
+    // + 1) x (height + 1).
+    bool weightsColors(int side) const { return !colorTops_[side].empty(); }
+    glm::ivec2 colorTableSize(int side) const { return colorTableSize_[side]; }
+    const std::vector<glm::vec4>& colorTopSums(int side) const { return colorTops_[side]; }
 
 private:
-    double warpTopArea(double x0, double y0, double x1, double y1) const;  // cells with the warp on top, in the box
 
     std::vector<FarFieldLobe> lobes_;
     int tileWidth_ = 1, tileHeight_ = 1;
     std::vector<float> warpTopSums_;  // (width + 1) x (height + 1): warp-top cells below and left of each corner
+    std::vector<glm::vec4> colorTops_[2];  // warp, weft: footprintColors()'s tables, empty where unused
+    glm::ivec2 colorTableSize_[2] = {glm::ivec2(0), glm::ivec2(0)};
     bool byFootprint_ = false;
     // Per colour: its share of the repeat, and its share of the cells with the warp on top and of
     // the others (as fractions of those cells' area).

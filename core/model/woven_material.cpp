@@ -94,9 +94,10 @@ std::optional<FramedLobe<FilteredWeaveLobe>> WovenMaterial::shadeFiltered(const 
     const bool unresolved = std::max(spacing.x, spacing.y) > std::max(pixel.x, pixel.y);
     const glm::dvec2 e = weave_.wrapped(in.uv * repeat),
                      half = unresolved ? glm::dvec2(kWholeRepeats) : glm::min(0.5 * extent, glm::dvec2(kWholeRepeats));
-    const glm::vec3 colors[3] = {weave_.warp().meanColor(e.x - half.x, e.x + half.x) * in.print,
-                                 weave_.weft().meanColor(e.y - half.y, e.y + half.y) * in.print, params_.backing_color};
     const WeaveFarField& far = farField(in.backSide);
+    glm::vec3 warp = weave_.warp().meanColor(e.x - half.x, e.x + half.x), weft = weave_.weft().meanColor(e.y - half.y, e.y + half.y);
+    if (!unresolved) far.footprintColors(e - half, e + half, warp, weft);
+    const glm::vec3 colors[3] = {warp * in.print, weft * in.print, params_.backing_color};
     const FilteredWeaveLobe lobe(far, colors, far.footprintScales(e - half, e + half), farWeight, nearFrame,
                                  nearLobe.value_or(AshikhminShirley(0.0f, 0.0f, 0.0f, glm::vec3(0.0f))));
     return FramedLobe<FilteredWeaveLobe>(tangent, lobe);

@@ -127,6 +127,38 @@ TEST(WeaveFilter, FootprintSharesFollowTheCellsItCovers) {
     EXPECT_NEAR(farAway.x, 10.0f, 1e-3f);
 }
 
+TEST(WeaveFilter, FootprintColorsFollowTheThreadsOnTop) {
+    // The satin with a dark and a light warp end in turn and one weft colour: row 0's warp cell
+    // is column 9, a dark end.
+    WovenParams p = satin();
+    const glm::vec3 dark(0.05f), light(0.8f);
+    p.warp_colors = {light, dark};
+    const Weave weave(p);
+    const WeaveFarField far(weave, p, false);
+    ASSERT_TRUE(far.weightsColors(0));
+    EXPECT_FALSE(far.weightsColors(1));
+    // A box inside the warp cell of row 0 sees the dark end alone, whatever the plain mean.
+    glm::vec3 warp(0.5f), weft = p.weft_color;
+    far.footprintColors({9.2, 0.2}, {9.8, 0.8}, warp, weft);
+    EXPECT_NEAR(warp.x, dark.x, 1e-5f);
+    EXPECT_EQ(weft, p.weft_color);
+    // Columns 8 to 10 of row 0: light, dark (on top), light; the mean 0.55, but the warp shows
+    // mostly in the dark end's cell (by the warp's shares in warp-top and in weft-top cells).
+    const float top = far.sharesInWarpCells().x, other = far.sharesInWeftCells().x;
+    warp = glm::vec3((light + dark + light) / 3.0f);
+    far.footprintColors({8.0, 0.0}, {11.0, 1.0}, warp, weft);
+    EXPECT_NEAR(warp.x, (top * dark.x + other * 2.0f * light.x) / (top + 2.0f * other), 1e-5f);
+    // Whole repeats of the tile and the colours: the plain mean.
+    warp = (light + dark) / 2.0f;
+    far.footprintColors({3.0, -7.0}, {23.0, 13.0}, warp, weft);
+    EXPECT_NEAR(warp.x, (light.x + dark.x) / 2.0f, 1e-5f);
+    // The back face: its warp-top cells are the front's others (column 2 of row 0, a light end).
+    const WeaveFarField back(weave, p, true);
+    warp = glm::vec3(0.5f);
+    back.footprintColors({2.2, 0.2}, {2.8, 0.8}, warp, weft);
+    EXPECT_NEAR(warp.x, light.x, 1e-5f);
+}
+
 TEST(WeaveFilter, BlendsToTheExactModel) {
     const WovenParams p = satin();
     const WovenMaterial m(p);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene_materials.h"
+#include "yarn_noise.h"
 
 namespace woven::test {
 
@@ -85,7 +86,8 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
     return glm::normalize(glm::mat3(camera.cameraToWorld) * local);
 }
 
-Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask) {
+Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n, std::vector<uint8_t>* hitMask,
+                         bool jittered) {
     const SceneMaterials materials(scene);
     const Camera& cam = scene.camera;
     const glm::vec3 eye(cam.cameraToWorld[3]);
@@ -102,7 +104,13 @@ Image coreDirectLighting(const SceneDescription& scene, int width, int height, i
             int yarnHits = 0;
             for (int sy = 0; sy < n; ++sy)
                 for (int sx = 0; sx < n; ++sx) {
-                    const glm::vec3 d = cameraRayDirection(cam, px + (sx + 0.5f) / n, py + (sy + 0.5f) / n, width, height);
+                    glm::vec2 at(0.5f);
+                    if (jittered) {
+                        const uint32_t key = ((uint32_t(py) * uint32_t(width) + uint32_t(px)) * uint32_t(n * n) +
+                                              uint32_t(sy * n + sx)) * 2U;
+                        at = glm::vec2(float(hash32(key) >> 8), float(hash32(key + 1U) >> 8)) * 0x1p-24f;
+                    }
+                    const glm::vec3 d = cameraRayDirection(cam, px + (sx + at.x) / n, py + (sy + at.y) / n, width, height);
                     const float t = -eye.y / d.y;
                     const glm::vec3 p = eye + t * d;
                     glm::vec3 L = scene.environment.color;

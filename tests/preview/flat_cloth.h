@@ -32,8 +32,10 @@ glm::vec3 cameraRayDirection(const Camera& camera, float x, float y, int width, 
 // times each light's incident radiance and cosine; rays that miss (or pass where the material
 // lets them through or reflects nothing: an alpha cut-out, a see-through gap) see the
 // environment. `hitMask` (optional) receives 1
-// where every sub-pixel position hits a reflecting point, else 0.
+// where every sub-pixel position hits a reflecting point, else 0. `jittered`: each stratum at a
+// hashed point within it (the same for every run) in place of its centre, so a weave about as
+// fine as the strata shows noise that block means average out, not moire that they keep.
 Image coreDirectLighting(const SceneDescription& scene, int width, int height, int n,
-                         std::vector<uint8_t>* hitMask = nullptr);
+                         std::vector<uint8_t>* hitMask = nullptr, bool jittered = false);
 
 }  // namespace woven::test

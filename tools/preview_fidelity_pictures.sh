@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# docs/results/fidelity/<subject>.png: the pictures of docs/RESULTS.md's table of the preview
+# against core. The harness (test_preview's Shipped/PreviewFidelity cases) writes each case's
+# preview beside core's image at half size; this puts a subject's near, mid and far side by side
+# (the cloth, not the black above it) in 64 colours (ImageMagick, tools/install-deps.sh --tests),
+# about 10 KB a row. About a minute on 2 cores.
+# Usage: tools/preview_fidelity_pictures.sh [test_preview-binary] [out-folder]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+test_preview=${1:-build/tests/preview/test_preview}
+out=${2:-docs/results/fidelity}
+command -v convert >/dev/null || { echo "preview_fidelity_pictures.sh: ImageMagick's convert is missing (tools/install-deps.sh --tests installs it)" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+WOVEN_FIDELITY_PICTURES=$tmp "$test_preview" --gtest_filter='Shipped/PreviewFidelity.*' >"$tmp/log" ||
+    { cat "$tmp/log" >&2; echo "preview_fidelity_pictures.sh: the harness failed (its output above)" >&2; exit 1; }
+mkdir -p "$out"
+for near in "$tmp"/*_near.png; do
+    subject=$(basename "$near" _near.png)
+    convert "$near" "$tmp/${subject}_mid.png" "$tmp/${subject}_far.png" -crop 160x45+0+15 +repage -bordercolor white -border 1x0 +append \
+        -colors 64 "PNG8:$out/$subject.png"
+done
+ls "$out"
