@@ -65,7 +65,9 @@ std::vector<std::string> writeFitReport(const std::string& dir, const std::vecto
         const std::string png = shotPng(i);
         if (!f.render.pixels.empty())
             writePng((fs::path(dir) / png).string(), sideBySide(shots[i].image, f.render), {0.0f, ToneMap::Clamp});
-        text << "\n" << shots[i].path << " (" << png << ": photo left, fit right)\n";
+        text << "\n" << shots[i].path
+             << (f.render.pixels.empty() ? std::string(" (no render of the fit finished within its time: no ") + png + ")\n"
+                                         : " (" + png + ": photo left, fit right)\n");
         for (int g = 0; g < kStatGroupCount; ++g)
             text << "  " << statGroupNames()[size_t(g)] << " error " << f.terms.error[size_t(g)] << "\n";
         if (f.lambertianBlockMeansError >= 0.0)

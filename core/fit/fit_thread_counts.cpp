@@ -13,7 +13,9 @@ double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
 }  // namespace
 
 glm::vec2 Fitter::measurePhotos(glm::vec2 repeat) {
+    const Clock::time_point start = Clock::now();
     repeat = threadCountsFromPhotos(repeat);
+    threadCountSeconds_ = std::chrono::duration<double>(Clock::now() - start).count();
     for (size_t i = 0; i < shots_.size(); ++i) {
         std::vector<glm::dvec2> threads;
         if (photoPeaks_[i].ends) threads.push_back(photoPeaks_[i].ends->frequency);
@@ -59,6 +61,7 @@ bool Fitter::calibrateThreadCounts(WovenParams& p) {
     for (int iteration = 0; iteration < 2; ++iteration) {
         if (stop()) return false;
         const std::vector<Image> images = render(p);
+        if (images.empty()) return false;
         const ThreadPeaks r = threadPeaks(images[0], renderShots_[0].uvPerPixel, kPeakHalfAngle);
         const ThreadPeaks& photo = photoPeaks_[0];
         if (photo.ends && r.ends) p.repeat.x *= float(glm::length(photo.ends->frequency) / glm::length(r.ends->frequency));

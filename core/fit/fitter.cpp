@@ -33,6 +33,8 @@ FitResult Fitter::run() {
     const float shotRs = p.rs;
     stage_ = "thread counts";
     p.repeat = measurePhotos(p.repeat);
+    result_.params = p;  // what stands where no render finishes within the budget
+    compareWithLambertianPlanes();
     p = initialColours(p);
     const bool weaveDone = chooseWeave(p);
     bool calibrated = false;
@@ -45,8 +47,10 @@ FitResult Fitter::run() {
     if (calibrated && !stop()) refined = refine(shotRs);
     polishColours();
     measureThreads();
-    compareWithLambertianPlanes();
     result_.complete = weaveDone && calibrated && refined >= 2 * int(shapeAxes().size()) + 1 && !cancel_;
+    if (!std::isfinite(result_.loss))
+        result_.warnings.push_back("no render finished within the budget: the material is the shot's, with the thread "
+                                   "counts of the photos' spectra");
     return std::move(result_);
 }
 
@@ -57,10 +61,15 @@ FitResult Fitter::lossOf(const WovenParams& p) {
 }
 
 bool Fitter::stop() const {
-    const double t = elapsed();
-    const double polish = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ * kPolishSamples * polishShotRenders() : 0.0;
-    return cancel_.load() || t + polish >= options_.seconds ||
+    const Clock::duration finishing =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(finishingSeconds()));
+    return outOfTime() || Clock::now() + finishing >= deadline_ ||
            (options_.renders > 0 && result_.evaluations >= options_.renders);
+}
+
+double Fitter::finishingSeconds() const {
+    const double perRender = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ : 0.0;
+    return perRender * kPolishSamples * polishShotRenders() + threadCountSeconds_;
 }
 
 void Fitter::progress() {
@@ -80,6 +89,7 @@ std::vector<Image> Fitter::render(const WovenParams& p, const std::vector<bool>&
         if ((!which.empty() && !which[i]) || (rendersLeaveBacklitOut_ && !fitsColours_[i])) continue;
         const Clock::time_point start = Clock::now();
         images[i] = renderShot(renderShots_[i], p, options_.render, cancel_);
+        if (images[i].pixels.empty()) return {};
         renderSeconds_ += std::chrono::duration<double>(Clock::now() - start).count();
         ++shotRenders_;
         applyVignette(images[i], shots_[i].photo.vignetteSigmaPx);
@@ -147,7 +157,7 @@ double Fitter::evaluate(const WovenParams& p, std::vector<Image> images, bool re
 
 double Fitter::evaluate(const WovenParams& p) {
     std::vector<Image> images = render(p);
-    return cancel_.load() ? INFINITY : evaluate(p, std::move(images), true);
+    return images.empty() ? INFINITY : evaluate(p, std::move(images), true);
 }
 
 std::optional<ThreadGrid> Fitter::photoGrid(size_t i) const {

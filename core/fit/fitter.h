@@ -59,6 +59,9 @@ constexpr int kColourSolves = 2;
 // shot (for a flash and a backlit shot) at 4 times the samples cost about 20 of stage 4's, 8 % of
 // the round trips' 250.
 constexpr int kPolishSamples = 4;
+// The longest budget taken as given (about 30 years); a longer --time is as good as endless, and
+// its deadline would overflow the clock.
+constexpr double kLongestBudget = 1e9;
 // A photo's pixel clips where a channel reaches this share of its saturation (8 bits: 255).
 constexpr float kClipped = 0.999f;
 
@@ -66,7 +69,10 @@ class Fitter {
 public:
     Fitter(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
            const std::function<void(const FitProgress&)>& onProgress)
-        : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()) {
+        : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()),
+          deadline_(start_ + std::chrono::duration_cast<Clock::duration>(
+                                 std::chrono::duration<double>(std::clamp(options.seconds, 0.0, kLongestBudget)))) {
+        options_.render.deadline = deadline_;
         result_.shots.resize(shots_.size());
         result_.loss = INFINITY;
         for (const Shot& s : shots_) {
@@ -143,11 +149,19 @@ private:
     // threads lie (a swatch laid a little askew). Returns the thread counts.
     glm::vec2 measurePhotos(glm::vec2 repeat);
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    // The time budget is spent when what is left would only pay for polishColours(): its renders
-    // of a shot at kPolishSamples times the samples, at the mean time one has taken so far.
+    // The search stops when what is left of the budget would only pay for what follows it
+    // (finishingSeconds()), on Ctrl-C, or when the render budget is spent.
     bool stop() const;
+    // What the fit does after the search, at the mean time a render of a shot has taken so far:
+    // polishColours()'s renders at kPolishSamples times the samples, and measureThreads()'s thread
+    // counts, which take about what stage 1's took on the photos.
+    double finishingSeconds() const;
+    // Ctrl-C, or the budget's end: every render under way then stops after its pass and comes
+    // back empty (FitRenderSettings::deadline), and what it was for is dropped.
+    bool outOfTime() const { return cancel_.load() || Clock::now() >= deadline_; }
     void progress();
-    // Each shot `which` names (all where it is empty); the others' images are left empty.
+    // Each shot `which` names (all where it is empty); the others' images are left empty. None
+    // where a render was cut short (outOfTime()): what they were for is dropped.
     std::vector<Image> render(const WovenParams& p, const std::vector<bool>& which = {});
     // The exposure shared by the free shots that `images` holds (renders, vignetted, before
     // exposure): the least-squares scale of their block means, from the reflected shots where
@@ -269,6 +283,8 @@ private:
     // compared by their loss alone. Switching re-evaluates it under the loss that follows, the
     // colours (and where the backlit shots count, the transmission) solved as stage 4 solves them.
     void countBacklitShots(bool counted);
+    // Each reflected shot's best Lambertian plane (ShotFit::lambertianBlockMeansError): it needs
+    // the photos alone, so it is measured before the search, inside the budget.
     void compareWithLambertianPlanes();
     void measureThreads();
 
@@ -278,7 +294,7 @@ private:
     FitOptions options_;
     const std::atomic<bool>& cancel_;
     std::function<void(const FitProgress&)> onProgress_;
-    Clock::time_point start_;
+    Clock::time_point start_, deadline_;
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
     std::vector<std::vector<glm::dvec2>> threadFrequencies_;  // per shot, where its thread peaks are read
@@ -298,6 +314,7 @@ private:
     std::vector<BacklitPhoto> backlitPhotos_;  // where solvesTransmission_
     double renderSeconds_ = 0.0;  // spent in renderShot()
     int shotRenders_ = 0;         // renders of a shot
+    double threadCountSeconds_ = 0.0;  // stage 1's thread counts on the photos
 };
 
 }  // namespace woven

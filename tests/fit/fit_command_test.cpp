@@ -108,8 +108,13 @@ TEST_F(FitCommand, TooShortTimeGivesTheBestFitSoFarWithAWarning) {
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_TRUE(j.contains("pattern"));
     EXPECT_TRUE(j.contains("ends_per_cm"));  // the rig's swatch has UVs of known size
-    EXPECT_TRUE(std::filesystem::exists(file("report/shot_0.png")));
-    EXPECT_TRUE(std::filesystem::exists(file("report/report.txt")));
+    // Whether a render finished before the budget's end depends on the machine: the report says
+    // which, and draws the photo beside the render only where one did.
+    const std::string report = readText(file("report/report.txt"));
+    EXPECT_NE(report.find("shot.json"), std::string::npos) << report;
+    EXPECT_EQ(std::filesystem::exists(file("report/shot_0.png")),
+              report.find("no render of the fit finished within its time") == std::string::npos)
+        << report;
     EXPECT_TRUE(std::filesystem::exists(file("report/loss.csv")));
 }
 
