@@ -2,6 +2,7 @@
 
 #include "photo_model.h"
 #include "shot_render.h"
+#include "target_in_view.h"
 
 namespace woven {
 
@@ -23,6 +24,7 @@ void keepFit(FitResult& best, const WovenParams& p, double exposure, double loss
 }  // namespace
 
 FitResult Fitter::run() {
+    for (const Shot& shot : shots_) checkTargetSeenAndLit(shot, options_.render, cancel_);
     WovenParams p = shots_[0].scene->materials[size_t(shots_[0].materials.at(0))].woven.value_or(WovenParams{});
     p.tile.clear();  // the fit tries (i, j, k) weaves
     p.warp_colors.clear();
