@@ -63,15 +63,10 @@ FitResult Fitter::lossOf(const WovenParams& p) {
 }
 
 bool Fitter::stop() const {
-    const Clock::duration finishing =
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(finishingSeconds()));
-    return outOfTime() || Clock::now() + finishing >= deadline_ ||
+    const double polish = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ * kPolishSamples * polishShotRenders() : 0.0;
+    return outOfTime() ||
+           Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(polish)) >= renderDeadline_ ||
            (options_.renders > 0 && result_.evaluations >= options_.renders);
-}
-
-double Fitter::finishingSeconds() const {
-    const double perRender = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ : 0.0;
-    return perRender * kPolishSamples * polishShotRenders() + threadCountSeconds_;
 }
 
 void Fitter::progress() {

@@ -37,6 +37,9 @@ constexpr double kPeakHalfAngle = 4.0 * M_PI / 180.0;
 // trip moved its warp's fitted red from 4.7 % to 18 % off at a lower loss (0.0074 for 0.0077):
 // those colours are loose in the loss, and any change of the renders moves them.
 constexpr double kLeastTurn = 0.25 * M_PI / 180.0;
+// Two shots' peaks are of the same threads where their frequencies differ by less than this
+// share (twill1's backlit photo shows its cloth 1.15 times larger, docs/FIT.md).
+constexpr double kSameThreads = 0.2;
 // Colour mixtures per shortlisted weave (stage 2), which cost no rendering: enough for BOBYQA to
 // converge on six colours (2n + 1 = 13 set up its model), as the weave whose colours are only
 // half fitted can score worse than a wrong one.
@@ -71,8 +74,9 @@ public:
            const std::function<void(const FitProgress&)>& onProgress)
         : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()),
           deadline_(start_ + std::chrono::duration_cast<Clock::duration>(
-                                 std::chrono::duration<double>(std::clamp(options.seconds, 0.0, kLongestBudget)))) {
-        options_.render.deadline = deadline_;
+                                 std::chrono::duration<double>(std::clamp(options.seconds, 0.0, kLongestBudget)))),
+          renderDeadline_(deadline_) {
+        options_.render.deadline = renderDeadline_;
         result_.shots.resize(shots_.size());
         result_.loss = INFINITY;
         for (const Shot& s : shots_) {
@@ -149,16 +153,13 @@ private:
     // threads lie (a swatch laid a little askew). Returns the thread counts.
     glm::vec2 measurePhotos(glm::vec2 repeat);
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    // The search stops when what is left of the budget would only pay for what follows it
-    // (finishingSeconds()), on Ctrl-C, or when the render budget is spent.
+    // The search stops when what is left of the renders' time would only pay for polishColours()
+    // (its renders at kPolishSamples times the samples, at the mean time a render of a shot has
+    // taken so far), on Ctrl-C, or when the render budget is spent.
     bool stop() const;
-    // What the fit does after the search, at the mean time a render of a shot has taken so far:
-    // polishColours()'s renders at kPolishSamples times the samples, and measureThreads()'s thread
-    // counts, which take about what stage 1's took on the photos.
-    double finishingSeconds() const;
-    // Ctrl-C, or the budget's end: every render under way then stops after its pass and comes
-    // back empty (FitRenderSettings::deadline), and what it was for is dropped.
-    bool outOfTime() const { return cancel_.load() || Clock::now() >= deadline_; }
+    // Ctrl-C, or the renders' time is over: every render under way then stops after its pass and
+    // comes back empty (FitRenderSettings::deadline), and what it was for is dropped.
+    bool outOfTime() const { return cancel_.load() || Clock::now() >= renderDeadline_; }
     void progress();
     // Each shot `which` names (all where it is empty); the others' images are left empty. None
     // where a render was cut short (outOfTime()): what they were for is dropped.
@@ -183,6 +184,10 @@ private:
     void foldPhoto(size_t i, int period);
     // Stage 1: each direction's peak in the first shot that shows one.
     glm::vec2 threadCountsFromPhotos(glm::vec2 repeat);
+    // Stage 1's peaks unfolded where the first shot that shows both directions has a weave's
+    // lattice only at the finer threads the pixel grid folds onto them (thread_fold.h), the
+    // thread counts taken from those.
+    glm::vec2 unfoldThreadCounts(glm::vec2 repeat);
     // Grey yarns scaled so the first shot's mean colour is the photo's.
     WovenParams initialColours(WovenParams p);
     TransmissionParts transmissionParts(WovenParams p);
@@ -294,7 +299,9 @@ private:
     FitOptions options_;
     const std::atomic<bool>& cancel_;
     std::function<void(const FitProgress&)> onProgress_;
-    Clock::time_point start_, deadline_;
+    // The budget's end, and the renders': what stage 1 took before the budget's end, as
+    // measureThreads() counts the threads of the last renders as stage 1 did the photos'.
+    Clock::time_point start_, deadline_, renderDeadline_;
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
     std::vector<std::vector<glm::dvec2>> threadFrequencies_;  // per shot, where its thread peaks are read
@@ -314,7 +321,8 @@ private:
     std::vector<BacklitPhoto> backlitPhotos_;  // where solvesTransmission_
     double renderSeconds_ = 0.0;  // spent in renderShot()
     int shotRenders_ = 0;         // renders of a shot
-    double threadCountSeconds_ = 0.0;  // stage 1's thread counts on the photos
+    // Stage 1 found the ends (picks) folded by the pixel grid: photoPeaks_ hold them unfolded.
+    bool unfoldedEnds_ = false, unfoldedPicks_ = false;
 };
 
 }  // namespace woven
