@@ -17,7 +17,7 @@ double angleDegrees(const glm::dvec2& a, const glm::dvec2& b) {
 glm::vec2 Fitter::measurePhotos(glm::vec2 repeat) {
     const Clock::time_point start = Clock::now();
     repeat = unfoldThreadCounts(threadCountsFromPhotos(repeat));
-    renderDeadline_ = std::max(start_, deadline_ - (Clock::now() - start));
+    renderDeadline_ = std::max(start_, deadline_ - 2 * (Clock::now() - start));
     options_.render.deadline = renderDeadline_;
     for (size_t i = 0; i < shots_.size(); ++i) {
         // The thread peaks' statistic reads each peak's power where the spectrum holds it: folded.

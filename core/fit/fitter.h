@@ -299,8 +299,9 @@ private:
     FitOptions options_;
     const std::atomic<bool>& cancel_;
     std::function<void(const FitProgress&)> onProgress_;
-    // The budget's end, and the renders': what stage 1 took before the budget's end, as
-    // measureThreads() counts the threads of the last renders as stage 1 did the photos'.
+    // The budget's end, and the renders': twice what stage 1 took before the budget's end, as
+    // the last evaluation's statistics (their spectra) and measureThreads() (the last renders'
+    // thread counts) each take about what stage 1 took on the photos.
     Clock::time_point start_, deadline_, renderDeadline_;
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
