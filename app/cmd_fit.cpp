@@ -1,6 +1,7 @@
 // `woven fit SHOT.json ... --target NAME -o FABRIC.json`: the woven material whose renders of the
 // shots have their photographs' statistics (docs/FIT.md).
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -41,6 +42,7 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 }
 
 int runFit(const FitCommand& o) {
+    const auto start = std::chrono::steady_clock::now();  // --time counts from here
     std::vector<Shot> shots;
     for (const std::string& path : o.shots) {
         shots.push_back(loadShot(path, o.target));
@@ -51,7 +53,7 @@ int runFit(const FitCommand& o) {
     if (!o.report.empty()) checkFitReport(o.report, shots.size());
 
     FitOptions options;
-    options.seconds = o.time;
+    options.seconds = o.time - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     options.render.seed = o.seed;
     options.render.spp = o.spp;
     options.render.threads = o.threads;

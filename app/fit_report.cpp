@@ -6,8 +6,11 @@
 #include <sstream>
 
 #include "display_transform.h"
+#include "fit_loss.h"
+#include "image_stats.h"
 #include "output_path.h"
 #include "shell_quote.h"
+#include "twill_direction.h"
 #include "weave_candidates.h"
 
 namespace woven {
@@ -65,12 +68,29 @@ std::vector<std::string> writeFitReport(const std::string& dir, const std::vecto
         const std::string png = shotPng(i);
         if (!f.render.pixels.empty())
             writePng((fs::path(dir) / png).string(), sideBySide(shots[i].image, f.render), {0.0f, ToneMap::Clamp});
-        text << "\n" << shots[i].path << " (" << png << ": photo left, fit right)\n";
+        text << "\n" << shots[i].path
+             << (f.render.pixels.empty() ? std::string(" (no render of the fit finished within its time: no ") + png + ")\n"
+                                         : " (" + png + ": photo left, fit right)\n");
         for (int g = 0; g < kStatGroupCount; ++g)
             text << "  " << statGroupNames()[size_t(g)] << " error " << f.terms.error[size_t(g)] << "\n";
         if (f.lambertianBlockMeansError >= 0.0)
             text << "  block means error of the best Lambertian plane under the same light "
                  << f.lambertianBlockMeansError << " (the fit's above " << f.terms.error[kStatBlockMeans] << ")\n";
+        if (!f.render.pixels.empty()) {
+            // What a person compares first: the mean colour, the shading against a flat image of
+            // that colour, and which way the lines of a twill run.
+            const std::vector<float> photoBlocks = blockMeans(shots[i].image);
+            const glm::dvec3 photoMean = channelMeans(photoBlocks, 1), renderMean = channelMeans(blockMeans(f.render), 1);
+            const glm::dvec3 off = 100.0 * (renderMean - photoMean) / glm::max(photoMean, glm::dvec3(1e-30));
+            text << "  mean colour, photo (" << photoMean.r << ", " << photoMean.g << ", " << photoMean.b << ") render ("
+                 << renderMean.r << ", " << renderMean.g << ", " << renderMean.b << "): " << off.r << ", " << off.g << ", "
+                 << off.b << " % off\n";
+            std::vector<float> flat(photoBlocks.size());
+            for (size_t k = 0; k < flat.size(); ++k) flat[k] = float(photoMean[int(k % 3)]);
+            text << "  block means error of a flat image of the photo's mean colour " << colourError(photoBlocks, flat, 1) << "\n";
+            text << "  twill lines, degrees from x toward y: photo " << twillLineDegrees(shots[i].image) << ", render "
+                 << twillLineDegrees(f.render) << "\n";
+        }
         text << "  thread frequency, cycles per pixel: ends photo " << f.photoFrequency.x << " render "
              << f.renderFrequency.x << ", picks photo " << f.photoFrequency.y << " render " << f.renderFrequency.y << "\n";
         text << "  thread direction, render against photo: ends " << f.directionError.x << " degrees, picks "

@@ -22,7 +22,9 @@
 #include "image_io.h"
 #include "shot.h"
 #include "power_spectrum.h"
+#include "thread_fold.h"
 #include "thread_frequencies.h"
+#include "weave_lattice.h"
 
 namespace {
 
@@ -185,6 +187,22 @@ int main(int argc, char** argv) {
         };
         std::printf("| %s | %s | %s | %.2f |\n", std::filesystem::path(path).filename().c_str(),
                     cell(peaks.ends, image.width).c_str(), cell(peaks.picks, image.height).c_str(), took);
+        if (peaks.ends && peaks.picks) {
+            // The fold (thread_fold.h): each way of unfolding, the best weave's lattice score.
+            const glm::dvec2 e = peaks.ends->frequency.x < 0.0 ? -peaks.ends->frequency : peaks.ends->frequency;
+            const glm::dvec2 p = peaks.picks->frequency.y < 0.0 ? -peaks.picks->frequency : peaks.picks->frequency;
+            const auto score = [&](const glm::dvec2& a, const glm::dvec2& b) {
+                const WeaveLatticeScore best = rankWeavesBySpectrum(image, a, b).front();
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "%.1f (%d, %d, %d)", best.score, best.pattern.x, best.pattern.y, best.pattern.z);
+                return std::string(buf);
+            };
+            const UnfoldedThreads u = unfoldThreads(image, e, p);
+            std::printf("  lattice score as found %s, ends unfolded %s, picks unfolded %s, both %s: threads %.1f x %.1f\n",
+                        score(e, p).c_str(), score(unfolded(e), p).c_str(), score(e, unfolded(p)).c_str(),
+                        score(unfolded(e), unfolded(p)).c_str(), glm::length(u.ends) * image.width,
+                        glm::length(u.picks) * image.height);
+        }
         if (!spectrumDir.empty()) {
             std::vector<float> lum(image.pixels.size());
             for (size_t i = 0; i < lum.size(); ++i) lum[i] = luminance(image.pixels[i]);

@@ -20,6 +20,7 @@ Fitter::TransmissionParts Fitter::transmissionParts(WovenParams p) {
             p.warp_color = {1.0f, 0.5f, 0.5f};
             tau = double(yarnTransmittance(p.weft_color, 1.0f).r);
             const std::vector<Image> images = render(p, backlit);
+            if (images.empty()) return {};
             for (size_t s = 0; s < shots_.size(); ++s)
                 for (int r = 0; r < 3; ++r) {
                     regions[s][size_t(r)] = images[s];
@@ -33,6 +34,7 @@ Fitter::TransmissionParts Fitter::transmissionParts(WovenParams p) {
             for (int r = 0; r < 3; ++r) {
                 std::tie(p.weft_color, p.warp_color) = colourings[size_t(r)];
                 const std::vector<Image> images = render(p, backlit);
+                if (images.empty()) return {};
                 for (size_t s = 0; s < shots_.size(); ++s) regions[s][size_t(r)] = images[s];
             }
         }
@@ -161,10 +163,11 @@ double Fitter::solveWithBacklitShots(WovenParams& p, const WovenParams& entry, c
 
 void Fitter::countBacklitShots(bool counted) {
     rendersLeaveBacklitOut_ = !counted;
-    if (!std::isfinite(result_.loss) || cancel_.load()) return;
-    const WovenParams best = result_.params;
+    if (!std::isfinite(result_.loss) || outOfTime()) return;
+    FitResult before = result_;
     result_.loss = INFINITY;
-    evaluateSolvingColours(best);
+    evaluateSolvingColours(before.params);
+    if (!std::isfinite(result_.loss)) result_ = std::move(before);  // cut short: the best as it was
 }
 
 }  // namespace woven

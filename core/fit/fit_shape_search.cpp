@@ -13,7 +13,7 @@ std::vector<size_t> Fitter::shapeAxes() const {
 
 double Fitter::evaluateSolvingColours(WovenParams p) {
     const ColourBasis basis = colourBasis(p);
-    if (cancel_.load()) return INFINITY;
+    if (basis.empty()) return INFINITY;
     // Where only some exposures are free, the free one is held at its best so far: the
     // colours and the exposure are then a product only in the free shots.
     std::vector<std::optional<double>> exposures;
@@ -64,7 +64,7 @@ double Fitter::evaluateSolvingColours(WovenParams p) {
     std::vector<Image> images = mixture(basis, p);
     if (solvesTransmission_ && !rendersLeaveBacklitOut_) {
         const TransmissionParts parts = transmissionParts(p);
-        if (cancel_.load()) return INFINITY;
+        if (parts.empty()) return INFINITY;
         const ReflectedSolve reflected{photos, exposures, entryStats, colours, entryColours};
         const WovenParams scaled = withRsScaled(p, float(solveWithBacklitShots(p, entry, reflected, parts)));
         images = mixture(basis, p, scaled.rs / p.rs);
@@ -108,16 +108,15 @@ int Fitter::refine(float shotRs) {
 }
 
 void Fitter::polishColours() {
-    if (!std::isfinite(result_.loss) || cancel_.load()) return;
+    if (!std::isfinite(result_.loss) || outOfTime()) return;
     FitResult before = result_;
     const int samples = options_.render.spp;
     options_.render.spp = samples * kPolishSamples;
     result_.loss = INFINITY;
     stage_ = "colours";
-    evaluate(before.params);
-    if (!cancel_.load()) evaluateSolvingColours(before.params);
+    const bool whole = std::isfinite(evaluate(before.params)) && std::isfinite(evaluateSolvingColours(before.params));
     options_.render.spp = samples;
-    if (cancel_.load() || !std::isfinite(result_.loss)) result_ = std::move(before);
+    if (!whole) result_ = std::move(before);
 }
 
 int Fitter::polishShotRenders() const {
@@ -128,8 +127,9 @@ int Fitter::polishShotRenders() const {
 
 void Fitter::compareWithLambertianPlanes() {
     for (size_t i = 0; i < shots_.size(); ++i) {
-        if (shots_[i].backlit || cancel_.load()) continue;
+        if (shots_[i].backlit || outOfTime()) continue;
         Image plane = renderShotLambertian(shots_[i], options_.render, cancel_);
+        if (plane.pixels.empty()) continue;  // the budget's end: not measured
         applyVignette(plane, shots_[i].photo.vignetteSigmaPx);
         const std::vector<float> rendered = blockMeans(plane);
         const std::vector<float>& photo = photoStats_[i].values[kStatBlockMeans];

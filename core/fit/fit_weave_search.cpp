@@ -8,6 +8,7 @@ namespace woven {
 WovenParams Fitter::initialColours(WovenParams p) {
     p.weft_color = p.warp_color = glm::vec3(0.5f);
     const std::vector<Image> images = render(p);
+    if (images.empty()) return p;
     const size_t first = size_t(std::find(fitsColours_.begin(), fitsColours_.end(), true) - fitsColours_.begin());
     glm::dvec3 photo(0.0), rendered(0.0);
     for (const glm::vec3& v : shots_[first].image.pixels) photo += glm::dvec3(v);
@@ -68,6 +69,7 @@ Fitter::ColourBasis Fitter::colourBasis(WovenParams p) {
         p.weft_color = glm::vec3(1.0f, 0.0f, 0.0f);
         p.warp_color = glm::vec3(0.0f, 1.0f, 0.0f);
         const std::vector<Image> images = render(p, fitsColours_);
+        if (images.empty()) return {};
         for (size_t s = 0; s < shots_.size(); ++s) {
             basis[s] = {images[s], images[s], images[s]};
             for (size_t i = 0; i < images[s].pixels.size(); ++i) {
@@ -86,6 +88,7 @@ Fitter::ColourBasis Fitter::colourBasis(WovenParams p) {
     p.weft_color = glm::vec3(0.0f);
     p.warp_color = glm::vec3(1.0f);
     const std::vector<Image> warp = render(p, fitsColours_);
+    if (black.empty() || weft.empty() || warp.empty()) return {};
     for (size_t s = 0; s < shots_.size(); ++s) {
         basis[s] = {weft[s], warp[s], black[s]};
         for (size_t i = 0; i < black[s].pixels.size(); ++i) {
@@ -108,6 +111,7 @@ std::vector<Image> Fitter::mixture(const ColourBasis& basis, const WovenParams& 
 
 void Fitter::fitColours(WovenParams& p) {
     const ColourBasis basis = colourBasis(p);
+    if (basis.empty()) return;
     const Objective objective = [&](const std::vector<double>& x) {
         const WovenParams q = decode(x, p);
         return evaluate(q, mixture(basis, q), false);

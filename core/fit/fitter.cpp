@@ -2,6 +2,7 @@
 
 #include "photo_model.h"
 #include "shot_render.h"
+#include "target_in_view.h"
 
 namespace woven {
 
@@ -23,6 +24,7 @@ void keepFit(FitResult& best, const WovenParams& p, double exposure, double loss
 }  // namespace
 
 FitResult Fitter::run() {
+    for (const Shot& shot : shots_) checkTargetSeenAndLit(shot, options_.render, cancel_);
     WovenParams p = shots_[0].scene->materials[size_t(shots_[0].materials.at(0))].woven.value_or(WovenParams{});
     p.tile.clear();  // the fit tries (i, j, k) weaves
     p.warp_colors.clear();
@@ -33,6 +35,8 @@ FitResult Fitter::run() {
     const float shotRs = p.rs;
     stage_ = "thread counts";
     p.repeat = measurePhotos(p.repeat);
+    result_.params = p;  // what stands where no render finishes within the budget
+    compareWithLambertianPlanes();
     p = initialColours(p);
     const bool weaveDone = chooseWeave(p);
     bool calibrated = false;
@@ -45,8 +49,10 @@ FitResult Fitter::run() {
     if (calibrated && !stop()) refined = refine(shotRs);
     polishColours();
     measureThreads();
-    compareWithLambertianPlanes();
     result_.complete = weaveDone && calibrated && refined >= 2 * int(shapeAxes().size()) + 1 && !cancel_;
+    if (!std::isfinite(result_.loss))
+        result_.warnings.push_back("no render finished within the budget: the material is the shot's, with the thread "
+                                   "counts of the photos' spectra");
     return std::move(result_);
 }
 
@@ -57,9 +63,9 @@ FitResult Fitter::lossOf(const WovenParams& p) {
 }
 
 bool Fitter::stop() const {
-    const double t = elapsed();
     const double polish = shotRenders_ > 0 ? renderSeconds_ / shotRenders_ * kPolishSamples * polishShotRenders() : 0.0;
-    return cancel_.load() || t + polish >= options_.seconds ||
+    return outOfTime() ||
+           Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(polish)) >= renderDeadline_ ||
            (options_.renders > 0 && result_.evaluations >= options_.renders);
 }
 
@@ -80,6 +86,7 @@ std::vector<Image> Fitter::render(const WovenParams& p, const std::vector<bool>&
         if ((!which.empty() && !which[i]) || (rendersLeaveBacklitOut_ && !fitsColours_[i])) continue;
         const Clock::time_point start = Clock::now();
         images[i] = renderShot(renderShots_[i], p, options_.render, cancel_);
+        if (images[i].pixels.empty()) return {};
         renderSeconds_ += std::chrono::duration<double>(Clock::now() - start).count();
         ++shotRenders_;
         applyVignette(images[i], shots_[i].photo.vignetteSigmaPx);
@@ -147,7 +154,7 @@ double Fitter::evaluate(const WovenParams& p, std::vector<Image> images, bool re
 
 double Fitter::evaluate(const WovenParams& p) {
     std::vector<Image> images = render(p);
-    return cancel_.load() ? INFINITY : evaluate(p, std::move(images), true);
+    return images.empty() ? INFINITY : evaluate(p, std::move(images), true);
 }
 
 std::optional<ThreadGrid> Fitter::photoGrid(size_t i) const {

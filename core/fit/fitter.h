@@ -37,6 +37,9 @@ constexpr double kPeakHalfAngle = 4.0 * M_PI / 180.0;
 // trip moved its warp's fitted red from 4.7 % to 18 % off at a lower loss (0.0074 for 0.0077):
 // those colours are loose in the loss, and any change of the renders moves them.
 constexpr double kLeastTurn = 0.25 * M_PI / 180.0;
+// Two shots' peaks are of the same threads where their frequencies differ by less than this
+// share (twill1's backlit photo shows its cloth 1.15 times larger, docs/FIT.md).
+constexpr double kSameThreads = 0.2;
 // Colour mixtures per shortlisted weave (stage 2), which cost no rendering: enough for BOBYQA to
 // converge on six colours (2n + 1 = 13 set up its model), as the weave whose colours are only
 // half fitted can score worse than a wrong one.
@@ -59,6 +62,9 @@ constexpr int kColourSolves = 2;
 // shot (for a flash and a backlit shot) at 4 times the samples cost about 20 of stage 4's, 8 % of
 // the round trips' 250.
 constexpr int kPolishSamples = 4;
+// The longest budget taken as given (about 30 years); a longer --time is as good as endless, and
+// its deadline would overflow the clock.
+constexpr double kLongestBudget = 1e9;
 // A photo's pixel clips where a channel reaches this share of its saturation (8 bits: 255).
 constexpr float kClipped = 0.999f;
 
@@ -66,7 +72,11 @@ class Fitter {
 public:
     Fitter(const std::vector<Shot>& shots, const FitOptions& options, const std::atomic<bool>& cancel,
            const std::function<void(const FitProgress&)>& onProgress)
-        : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()) {
+        : shots_(shots), options_(options), cancel_(cancel), onProgress_(onProgress), start_(Clock::now()),
+          deadline_(start_ + std::chrono::duration_cast<Clock::duration>(
+                                 std::chrono::duration<double>(std::clamp(options.seconds, 0.0, kLongestBudget)))),
+          renderDeadline_(deadline_) {
+        options_.render.deadline = renderDeadline_;
         result_.shots.resize(shots_.size());
         result_.loss = INFINITY;
         for (const Shot& s : shots_) {
@@ -143,11 +153,16 @@ private:
     // threads lie (a swatch laid a little askew). Returns the thread counts.
     glm::vec2 measurePhotos(glm::vec2 repeat);
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    // The time budget is spent when what is left would only pay for polishColours(): its renders
-    // of a shot at kPolishSamples times the samples, at the mean time one has taken so far.
+    // The search stops when what is left of the renders' time would only pay for polishColours()
+    // (its renders at kPolishSamples times the samples, at the mean time a render of a shot has
+    // taken so far), on Ctrl-C, or when the render budget is spent.
     bool stop() const;
+    // Ctrl-C, or the renders' time is over: every render under way then stops after its pass and
+    // comes back empty (FitRenderSettings::deadline), and what it was for is dropped.
+    bool outOfTime() const { return cancel_.load() || Clock::now() >= renderDeadline_; }
     void progress();
-    // Each shot `which` names (all where it is empty); the others' images are left empty.
+    // Each shot `which` names (all where it is empty); the others' images are left empty. None
+    // where a render was cut short (outOfTime()): what they were for is dropped.
     std::vector<Image> render(const WovenParams& p, const std::vector<bool>& which = {});
     // The exposure shared by the free shots that `images` holds (renders, vignetted, before
     // exposure): the least-squares scale of their block means, from the reflected shots where
@@ -169,6 +184,10 @@ private:
     void foldPhoto(size_t i, int period);
     // Stage 1: each direction's peak in the first shot that shows one.
     glm::vec2 threadCountsFromPhotos(glm::vec2 repeat);
+    // Stage 1's peaks unfolded where the first shot that shows both directions has a weave's
+    // lattice only at the finer threads the pixel grid folds onto them (thread_fold.h), the
+    // thread counts taken from those.
+    glm::vec2 unfoldThreadCounts(glm::vec2 repeat);
     // Grey yarns scaled so the first shot's mean colour is the photo's.
     WovenParams initialColours(WovenParams p);
     TransmissionParts transmissionParts(WovenParams p);
@@ -269,6 +288,8 @@ private:
     // compared by their loss alone. Switching re-evaluates it under the loss that follows, the
     // colours (and where the backlit shots count, the transmission) solved as stage 4 solves them.
     void countBacklitShots(bool counted);
+    // Each reflected shot's best Lambertian plane (ShotFit::lambertianBlockMeansError): it needs
+    // the photos alone, so it is measured before the search, inside the budget.
     void compareWithLambertianPlanes();
     void measureThreads();
 
@@ -278,7 +299,10 @@ private:
     FitOptions options_;
     const std::atomic<bool>& cancel_;
     std::function<void(const FitProgress&)> onProgress_;
-    Clock::time_point start_;
+    // The budget's end, and the renders': twice what stage 1 took before the budget's end, as
+    // the last evaluation's statistics (their spectra) and measureThreads() (the last renders'
+    // thread counts) each take about what stage 1 took on the photos.
+    Clock::time_point start_, deadline_, renderDeadline_;
     std::vector<ImageStats> photoStats_;
     std::vector<ThreadPeaks> photoPeaks_;
     std::vector<std::vector<glm::dvec2>> threadFrequencies_;  // per shot, where its thread peaks are read
@@ -298,6 +322,8 @@ private:
     std::vector<BacklitPhoto> backlitPhotos_;  // where solvesTransmission_
     double renderSeconds_ = 0.0;  // spent in renderShot()
     int shotRenders_ = 0;         // renders of a shot
+    // Stage 1 found the ends (picks) folded by the pixel grid: photoPeaks_ hold them unfolded.
+    bool unfoldedEnds_ = false, unfoldedPicks_ = false;
 };
 
 }  // namespace woven

@@ -1,14 +1,9 @@
 #include "shot_render.h"
 
-#include <functional>
-
 namespace woven {
 
-namespace {
-
-// The shot rendered with each target material as `set` makes it.
-Image renderWith(const Shot& shot, const std::function<void(Material&)>& set, const FitRenderSettings& fit,
-                 const std::atomic<bool>& cancel) {
+Image renderShotWith(const Shot& shot, const std::function<void(Material&)>& set, const FitRenderSettings& fit,
+                     const std::atomic<bool>& cancel) {
     auto scene = std::make_shared<SceneDescription>(*shot.scene);
     for (int m : shot.materials) set(scene->materials[size_t(m)]);
     RenderSettings settings = defaultRenderSettings(*scene);
@@ -19,20 +14,26 @@ Image renderWith(const Shot& shot, const std::function<void(Material&)>& set, co
     settings.noiseThreshold = 0.0;
     settings.integrator = "path";
     settings.renderPasses = false;
+    if (fit.deadline != std::chrono::steady_clock::time_point::max()) {
+        // RenderSettings::timeLimit ends the render after the pass that crosses it; a deadline
+        // already passed still lets the first pass run, and is then cut there.
+        const double left = std::chrono::duration<double>(fit.deadline - std::chrono::steady_clock::now()).count();
+        settings.timeLimit = std::max(left, 1e-9);
+    }
     RenderJob job(scene, settings);
     job.run(cancel);
-    return job.snapshot().radiance;
+    FilmImage frame = job.snapshot();
+    if (frame.samples.count < fit.spp) return {};
+    return std::move(frame.radiance);
 }
-
-}  // namespace
 
 Image renderShot(const Shot& shot, const WovenParams& params, const FitRenderSettings& fit,
                  const std::atomic<bool>& cancel) {
-    return renderWith(shot, [&](Material& m) { m.woven = params; }, fit, cancel);
+    return renderShotWith(shot, [&](Material& m) { m.woven = params; }, fit, cancel);
 }
 
 Image renderShotLambertian(const Shot& shot, const FitRenderSettings& fit, const std::atomic<bool>& cancel) {
-    return renderWith(
+    return renderShotWith(
         shot,
         [](Material& m) {
             Material plane;

@@ -4,7 +4,9 @@
 // swatch under a point light bounces no light onto itself) and a fixed seed, so that the loss is
 // a deterministic function of the parameters.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <functional>
 
 #include "render_job.h"
 #include "shot.h"
@@ -15,10 +17,19 @@ struct FitRenderSettings {
     int spp = 4;
     uint64_t seed = 1;
     int threads = 0;  // 0: all cores
+    // The render stops after the pass (one sample per pixel) that crosses it and then returns no
+    // image, as one with fewer samples than the others is not comparable: how a fit keeps its
+    // time budget (fitter.h).
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
+// The shot rendered with each of its target's materials as `set` makes it. An empty image where
+// `cancel` or the deadline cut it short.
+Image renderShotWith(const Shot& shot, const std::function<void(Material&)>& set, const FitRenderSettings& settings,
+                     const std::atomic<bool>& cancel);
+
 // The raw render: no vignette or exposure (photo_model.h applies them). Every material the shot's
-// target makes woven takes `params`.
+// target makes woven takes `params`. An empty image where `cancel` or the deadline cut it short.
 Image renderShot(const Shot& shot, const WovenParams& params, const FitRenderSettings& settings,
                  const std::atomic<bool>& cancel);
 
