@@ -14,6 +14,8 @@ import pathlib
 import re
 import sys
 
+from product_checks import report, self_test_result, usage
+
 
 def blank_non_code(text):
     """The text with comments, literals and preprocessor lines replaced by spaces, newlines kept."""
@@ -136,19 +138,14 @@ def self_test():
         (long_functions("class A {\npublic:\n    void f() {\n" + "    int x;\n" * 100 + "    }\n};\n", 100), [("f", 3, 102)]),
         (long_functions("A::A(int x)\n    : x_(x) {\n" + "    x_ += 1;\n" * 99 + "}\n", 100), [("A::A", 1, 102)]),
     ]
-    failed = [(got, want) for got, want in checks if got != want]
-    for got, want in failed:
-        print(f"scanner self-test: found {got}, expected {want}")
-    print("scanner self-test: " + ("failed" if failed else f"all {len(checks)} checks pass"))
-    return 1 if failed else 0
+    return self_test_result("scanner", checks)
 
 
 def main(argv):
     if argv[1:] == ["--self-test"]:
         return self_test()
     if len(argv) != 3:
-        print(__doc__.split("\n\n")[0], file=sys.stderr)
-        return 2
+        return usage(__doc__)
     root, limit = pathlib.Path(argv[1]), int(argv[2])
     over = []
     for folder in ("core", "app"):
@@ -156,12 +153,8 @@ def main(argv):
             if path.suffix in (".cpp", ".h") and path.is_file():
                 for name, line, lines in long_functions(path.read_text(encoding="utf-8", errors="replace"), limit):
                     over.append(f"  {path.relative_to(root)}:{line}: {name}, {lines} lines")
-    if over:
-        print(f"product functions over {limit} lines (split each into its steps):")
-        print("\n".join(over))
-        return 1
-    print(f"no product function over {limit} lines")
-    return 0
+    return report(over, f"product functions over {limit} lines (split each into its steps):",
+                  f"no product function over {limit} lines")
 
 
 if __name__ == "__main__":

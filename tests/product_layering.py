@@ -12,6 +12,8 @@ import re
 import sys
 import tempfile
 
+from product_checks import report, self_test_result, usage
+
 
 def layers(root):
     """The product's folders, relative to root, lowest layer first."""
@@ -69,26 +71,17 @@ def self_test():
         (root / "core/high/high.cpp").write_text('#include "main_options.h"\n#include "options.h"\n')
         checks.append((upward_includes(root), ["  core/high/high.cpp:2: includes options.h (app/options) from core/high",
                                                "  core/low/low.cpp:3: includes high.h (core/high) from core/low"]))
-    failed = [(got, want) for got, want in checks if sorted(got) != sorted(want)]
-    for got, want in failed:
-        print(f"layering self-test: found {got}, expected {want}")
-    print("layering self-test: " + ("failed" if failed else f"all {len(checks)} checks pass"))
-    return 1 if failed else 0
+    return self_test_result("layering", [(sorted(got), sorted(want)) for got, want in checks])
 
 
 def main(argv):
     if argv[1:] == ["--self-test"]:
         return self_test()
     if len(argv) != 2:
-        print(__doc__.split("\n\n")[0], file=sys.stderr)
-        return 2
-    problems = upward_includes(pathlib.Path(argv[1]))
-    if problems:
-        print("product files that include a higher layer's header (the layers: core/CMakeLists.txt, then app/):")
-        print("\n".join(problems))
-        return 1
-    print("no product file includes a higher layer's header")
-    return 0
+        return usage(__doc__)
+    return report(upward_includes(pathlib.Path(argv[1])),
+                  "product files that include a higher layer's header (the layers: core/CMakeLists.txt, then app/):",
+                  "no product file includes a higher layer's header")
 
 
 if __name__ == "__main__":
