@@ -101,6 +101,51 @@ struct Planes {
     PaddedPlanes irradiance, variance, divisor, usable;
 };
 
+// The pixels xa <= x < xb of rows y0 <= y < y1, filtered together, and what Filter::tile gathers
+// for them over the window's neighbours.
+struct Tile {
+    int xa, y0, xb, y1;
+    int th, tw, patchRows, patchCols;  // the tile's size, and its patches' pixels' (f beyond it)
+    float patchNorm;                   // 1 / the count of a patch's terms: D_c is their mean
+    // The planes' first floats: u the irradiance, v its variance, the albedo divisors, and 1 or 0
+    // where the pixel is usable or not.
+    const float *u[3], *v[3], *divisor[3], *usable;
+    // Per row of the patches' pixels, D_c's terms with k_c^2 left out, and their sums over the
+    // width of a patch.
+    std::vector<float> distance, horizontal;
+    // Per channel over the patches' pixels, (u_p - u_q) / (eps + Var_p + Var_q): half the slope of
+    // each pixel's term of D_c in u_p.
+    std::array<std::vector<float>, 3> halfSlope;
+    // Of one row of the tile: the patch distances, the feature distances, one candidate's weight
+    // distances, the terms the candidates share, and accumulate()'s gains and scratch.
+    std::vector<float> patch, features, candidateDistance;
+    RowTerms row;
+    std::vector<float> gain, weightScratch, weightedGain;
+    std::vector<CandidateSums> sums;               // each candidate filter's
+    std::optional<FeatureRegression::Sums> fitSums;  // the regression's, where it is a candidate
+
+    Tile(int xa_, int y0_, int xb_, int y1_, int f, const Planes& planes, size_t candidates, bool regression)
+        : xa(xa_), y0(y0_), xb(xb_), y1(y1_), th(y1 - y0), tw(xb - xa), patchRows(th + 2 * f), patchCols(tw + 2 * f),
+          patchNorm(1.0f / float((2 * f + 1) * (2 * f + 1) * 3)),
+          u{planes.irradiance.plane(0), planes.irradiance.plane(1), planes.irradiance.plane(2)},
+          v{planes.variance.plane(0), planes.variance.plane(1), planes.variance.plane(2)},
+          divisor{planes.divisor.plane(0), planes.divisor.plane(1), planes.divisor.plane(2)},
+          usable(planes.usable.plane(0)), distance(size_t(patchRows) * patchCols), horizontal(size_t(patchRows) * tw),
+          patch(tw), features(tw), candidateDistance(tw), row(static_cast<size_t>(tw)), gain(static_cast<size_t>(tw)),
+          weightScratch(static_cast<size_t>(tw)), weightedGain(static_cast<size_t>(tw)),
+          sums(candidates, CandidateSums(size_t(th) * tw)) {
+        for (auto& plane : halfSlope) plane.resize(distance.size());
+        if (regression) fitSums.emplace(size_t(th) * tw);
+    }
+};
+
+// One row of a tile against the neighbours q = p + offset inside the frame: count pixels from
+// frame pixel x0 of the tile's row t, at padded index p and index a of the tile's sums.
+struct RowSpan {
+    int t, x0, count;
+    size_t p, a;
+};
+
 class Filter {
 public:
     Filter(const DenoiseBuffers& b, const DenoiseSettings& s)
@@ -123,6 +168,16 @@ public:
     void tile(int xa, int y0, int xb, int y1, Candidates& out) const;
 
 private:
+    // The steps of tile(), in its order. Each is inlined into tile()'s clones (vector_clones.h)
+    // so that its arithmetic is compiled, FMA contractions included, as one function's: the
+    // denoised frames stay the same to the bit.
+    inline __attribute__((always_inline)) void patchTerms(Tile& tile, ptrdiff_t offset) const;
+    inline __attribute__((always_inline)) void patchDistances(Tile& tile, const RowSpan& span) const;
+    inline __attribute__((always_inline)) void rowTerms(Tile& tile, const RowSpan& span, int dx, int dy, ptrdiff_t offset) const;
+    inline __attribute__((always_inline)) void addWeights(Tile& tile, const RowSpan& span, ptrdiff_t offset) const;
+    inline __attribute__((always_inline)) void filtered(const Tile& tile, Candidates& out) const;
+    inline __attribute__((always_inline)) void regressed(const Tile& tile, Candidates& out) const;
+
     const DenoiseBuffers& b_;
     const DenoiseSettings& s_;
     int pad_;
@@ -131,127 +186,114 @@ private:
     std::optional<FeatureRegression> regression_;
 };
 
-WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates& out) const {
-    const int w = b_.width, h = b_.height, f = s_.patchRadius, r = s_.radius;
-    const int th = y1 - y0, tw = xb - xa, patchRows = th + 2 * f, patchCols = tw + 2 * f;
-    const float alpha = s_.alpha, patchNorm = 1.0f / float((2 * f + 1) * (2 * f + 1) * 3);
-    const size_t candidates = s_.candidateK.size();
-    std::vector<float> inverseK2;
-    for (float k : s_.candidateK) inverseK2.push_back(1.0f / (k * k));
-    const ptrdiff_t stride = planes_.irradiance.stride();
-    std::vector<float> distance(size_t(patchRows) * patchCols), horizontal(size_t(patchRows) * tw), patch(tw), features(tw),
-        candidateDistance(tw);
-    std::vector<CandidateSums> sums(candidates, CandidateSums(size_t(th) * tw));
-    std::optional<FeatureRegression::Sums> fitSums;
-    if (regression_) fitSums.emplace(size_t(th) * tw);
-    const float fitInverseK2 = 1.0f / (s_.regressionK * s_.regressionK);
-    // Per channel over the patches' pixels, (u_p - u_q) / (eps + Var_p + Var_q): half the slope of
-    // each pixel's term of D_c in u_p.
-    std::array<std::vector<float>, 3> halfSlope;
-    for (auto& plane : halfSlope) plane.resize(distance.size());
-    RowTerms row(static_cast<size_t>(tw));
-    std::vector<float> gain(static_cast<size_t>(tw)), weightScratch(static_cast<size_t>(tw)),
-        weightedGain(static_cast<size_t>(tw));
-    const float* u[3] = {planes_.irradiance.plane(0), planes_.irradiance.plane(1), planes_.irradiance.plane(2)};
-    const float* v[3] = {planes_.variance.plane(0), planes_.variance.plane(1), planes_.variance.plane(2)};
-    const float* usable = planes_.usable.plane(0);
-    const float* divisor[3] = {planes_.divisor.plane(0), planes_.divisor.plane(1), planes_.divisor.plane(2)};
-
-    for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
-            if (dx == 0 && dy == 0) continue;
-            const ptrdiff_t offset = dy * stride + dx;
-            // D_c's terms at every pixel of the patches, the frame's edge repeated beyond it, with
-            // k_c^2 left out: the candidates differ only in it and share the rest.
-            for (int j = 0; j < patchRows; ++j) {
-                const size_t p = planes_.irradiance.index(xa - f, y0 - f + j);
-                float* d = &distance[size_t(j) * patchCols];
-                std::fill(d, d + patchCols, 0.0f);
-                for (int c = 0; c < 3; ++c) {
-                    const float* uc = u[c] + p;
-                    const float* vc = v[c] + p;
-                    float* hs = &halfSlope[size_t(c)][size_t(j) * patchCols];
-                    for (int i = 0; i < patchCols; ++i) {
-                        const float vp = vc[i], vq = vc[i + offset], diff = uc[i] - uc[i + offset];
-                        const float inverse = 1.0f / (kEpsilon + vp + vq);
-                        d[i] += (diff * diff - alpha * (vp + std::min(vp, vq))) * inverse;
-                        hs[i] = diff * inverse;
-                    }
-                }
-                // Column by column of the patch, each a loop over the row that vectorises (the
-                // same additions in the same order as a sum per pixel).
-                float* hz = &horizontal[size_t(j) * tw];
-                std::fill(hz, hz + tw, 0.0f);
-                for (int t = 0; t <= 2 * f; ++t)
-                    for (int x = 0; x < tw; ++x) hz[x] += d[x + t];
-            }
-            // Only neighbours inside the frame are averaged in.
-            const int x0 = std::max(xa, -dx), x1 = std::min(xb, w - dx);
-            for (int t = 0; t < th; ++t) {
-                const int y = y0 + t;
-                if (y + dy < 0 || y + dy >= h || x1 <= x0) continue;
-                const size_t p = planes_.irradiance.index(x0, y);
-                const int count = x1 - x0;
-                // The patch distance, then each candidate's weight, each in a loop of its own that
-                // vectorises.
-                float* const dist = patch.data();
-                std::fill(dist, dist + count, 0.0f);
-                for (int j = 0; j <= 2 * f; ++j) {
-                    const float* hz = &horizontal[size_t(t + j) * tw + (x0 - xa)];
-                    for (int i = 0; i < count; ++i) dist[i] += hz[i];
-                }
-                for (int i = 0; i < count; ++i) dist[i] = dist[i] * patchNorm;
-                // The slope of D_c (k_c^2 left out) in p's own colour, per channel: p is the centre
-                // of its patch, and where q is within a patch of p, p is in q's patch too, at the
-                // place of p - (q - p) in p's, where the pair is (p - offset, p).
-                const bool inPatch = std::abs(dx) <= f && std::abs(dy) <= f;
-                const size_t centre = size_t(t + f) * patchCols + size_t(x0 - xa + f);
-                const ptrdiff_t mirrored = -ptrdiff_t(dy) * patchCols - dx;
-                float* const vsd = row.varianceSlopeDifference.data();
-                std::fill(vsd, vsd + count, 0.0f);
-                for (int c = 0; c < 3; ++c) {
-                    const float* uc = u[c] + p;
-                    const float* vc = v[c] + p;
-                    const float* dc = divisor[c] + p;
-                    const float* hs = &halfSlope[size_t(c)][centre];
-                    float* slope = row.slope[size_t(c)].data();
-                    for (int i = 0; i < count; ++i) slope[i] = 2.0f * patchNorm * hs[i];
-                    if (inPatch)
-                        for (int i = 0; i < count; ++i) slope[i] -= 2.0f * patchNorm * hs[i + mirrored];
-                    for (int i = 0; i < count; ++i) vsd[i] += dc[i] * dc[i] * vc[i] * slope[i] * (uc[i + offset] - uc[i]);
-                }
-                guide_.distances(p, offset, count, features.data());
-                const size_t a = size_t(t) * tw + (x0 - xa);
-                const float* uRow[3] = {u[0] + p, u[1] + p, u[2] + p};
-                for (size_t k = 0; k < candidates; ++k) {
-                    float* const weightDistance = candidateDistance.data();
-                    for (int i = 0; i < count; ++i) {
-                        const float colour = dist[i] * inverseK2[k];
-                        weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, colour), features[size_t(i)]));
-                        // The colour term decides the weight, so the weight moves with p's colour.
-                        gain[size_t(i)] = colour > 0.0f && colour >= features[size_t(i)] && colour < 80.0f ? inverseK2[k] : 0.0f;
-                    }
-                    accumulate(count, weightDistance, gain.data(), usable + p + offset, uRow, offset, row, sums[k], a,
-                               weightScratch.data(), weightedGain.data());
-                }
-                if (regression_) {
-                    float* const weightDistance = candidateDistance.data();
-                    for (int i = 0; i < count; ++i)
-                        weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, dist[i] * fitInverseK2), features[size_t(i)]));
-                    weights(count, weightDistance, usable + p + offset, weightScratch.data());
-                    regression_->accumulate(p, offset, count, weightScratch.data(), uRow, *fitSums, a);
-                }
+// D_c's terms at every pixel of the tile's patches against q = p + offset, the frame's edge
+// repeated beyond it, with k_c^2 left out (the candidates differ only in it and share the rest),
+// their half slopes, and their sums over a patch's width.
+void Filter::patchTerms(Tile& tile, ptrdiff_t offset) const {
+    const int f = s_.patchRadius, tw = tile.tw, patchCols = tile.patchCols;
+    const float alpha = s_.alpha;
+    for (int j = 0; j < tile.patchRows; ++j) {
+        const size_t p = planes_.irradiance.index(tile.xa - f, tile.y0 - f + j);
+        float* d = &tile.distance[size_t(j) * patchCols];
+        std::fill(d, d + patchCols, 0.0f);
+        for (int c = 0; c < 3; ++c) {
+            const float* uc = tile.u[c] + p;
+            const float* vc = tile.v[c] + p;
+            float* hs = &tile.halfSlope[size_t(c)][size_t(j) * patchCols];
+            for (int i = 0; i < patchCols; ++i) {
+                const float vp = vc[i], vq = vc[i + offset], diff = uc[i] - uc[i + offset];
+                const float inverse = 1.0f / (kEpsilon + vp + vq);
+                d[i] += (diff * diff - alpha * (vp + std::min(vp, vq))) * inverse;
+                hs[i] = diff * inverse;
             }
         }
-    // Each candidate: the colour plus the weighted mean of the neighbours' differences,
-    // remodulated (a pixel whose neighbours all equal it is returned exactly), and its SURE.
-    for (size_t k = 0; k < candidates; ++k)
-        for (int t = 0; t < th; ++t)
+        // Column by column of the patch, each a loop over the row that vectorises (the
+        // same additions in the same order as a sum per pixel).
+        float* hz = &tile.horizontal[size_t(j) * tw];
+        std::fill(hz, hz + tw, 0.0f);
+        for (int t = 0; t <= 2 * f; ++t)
+            for (int x = 0; x < tw; ++x) hz[x] += d[x + t];
+    }
+}
+
+// The patch distance of each pixel of the span (in tile.patch), in a loop that vectorises.
+void Filter::patchDistances(Tile& tile, const RowSpan& span) const {
+    const int f = s_.patchRadius, count = span.count;
+    const float patchNorm = tile.patchNorm;
+    float* const dist = tile.patch.data();
+    std::fill(dist, dist + count, 0.0f);
+    for (int j = 0; j <= 2 * f; ++j) {
+        const float* hz = &tile.horizontal[size_t(span.t + j) * tile.tw + (span.x0 - tile.xa)];
+        for (int i = 0; i < count; ++i) dist[i] += hz[i];
+    }
+    for (int i = 0; i < count; ++i) dist[i] = dist[i] * patchNorm;
+}
+
+// The slope of D_c (k_c^2 left out) in p's own colour, per channel, and what the candidates share
+// of it (tile.row): p is the centre of its patch, and where q is within a patch of p, p is in q's
+// patch too, at the place of p - (q - p) in p's, where the pair is (p - offset, p).
+void Filter::rowTerms(Tile& tile, const RowSpan& span, int dx, int dy, ptrdiff_t offset) const {
+    const int f = s_.patchRadius, count = span.count;
+    const float patchNorm = tile.patchNorm;
+    const bool inPatch = std::abs(dx) <= f && std::abs(dy) <= f;
+    const size_t centre = size_t(span.t + f) * tile.patchCols + size_t(span.x0 - tile.xa + f);
+    const ptrdiff_t mirrored = -ptrdiff_t(dy) * tile.patchCols - dx;
+    float* const vsd = tile.row.varianceSlopeDifference.data();
+    std::fill(vsd, vsd + count, 0.0f);
+    for (int c = 0; c < 3; ++c) {
+        const float* uc = tile.u[c] + span.p;
+        const float* vc = tile.v[c] + span.p;
+        const float* dc = tile.divisor[c] + span.p;
+        const float* hs = &tile.halfSlope[size_t(c)][centre];
+        float* slope = tile.row.slope[size_t(c)].data();
+        for (int i = 0; i < count; ++i) slope[i] = 2.0f * patchNorm * hs[i];
+        if (inPatch)
+            for (int i = 0; i < count; ++i) slope[i] -= 2.0f * patchNorm * hs[i + mirrored];
+        for (int i = 0; i < count; ++i) vsd[i] += dc[i] * dc[i] * vc[i] * slope[i] * (uc[i + offset] - uc[i]);
+    }
+}
+
+// Each candidate's weights of the span's neighbours, from the patch and feature distances, added
+// to its sums; the regression's too, where it is a candidate.
+void Filter::addWeights(Tile& tile, const RowSpan& span, ptrdiff_t offset) const {
+    const int count = span.count;
+    const float* const dist = tile.patch.data();
+    const float* const features = tile.features.data();
+    const float* uRow[3] = {tile.u[0] + span.p, tile.u[1] + span.p, tile.u[2] + span.p};
+    float* const weightDistance = tile.candidateDistance.data();
+    for (size_t k = 0; k < s_.candidateK.size(); ++k) {
+        const float inverseK2 = 1.0f / (s_.candidateK[k] * s_.candidateK[k]);
+        for (int i = 0; i < count; ++i) {
+            const float colour = dist[i] * inverseK2;
+            weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, colour), features[size_t(i)]));
+            // The colour term decides the weight, so the weight moves with p's colour.
+            tile.gain[size_t(i)] = colour > 0.0f && colour >= features[size_t(i)] && colour < 80.0f ? inverseK2 : 0.0f;
+        }
+        accumulate(count, weightDistance, tile.gain.data(), tile.usable + span.p + offset, uRow, offset, tile.row, tile.sums[k],
+                   span.a, tile.weightScratch.data(), tile.weightedGain.data());
+    }
+    if (regression_) {
+        const float fitInverseK2 = 1.0f / (s_.regressionK * s_.regressionK);
+        for (int i = 0; i < count; ++i)
+            weightDistance[i] = std::min(80.0f, std::max(std::max(0.0f, dist[i] * fitInverseK2), features[size_t(i)]));
+        weights(count, weightDistance, tile.usable + span.p + offset, tile.weightScratch.data());
+        regression_->accumulate(span.p, offset, count, tile.weightScratch.data(), uRow, *tile.fitSums, span.a);
+    }
+}
+
+// Each candidate filter's frame: the colour plus the weighted mean of the neighbours'
+// differences, remodulated (a pixel whose neighbours all equal it is returned exactly), and its
+// SURE.
+void Filter::filtered(const Tile& tile, Candidates& out) const {
+    const int w = b_.width, xa = tile.xa, xb = tile.xb, y0 = tile.y0, tw = tile.tw;
+    const float *const *v = tile.v, *const *divisor = tile.divisor, *usable = tile.usable;
+    for (size_t k = 0; k < s_.candidateK.size(); ++k)
+        for (int t = 0; t < tile.th; ++t)
             for (int x = xa; x < xb; ++x) {
                 const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * tw + (x - xa);
                 glm::vec3 c = b_.color[i];
                 float risk = 0.0f;
-                const CandidateSums& sum = sums[k];
+                const CandidateSums& sum = tile.sums[k];
                 if (usable[p] != 0.0f) {
                     // F = u + D / W, D the weighted differences; with the weights w_q = exp(-d_q)
                     // moving with u, dF/du = (1 - sum w_q d'_q (u_q - u) + (F - u) sum w_q d'_q) / W
@@ -269,25 +311,55 @@ WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates
                 out.color[k][i] = c;
                 out.risk[k][i] = risk;
             }
-    // The regression's: its fit at the pixel, and SURE with the weights held fixed (the fit is
-    // linear in the irradiance, so its derivative is the centre's leverage).
-    if (regression_)
-        for (int t = 0; t < th; ++t)
-            for (int x = xa; x < xb; ++x) {
-                const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * tw + (x - xa);
-                glm::vec3 c = b_.color[i];
-                float risk = 0.0f;
-                if (usable[p] != 0.0f) {
-                    const FeatureRegression::Fit fit = regression_->solve(*fitSums, a, i, s_.regressionRidge);
-                    for (int ch = 0; ch < 3; ++ch) {
-                        const float change = divisor[ch][p] * fit.change[ch];
-                        c[ch] += change;
-                        risk += steinUnbiasedRisk(change, divisor[ch][p] * divisor[ch][p] * v[ch][p], fit.leverage);
-                    }
+}
+
+// The regression's frame: its fit at each pixel, and SURE with the weights held fixed (the fit
+// is linear in the irradiance, so its derivative is the centre's leverage).
+void Filter::regressed(const Tile& tile, Candidates& out) const {
+    const int w = b_.width, xa = tile.xa, xb = tile.xb, y0 = tile.y0, tw = tile.tw;
+    const size_t candidates = s_.candidateK.size();
+    const float *const *v = tile.v, *const *divisor = tile.divisor, *usable = tile.usable;
+    for (int t = 0; t < tile.th; ++t)
+        for (int x = xa; x < xb; ++x) {
+            const size_t i = size_t(y0 + t) * w + x, p = planes_.irradiance.index(x, y0 + t), a = size_t(t) * tw + (x - xa);
+            glm::vec3 c = b_.color[i];
+            float risk = 0.0f;
+            if (usable[p] != 0.0f) {
+                const FeatureRegression::Fit fit = regression_->solve(*tile.fitSums, a, i, s_.regressionRidge);
+                for (int ch = 0; ch < 3; ++ch) {
+                    const float change = divisor[ch][p] * fit.change[ch];
+                    c[ch] += change;
+                    risk += steinUnbiasedRisk(change, divisor[ch][p] * divisor[ch][p] * v[ch][p], fit.leverage);
                 }
-                out.color[candidates][i] = c;
-                out.risk[candidates][i] = risk;
             }
+            out.color[candidates][i] = c;
+            out.risk[candidates][i] = risk;
+        }
+}
+
+WOVEN_VECTOR_CLONES void Filter::tile(int xa, int y0, int xb, int y1, Candidates& out) const {
+    const int w = b_.width, h = b_.height, r = s_.radius;
+    Tile tile(xa, y0, xb, y1, s_.patchRadius, planes_, s_.candidateK.size(), regression_.has_value());
+    const ptrdiff_t stride = planes_.irradiance.stride();
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            const ptrdiff_t offset = dy * stride + dx;
+            patchTerms(tile, offset);
+            // Only neighbours inside the frame are averaged in.
+            const int x0 = std::max(xa, -dx), x1 = std::min(xb, w - dx);
+            for (int t = 0; t < tile.th; ++t) {
+                const int y = y0 + t;
+                if (y + dy < 0 || y + dy >= h || x1 <= x0) continue;
+                const RowSpan span{t, x0, x1 - x0, planes_.irradiance.index(x0, y), size_t(t) * tile.tw + (x0 - xa)};
+                patchDistances(tile, span);
+                rowTerms(tile, span, dx, dy, offset);
+                guide_.distances(span.p, offset, span.count, tile.features.data());
+                addWeights(tile, span, offset);
+            }
+        }
+    filtered(tile, out);
+    if (regression_) regressed(tile, out);
 }
 
 }  // namespace

@@ -151,8 +151,10 @@ std::vector<std::string> writeSharePage(const SceneDescription& scene, const std
         const std::vector<unsigned char> bytes = readRegularFile(options.modelViewer, size_t(64) << 20);
         viewer.assign(bytes.begin(), bytes.end());
     } catch (const FileReadError& e) {
-        throw ShareError(std::string(e.what()) + " (model-viewer, from npm's @google/model-viewer: tools/install-deps.sh installs it; "
-                                                 "WOVEN_MODEL_VIEWER names another copy)");
+        throw ShareError("woven share needs Google's <model-viewer> script, which it copies into the page, and it is missing (" +
+                         std::string(e.what()) + "). Install it with tools/install-deps.sh --share (Debian's npm, then "
+                         "npm install --prefix ~ @google/model-viewer), or set WOVEN_MODEL_VIEWER to a copy of "
+                         "model-viewer-umd.min.js");
     }
     const fs::path dir(folder);
     std::error_code ec;

@@ -21,7 +21,7 @@ struct ShareError : std::runtime_error {
 };
 
 // model-viewer-umd.min.js from npm's @google/model-viewer: $WOVEN_MODEL_VIEWER, else where
-// tools/install-deps.sh installs it (found when woven was built).
+// tools/install-deps.sh --share installs it (found when woven was built).
 std::string defaultModelViewer();
 
 struct ShareOptions {

@@ -31,6 +31,76 @@ std::optional<glm::dvec3> intersect(const Ray& ray, const glm::dvec3& a, const g
     return glm::dvec3(b1, b2, t);
 }
 
+// Where the central ray meets the target, and the camera's footprint of one pixel there in the
+// triangle's UVs.
+struct CentralHit {
+    glm::dvec3 centre, normal;
+    glm::dmat2 uvPerPixel;
+};
+
+// The nearest hit of the ray on the target's meshes with texture coordinates, or none.
+std::optional<CentralHit> centralHit(const SceneDescription& scene, const std::vector<size_t>& meshes, const CameraModel& model,
+                                     const Ray& ray) {
+    double nearest = INFINITY;
+    CentralHit found{glm::dvec3(0.0), glm::dvec3(0.0), glm::dmat2(1.0)};
+    for (size_t i : meshes) {
+        const Mesh& mesh = scene.meshes[i];
+        if (mesh.uvs.empty()) continue;
+        for (const glm::uvec3& tri : mesh.triangles) {
+            const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
+            const auto hit = intersect(ray, a, b, c);
+            if (!hit || hit->z >= nearest) continue;
+            const glm::dvec2 ta(mesh.uvs[tri.x]), tb(mesh.uvs[tri.y]), tc(mesh.uvs[tri.z]);
+            // dp = J d(u, v): J's columns are dp/du and dp/dv.
+            const glm::dmat2 duv(tb - ta, tc - ta);
+            if (!(std::abs(glm::determinant(duv)) > 0.0)) continue;
+            const glm::dmat2 inv = glm::inverse(duv);
+            const glm::dvec3 dpdu = (b - a) * inv[0][0] + (c - a) * inv[0][1];
+            const glm::dvec3 dpdv = (b - a) * inv[1][0] + (c - a) * inv[1][1];
+            const glm::dvec3 p = a + hit->x * (b - a) + hit->y * (c - a);
+            const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+            const CameraModel::Footprint f = model.footprint(glm::vec3(p), glm::vec3(n));
+            // Least squares of dp = dpdu du + dpdv dv for each pixel step.
+            const glm::dmat2 g(glm::dot(dpdu, dpdu), glm::dot(dpdu, dpdv), glm::dot(dpdu, dpdv), glm::dot(dpdv, dpdv));
+            if (!(std::abs(glm::determinant(g)) > 0.0)) continue;
+            const glm::dmat2 gi = glm::inverse(g);
+            const auto solve = [&](const glm::dvec3& dp) {
+                return gi * glm::dvec2(glm::dot(dpdu, dp), glm::dot(dpdv, dp));
+            };
+            found.uvPerPixel = glm::dmat2(solve(glm::dvec3(f.dpdx)), solve(glm::dvec3(f.dpdy)));
+            nearest = hit->z;
+            found.centre = p;
+            found.normal = n;
+        }
+    }
+    if (!std::isfinite(nearest)) return std::nullopt;
+    return found;
+}
+
+// Whether every light is behind the target as the camera sees it (at cameraAt): punctual ones, and
+// emissive surfaces (a light box behind the swatch), each of whose corners must lie behind; and
+// no environment light.
+bool backlit(const SceneDescription& scene, const std::vector<size_t>& targetMeshes, const glm::dvec3& cameraAt,
+             const CentralHit& hit) {
+    const glm::dvec3 centre = hit.centre;
+    const auto side = [&](const glm::dvec3& towards) { return glm::dot(towards, hit.normal) > 0.0; };
+    const bool cameraSide = side(cameraAt - centre);
+    bool anyLight = false, allBehind = true;
+    const auto light = [&](const glm::dvec3& towards) {
+        anyLight = true;
+        allBehind = allBehind && side(towards) != cameraSide;
+    };
+    for (const PunctualLight& l : scene.lights)
+        light(l.type == PunctualLight::Type::Directional ? -glm::dvec3(l.direction) : glm::dvec3(l.position) - centre);
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& mesh = scene.meshes[i];
+        const bool target = std::find(targetMeshes.begin(), targetMeshes.end(), i) != targetMeshes.end();
+        if (!target && mesh.material >= 0 && scene.materials[size_t(mesh.material)].emits())
+            for (const glm::vec3& p : mesh.positions) light(glm::dvec3(p) - centre);
+    }
+    return anyLight && allBehind && scene.environment.color == glm::vec3(0.0f);
+}
+
 }  // namespace
 
 Shot loadShot(const std::string& path, const std::string& target) {
@@ -84,59 +154,12 @@ Shot loadShot(const std::string& path, const std::string& target) {
     if (camera.aspect <= 0.0f) camera.aspect = float(frame.width) / float(frame.height);
     const CameraModel model(camera, frame.width, frame.height);
     const Ray ray = model.generateRay(glm::vec2(0.5f * float(frame.width), 0.5f * float(frame.height)));
-    double nearest = INFINITY;
-    glm::dvec3 centre(0.0), normal(0.0);  // where the central ray meets the target
-    for (size_t i : shot.meshes) {
-        const Mesh& mesh = scene.meshes[i];
-        if (mesh.uvs.empty()) continue;
-        for (const glm::uvec3& tri : mesh.triangles) {
-            const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
-            const auto hit = intersect(ray, a, b, c);
-            if (!hit || hit->z >= nearest) continue;
-            const glm::dvec2 ta(mesh.uvs[tri.x]), tb(mesh.uvs[tri.y]), tc(mesh.uvs[tri.z]);
-            // dp = J d(u, v): J's columns are dp/du and dp/dv.
-            const glm::dmat2 duv(tb - ta, tc - ta);
-            if (!(std::abs(glm::determinant(duv)) > 0.0)) continue;
-            const glm::dmat2 inv = glm::inverse(duv);
-            const glm::dvec3 dpdu = (b - a) * inv[0][0] + (c - a) * inv[0][1];
-            const glm::dvec3 dpdv = (b - a) * inv[1][0] + (c - a) * inv[1][1];
-            const glm::dvec3 p = a + hit->x * (b - a) + hit->y * (c - a);
-            const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
-            const CameraModel::Footprint f = model.footprint(glm::vec3(p), glm::vec3(n));
-            // Least squares of dp = dpdu du + dpdv dv for each pixel step.
-            const glm::dmat2 g(glm::dot(dpdu, dpdu), glm::dot(dpdu, dpdv), glm::dot(dpdu, dpdv), glm::dot(dpdv, dpdv));
-            if (!(std::abs(glm::determinant(g)) > 0.0)) continue;
-            const glm::dmat2 gi = glm::inverse(g);
-            const auto solve = [&](const glm::dvec3& dp) {
-                return gi * glm::dvec2(glm::dot(dpdu, dp), glm::dot(dpdv, dp));
-            };
-            shot.uvPerPixel = glm::dmat2(solve(glm::dvec3(f.dpdx)), solve(glm::dvec3(f.dpdy)));
-            nearest = hit->z;
-            centre = p;
-            normal = n;
-        }
-    }
-    if (!std::isfinite(nearest))
+    const std::optional<CentralHit> hit = centralHit(scene, shot.meshes, model, ray);
+    if (!hit)
         throw fail("--target " + target + " is not what the image centre sees (or has no texture coordinates there): "
                    "a shot frames the swatch, the camera straight above it");
-    const auto side = [&](const glm::dvec3& towards) { return glm::dot(towards, normal) > 0.0; };
-    const bool cameraSide = side(glm::dvec3(ray.o) - centre);
-    // The lights: punctual ones, and emissive surfaces (a light box behind the swatch), each of
-    // whose corners must lie behind.
-    bool anyLight = false, allBehind = true;
-    const auto light = [&](const glm::dvec3& towards) {
-        anyLight = true;
-        allBehind = allBehind && side(towards) != cameraSide;
-    };
-    for (const PunctualLight& l : scene.lights)
-        light(l.type == PunctualLight::Type::Directional ? -glm::dvec3(l.direction) : glm::dvec3(l.position) - centre);
-    for (size_t i = 0; i < scene.meshes.size(); ++i) {
-        const Mesh& mesh = scene.meshes[i];
-        const bool target = std::find(shot.meshes.begin(), shot.meshes.end(), i) != shot.meshes.end();
-        if (!target && mesh.material >= 0 && scene.materials[size_t(mesh.material)].emits())
-            for (const glm::vec3& p : mesh.positions) light(glm::dvec3(p) - centre);
-    }
-    shot.backlit = anyLight && allBehind && scene.environment.color == glm::vec3(0.0f);
+    shot.uvPerPixel = hit->uvPerPixel;
+    shot.backlit = backlit(scene, shot.meshes, glm::dvec3(ray.o), *hit);
     shot.scene = std::make_shared<const SceneDescription>(std::move(scene));
     return shot;
 }

@@ -169,6 +169,135 @@ std::string readFrameIdentity(const Attributes& attributes, std::optional<FrameI
     return "";
 }
 
+// Every channel as stored: older files' sums are 32-bit unsigned words, which floats would
+// round; the count and the exact sums' words are whole floats.
+float asFloat(const ExrChannel* c, size_t i) {
+    return c->type == ExrChannelType::Uint ? float(c->words[i]) : c->values[i];
+}
+
+// An RGB layer ("" for the beauty), or false when the file lacks any of its channels.
+bool readRgb(const ExrFile& file, const std::string& prefix, Image* image) {
+    const ExrChannel *r = file.channel(prefix + "R"), *g = file.channel(prefix + "G"), *b = file.channel(prefix + "B");
+    if (!r || !g || !b) return false;
+    const size_t count = size_t(file.width) * size_t(file.height);
+    image->width = file.width;
+    image->height = file.height;
+    image->pixels.resize(count);
+    for (size_t i = 0; i < count; ++i) image->pixels[i] = {asFloat(r, i), asFloat(g, i), asFloat(b, i)};
+    return true;
+}
+
+// The beauty (RGB, or grey Y), the noisy beauty where there is one, and the sample counts.
+void readImages(const ExrFile& file, const std::string& path, ExrImage* result) {
+    const size_t count = size_t(file.width) * size_t(file.height);
+    if (!readRgb(file, "", &result->image)) {
+        const ExrChannel* y = file.channel("Y");
+        if (!y) fail(path, "no R, G, B (or Y) channels");
+        result->image.width = file.width;
+        result->image.height = file.height;
+        result->image.pixels.resize(count);
+        for (size_t i = 0; i < count; ++i) result->image.pixels[i] = glm::vec3(asFloat(y, i));
+    }
+    if (Image noisy; readRgb(file, "noisy.", &noisy)) result->noisy = std::move(noisy);
+    const ExrChannel* n = file.channel(kCountChannel);
+    if (!n) n = file.channel(kOldCountChannel);
+    if (n) {
+        result->sampleCount.resize(count);
+        for (size_t i = 0; i < count; ++i) result->sampleCount[i] = asFloat(n, i);
+    }
+}
+
+// The radiance sums as files of earlier versions kept them, all twelve words or none; returns
+// how many of their channels the file has.
+int readOldSums(const ExrFile& file, const std::string& path, ExrImage* result) {
+    const size_t count = size_t(file.width) * size_t(file.height);
+    const ExrChannel* oldWords[3][4];
+    int oldFound = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int w = 0; w < 4; ++w) {
+            oldWords[c][w] = file.channel(oldSumChannelName(c, w));
+            if (oldWords[c][w] && oldWords[c][w]->type != ExrChannelType::Uint)
+                fail(path, "the sample-sum channel " + oldSumChannelName(c, w) + " is not 32-bit unsigned");
+            oldFound += oldWords[c][w] != nullptr;
+        }
+    if (oldFound != 0 && oldFound != 12) fail(path, "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing");
+    if (oldFound == 12) {
+        result->sampleSums.resize(3 * count);
+        for (size_t i = 0; i < count; ++i)
+            for (int c = 0; c < 3; ++c) {
+                std::array<uint32_t, 4> w{};
+                for (int k = 0; k < 4; ++k) w[size_t(k)] = oldWords[c][k]->words[i];
+                result->sampleSums[3 * i + size_t(c)] = ExactSum::fromWords(w);
+            }
+    }
+    return oldFound;
+}
+
+// The exact sums' channels of group g in the order of ExactSum's words, channel by channel, each
+// null where the file lacks it; fails when only some are there.
+std::vector<const ExrChannel*> exactChannels(const ExrFile& file, const std::string& path, size_t g) {
+    const ExactGroup& group = kExactGroups[g];
+    const int channels = int(std::strlen(group.channels));
+    std::vector<const ExrChannel*> words;
+    for (int w = 0; w < ExactSum::kFloatWords; ++w)
+        for (int c = 0; c < channels; ++c) words.push_back(file.channel(exactChannelName(group, w, c)));
+    const size_t found = size_t(std::count_if(words.begin(), words.end(), [](const ExrChannel* c) { return c; }));
+    if (found != 0 && found != words.size())
+        fail(path, std::string("some of the exact-sum channels exact.") + group.name + "0." + group.channels[0] + "-exact." +
+                       group.name + std::to_string(ExactSum::kFloatWords - 1) + "." + group.channels[channels - 1] +
+                       " are missing");
+    return words;
+}
+
+// Group g's sums at every pixel from its channels' words.
+void readExactGroup(const ExrFile& file, const std::string& path, int g, const std::vector<const ExrChannel*>& words,
+                    ExrImage* result) {
+    const size_t count = size_t(file.width) * size_t(file.height);
+    const ExactGroup& group = kExactGroups[g];
+    const int channels = int(std::strlen(group.channels));
+    for (size_t i = 0; i < count; ++i)
+        for (int c = 0; c < channels; ++c) {
+            std::array<float, ExactSum::kFloatWords> w{};
+            for (int k = 0; k < ExactSum::kFloatWords; ++k) w[size_t(k)] = asFloat(words[size_t(k * channels + c)], i);
+            const std::optional<ExactSum> sum = ExactSum::fromFloatWords(w);
+            if (!sum)
+                fail(path, "pixel (" + std::to_string(i % size_t(file.width)) + ", " + std::to_string(i / size_t(file.width)) +
+                               ") of the exact-sum channels exact." + group.name + "0-5." + group.channels[c] +
+                               " holds a word that is not a whole number below 2^24 (the top word below 2^8)");
+            exactSum(*result, g, i, c) = *sum;
+        }
+}
+
+// The exact sums: each group all there or not at all; the passes' only with the radiance's, and
+// not beside the older sums (oldSums).
+void readExactSums(const ExrFile& file, const std::string& path, bool oldSums, ExrImage* result) {
+    std::vector<const ExrChannel*> words[std::size(kExactGroups)];
+    bool groupFound[std::size(kExactGroups)] = {};
+    int groupsFound = 0;
+    for (size_t g = 0; g < std::size(kExactGroups); ++g) {
+        words[g] = exactChannels(file, path, g);
+        groupFound[g] = words[g].front() != nullptr;
+        if (groupFound[g]) ++groupsFound;
+    }
+    const bool exactRadiance = groupFound[kRadianceGroup];
+    if (exactRadiance && oldSums) fail(path, "has both the exact sums exact.radiance* and the older sum.R0-sum.B3");
+    const int passGroupsFound = groupsFound - int(groupFound[kRadianceGroup]);
+    const int passGroupsNeeded = int(std::size(kExactGroups)) - 1 - (groupFound[kDirectGroup] ? 0 : kDirectGroups);
+    if (passGroupsFound != 0 && passGroupsFound != passGroupsNeeded)
+        fail(path, "has the exact sums of some render passes but not of all (exact.albedo*, exact.normal*, exact.depth*, "
+                   "exact.square*)");
+    if (groupsFound != 0 && !exactRadiance) fail(path, "has the render passes' exact sums without the radiance's (exact.radiance*)");
+    if (groupsFound == 0) return;
+    const size_t count = size_t(file.width) * size_t(file.height);
+    result->sampleSums.resize(3 * count);
+    if (groupsFound > 1) {
+        result->passSums.resize(count);
+        result->lacksDirectPass = !groupFound[kDirectGroup];
+    }
+    for (int g = 0; g < int(std::size(kExactGroups)); ++g)
+        if (groupFound[g]) readExactGroup(file, path, g, words[g], result);
+}
+
 // Now as OpenEXR's standard attribute capDate has it ("YYYY:MM:DD hh:mm:ss", local time), which
 // frames of woven have carried since OpenImageIO wrote them.
 std::string writtenAt() {
@@ -185,107 +314,10 @@ std::string writtenAt() {
 ExrImage readExr(const std::string& path) {
     const std::vector<unsigned char> bytes = readImageFile(path);
     const ExrFile file = readExrFile(bytes.data(), bytes.size(), path);
-    // Every channel as stored: older files' sums are 32-bit unsigned words, which floats would
-    // round; the count and the exact sums' words are whole floats.
-    const auto asFloat = [&](const ExrChannel* c, size_t i) {
-        return c->type == ExrChannelType::Uint ? float(c->words[i]) : c->values[i];
-    };
-    const size_t count = size_t(file.width) * size_t(file.height);
-    // An RGB layer ("" for the beauty), or none when the file lacks any of its channels.
-    const auto readRgb = [&](const std::string& prefix, Image* image) {
-        const ExrChannel *r = file.channel(prefix + "R"), *g = file.channel(prefix + "G"), *b = file.channel(prefix + "B");
-        if (!r || !g || !b) return false;
-        image->width = file.width;
-        image->height = file.height;
-        image->pixels.resize(count);
-        for (size_t i = 0; i < count; ++i) image->pixels[i] = {asFloat(r, i), asFloat(g, i), asFloat(b, i)};
-        return true;
-    };
     ExrImage result;
-    if (!readRgb("", &result.image)) {
-        const ExrChannel* y = file.channel("Y");
-        if (!y) fail(path, "no R, G, B (or Y) channels");
-        result.image.width = file.width;
-        result.image.height = file.height;
-        result.image.pixels.resize(count);
-        for (size_t i = 0; i < count; ++i) result.image.pixels[i] = glm::vec3(asFloat(y, i));
-    }
-    if (Image noisy; readRgb("noisy.", &noisy)) result.noisy = std::move(noisy);
-    const ExrChannel* n = file.channel(kCountChannel);
-    if (!n) n = file.channel(kOldCountChannel);
-    if (n) {
-        result.sampleCount.resize(count);
-        for (size_t i = 0; i < count; ++i) result.sampleCount[i] = asFloat(n, i);
-    }
-
-    const ExrChannel* oldWords[3][4];
-    int oldFound = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int w = 0; w < 4; ++w) {
-            oldWords[c][w] = file.channel(oldSumChannelName(c, w));
-            if (oldWords[c][w] && oldWords[c][w]->type != ExrChannelType::Uint)
-                fail(path, "the sample-sum channel " + oldSumChannelName(c, w) + " is not 32-bit unsigned");
-            oldFound += oldWords[c][w] != nullptr;
-        }
-    if (oldFound != 0 && oldFound != 12) fail(path, "some of the 32-bit unsigned sample-sum channels sum.R0-sum.B3 are missing");
-    if (oldFound == 12) {
-        result.sampleSums.resize(3 * count);
-        for (size_t i = 0; i < count; ++i)
-            for (int c = 0; c < 3; ++c) {
-                std::array<uint32_t, 4> w{};
-                for (int k = 0; k < 4; ++k) w[size_t(k)] = oldWords[c][k]->words[i];
-                result.sampleSums[3 * i + size_t(c)] = ExactSum::fromWords(w);
-            }
-    }
-
-    // The exact sums: each group all there or not at all; the passes' only with the radiance's.
-    std::vector<const ExrChannel*> words[std::size(kExactGroups)];
-    bool groupFound[std::size(kExactGroups)] = {};
-    int groupsFound = 0;
-    for (size_t g = 0; g < std::size(kExactGroups); ++g) {
-        const ExactGroup& group = kExactGroups[g];
-        const int channels = int(std::strlen(group.channels));
-        for (int w = 0; w < ExactSum::kFloatWords; ++w)
-            for (int c = 0; c < channels; ++c) words[g].push_back(file.channel(exactChannelName(group, w, c)));
-        const size_t found = size_t(std::count_if(words[g].begin(), words[g].end(), [](const ExrChannel* c) { return c; }));
-        if (found != 0 && found != words[g].size())
-            fail(path, std::string("some of the exact-sum channels exact.") + group.name + "0." + group.channels[0] + "-exact." +
-                           group.name + std::to_string(ExactSum::kFloatWords - 1) + "." + group.channels[channels - 1] +
-                           " are missing");
-        groupFound[g] = found != 0;
-        if (found != 0) ++groupsFound;
-    }
-    const bool exactRadiance = !words[kRadianceGroup].empty() && words[kRadianceGroup].front();
-    if (exactRadiance && oldFound != 0) fail(path, "has both the exact sums exact.radiance* and the older sum.R0-sum.B3");
-    const int passGroupsFound = groupsFound - int(groupFound[kRadianceGroup]);
-    const int passGroupsNeeded = int(std::size(kExactGroups)) - 1 - (groupFound[kDirectGroup] ? 0 : kDirectGroups);
-    if (passGroupsFound != 0 && passGroupsFound != passGroupsNeeded)
-        fail(path, "has the exact sums of some render passes but not of all (exact.albedo*, exact.normal*, exact.depth*, "
-                   "exact.square*)");
-    if (groupsFound != 0 && !exactRadiance) fail(path, "has the render passes' exact sums without the radiance's (exact.radiance*)");
-    if (groupsFound != 0) {
-        result.sampleSums.resize(3 * count);
-        if (groupsFound > 1) {
-            result.passSums.resize(count);
-            result.lacksDirectPass = !groupFound[kDirectGroup];
-        }
-        for (int g = 0; g < int(std::size(kExactGroups)); ++g) {
-            if (!groupFound[g]) continue;
-            const ExactGroup& group = kExactGroups[g];
-            const int channels = int(std::strlen(group.channels));
-            for (size_t i = 0; i < count; ++i)
-                for (int c = 0; c < channels; ++c) {
-                    std::array<float, ExactSum::kFloatWords> w{};
-                    for (int k = 0; k < ExactSum::kFloatWords; ++k) w[size_t(k)] = asFloat(words[g][size_t(k * channels + c)], i);
-                    const std::optional<ExactSum> sum = ExactSum::fromFloatWords(w);
-                    if (!sum)
-                        fail(path, "pixel (" + std::to_string(i % size_t(file.width)) + ", " + std::to_string(i / size_t(file.width)) +
-                                       ") of the exact-sum channels exact." + group.name + "0-5." + group.channels[c] +
-                                       " holds a word that is not a whole number below 2^24 (the top word below 2^8)");
-                    exactSum(result, g, i, c) = *sum;
-                }
-        }
-    }
+    readImages(file, path, &result);
+    const int oldFound = readOldSums(file, path, &result);
+    readExactSums(file, path, oldFound != 0, &result);
     if (!result.sampleSums.empty() && result.sampleCount.empty()) fail(path, "has exact sums but no sample-count channel samples.N");
     if (const std::string problem = readSampleRange(file.attributes, &result.samples); !problem.empty()) fail(path, problem);
     if (const std::string problem = readFrameIdentity(file.attributes, &result.frame); !problem.empty()) fail(path, problem);

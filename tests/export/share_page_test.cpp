@@ -151,7 +151,7 @@ TEST_F(SharePageTest, WithoutModelViewerItSaysWhereToGetIt) {
     const int status = pipe ? pclose(pipe) : -1;
     EXPECT_NE(status, 0);
     EXPECT_NE(out.find("model-viewer"), std::string::npos) << out;
-    EXPECT_NE(out.find("install-deps.sh"), std::string::npos) << out;
+    EXPECT_NE(out.find("tools/install-deps.sh --share"), std::string::npos) << out;
     EXPECT_FALSE(std::filesystem::exists(file("page3")));
 }
 
