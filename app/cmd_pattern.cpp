@@ -85,7 +85,7 @@ void addPatternCommand(CLI::App& app) {
         ->delimiter(',')->expected(2);
     cmd->add_option("--png", opts->png, "draw the weave in thread colours to this PNG instead of printing it "
                                         "(a draft's colours; black warp, white weft otherwise)");
-    cmd->add_option("--cell-pixels", opts->cellPixels, "pixels per weave cell in --png")->check(wholeNumber(1, 256));
+    cmd->add_option("--cell-pixels", opts->cellPixels, "pixels per weave cell in --png")->transform(wholeNumber(1, 256));
     cmd->callback([opts] {
         Weave weave = [&] {
             if (!opts->wif.empty()) return weaveFromDraft(opts->wif);
