@@ -9,7 +9,6 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -173,10 +172,11 @@ void plot(const std::string& csv, const std::string& png, const std::string& tit
                 "set xlabel 'time (s)'; set ylabel 'relative RMSE'; set title " + gnuplotString(title) + "; "
                 "plot for [name in " + gnuplotString(names) + "] " + gnuplotString(csv) +
                 " using (strcol(1) eq name ? $2 : 1/0):5 with linespoints lw 2 title name";
-            if (runProcess({"gnuplot", "-e", script}).exitCode != 0) throw FileWriteError("gnuplot failed");
+            const int exitCode = runProcess({"gnuplot", "-e", script}).exitCode;
+            if (exitCode != 0) throw FileWriteError(exitCode == 127 ? "gnuplot is not installed" : "gnuplot failed");
         });
-    } catch (const FileWriteError&) {
-        std::cerr << "converge: gnuplot not available, wrote " << csv << " only\n";
+    } catch (const FileWriteError& e) {
+        std::cerr << "converge: no plot (" << e.what() << "); wrote " << csv << "\n";
     }
 }
 

@@ -20,7 +20,6 @@
 #include "progress_bar.h"
 #include "render_options.h"
 #include "render_job.h"
-#include "sample_index_check.h"
 #include "scene_camera.h"
 #include "scene_lighting.h"
 #include "scene_loader.h"
@@ -186,7 +185,7 @@ void addRenderCommand(CLI::App& app) {
                     "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
-        ->check(sampleIndexCheck(0, kSampleIndexLimit - 1));
+        ->transform(wholeNumber(0, kSampleIndexLimit - 1));
     cmd->add_flag("--list", o->list,
                   "print the scene's cameras (the numbers --camera takes), materials, meshes and lights, and "
                   "render nothing");

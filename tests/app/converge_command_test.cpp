@@ -135,7 +135,7 @@ TEST_F(ConvergeCommand, AFileNameIsANameNotACommand) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_FALSE(fs::exists("injected"));
     EXPECT_TRUE(fs::exists(file("out/it's $(echo>injected)_convergence.csv")));
-    if (r.out.find("gnuplot not available") == std::string::npos)
+    if (r.out.find("gnuplot is not installed") == std::string::npos)
         EXPECT_TRUE(fs::exists(file("out/it's $(echo>injected)_convergence.png"))) << r.out;
 }
 
