@@ -186,10 +186,16 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
         ->transform(wholeNumber(0, kSampleIndexLimit - 1));
-    cmd->add_flag("--list", o->list,
-                  "print the scene's cameras (the numbers --camera takes), materials, meshes and lights, and "
-                  "render nothing");
-    cmd->callback([o] {
+    CLI::Option* list = cmd->add_flag("--list", o->list,
+                                      "print the scene's cameras (the numbers --camera takes), materials, meshes and "
+                                      "lights, and render nothing");
+    cmd->callback([o, cmd, list] {
+        // --list reads the scene and renders nothing: any option but those of the reading
+        // (--allow-any-path, --strict) would be ignored without a word (`--list -o x.exr` wrote nothing).
+        for (const CLI::Option* option : cmd->get_options())
+            if (o->list && option != list && option->count() > 0 && option->nonpositional() &&
+                !option->check_lname("allow-any-path") && !option->check_lname("strict"))
+                throw CLI::ExcludesError(option->get_name(), list->get_name());
         if (int rc = runRender(*o)) throw CLI::RuntimeError(rc);
     });
 }

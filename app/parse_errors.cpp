@@ -136,6 +136,9 @@ int reportParseError(const CLI::App& app, const CLI::ParseError& error, int argc
     // CLI11's counts of values ("--width: At Most 1 required but received 2", "--size: At least 2
     // required but received 1", "--budgets: 1 required FLOAT:... missing") in woven's words.
     if (dynamic_cast<const CLI::ArgumentMismatch*>(&error)) message = valueCountMessage(message);
+    // CLI11's "--spp excludes --list": either may come first.
+    if (const size_t at = message.find(" excludes "); dynamic_cast<const CLI::ExcludesError*>(&error) && at != std::string::npos)
+        message = message.substr(0, at) + " and " + message.substr(at + 10) + " cannot be given together";
     std::cerr << name << ": error: " << message << "\n(" << name << " --help lists its options)\n";
     return code;
 }

@@ -105,6 +105,9 @@ TEST_F(NumberOptions, NumbersAreReadAsWrittenAndMistakesAreSaidInWovensWords) {
              // kept the scene's light.
              {"render " + kScene + " --environment ''" + out, "--environment: '' names nothing"},
              {"render " + kScene + " -o ''", "--out: '' names nothing"},
+             // --list renders nothing: the options of a render were ignored without a word.
+             {"render " + kScene + " --list" + out, "--out and --list cannot be given together"},
+             {"render " + kScene + " --spp 4 --list", "--spp and --list cannot be given together"},
              // An azimuth of NaN drew a plot of zeros.
              {"bsdf-plot --phi nan" + out, "--phi: 'nan' is not a finite number"}}) {
         const auto refused = runWovenCommand(options);
