@@ -143,8 +143,8 @@ void addBsdfCommands(CLI::App& app) {
     CLI::App* plot = app.add_subcommand("bsdf-plot", "Write a PNG of the lobe f cos over the hemisphere, weft and warp");
     plot->add_option("--material", opts->material, "woven material as JSON (bsdf-eval's names)");
     plot->add_option("--theta", opts->theta, "polar angle of wo in degrees")->check(finiteNumber(0.0, 89.9));
-    plot->add_option("--phi", opts->phi, "azimuth of wo in degrees, 0 = +u");
-    plot->add_option("--size", opts->size, "pixels per panel")->check(wholeNumber(16, 4096));
+    plot->add_option("--phi", opts->phi, "azimuth of wo in degrees, 0 = +u")->check(finiteNumber());
+    plot->add_option("--size", opts->size, "pixels per panel")->transform(wholeNumber(16, 4096));
     plot->add_option("-o,--out", opts->out, "output PNG");
     plot->callback([opts] { runBsdfPlot(opts->material, opts->theta, opts->phi, opts->size, opts->out); });
 }

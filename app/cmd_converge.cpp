@@ -9,7 +9,6 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -20,13 +19,14 @@
 #include <sstream>
 
 #include "commands.h"
+#include "converge_plan.h"
 #include "frame_denoise.h"
 #include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
-#include "number_checks.h"
 #include "output_path.h"
 #include "render_job.h"
+#include "run_process.h"
 #include "scene_camera.h"
 #include "scene_hash.h"
 #include "scene_loader.h"
@@ -34,23 +34,6 @@
 namespace woven {
 
 namespace {
-
-// What --budgets and --reference-time take. A time of 0, below or NaN would set no time limit at
-// all (a render then takes its 2^20 samples); below a millisecond no pass ends in time, and over a
-// day is a slip of the keyboard (1e9 s is 30 years).
-constexpr double kMinSeconds = 1e-3, kMaxSeconds = 86400;
-
-struct ConvergeOptions {
-    std::string scene, outDir = "converge";
-    std::vector<double> budgets{1, 2, 4, 8, 16};
-    std::vector<std::string> integrators = integratorNames();
-    std::vector<std::string> filters{"on", "off"};  // the weave filter (--filter is "on")
-    std::vector<double> thresholds{0.0, kDefaultNoiseThreshold};  // adaptive sampling; 0: off
-    std::vector<std::string> denoise{"on", "off"};                  // the denoiser (woven render's default is on)
-    double referenceTime = 300;
-    int width = 320, height = 240;
-    int threads = 0;
-};
 
 struct ErrorMetrics {
     double relMse;    // mean of (x - r)^2 / (r^2 + eps) over pixels and channels
@@ -171,33 +154,31 @@ Image reference(std::shared_ptr<const SceneDescription> scene, const ConvergeOpt
     return exr.image;
 }
 
-void plot(const std::string& csv, const std::string& png, const std::string& title, const std::string& names) {
-    // gnuplot draws the log-log plot; without it the CSV is still there.
-    std::ostringstream cmd;
-    cmd << "gnuplot -e \"set terminal pngcairo size 640,420 noenhanced; set output '" << png << "'; "
-        << "set datafile separator ','; set logscale xy; set grid; set key top right; "
-        << "set xlabel 'time (s)'; set ylabel 'relative RMSE'; set title '" << title << "'; "
-        << "plot for [name in '" << names << "'] '" << csv << "' using (strcol(1) eq name ? \\$2 : 1/0):5 "
-        << "with linespoints lw 2 title name\" 2>/dev/null";
-    if (std::system(cmd.str().c_str()) != 0)
-        std::cerr << "converge: gnuplot not available, wrote " << csv << " only\n";
+// `text` as a string in gnuplot's script: single quotes, each one inside doubled.
+std::string gnuplotString(const std::string& text) {
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+    return quoted + "'";
 }
 
-// One integrator with the filter on or off, a noise threshold and the denoiser on or off, as a
-// row of the tables and a line of the plot.
-struct Variant {
-    std::string integrator;
-    bool filter;
-    double threshold;  // 0: uniform sampling
-    bool denoise;
-    std::string name() const {
-        std::ostringstream n;
-        n << integrator << (filter ? "-filter" : "");
-        if (threshold > 0.0) n << "-adaptive" << threshold;
-        if (denoise) n << "-denoised";
-        return n.str();
+// gnuplot draws the log-log plot, run without a shell (a scene or folder named with $ or quotes
+// is a name, not a command), into the PNG's temporary name; without it the CSV is still there.
+void plot(const std::string& csv, const std::string& png, const std::string& title, const std::string& names) {
+    try {
+        writeFileAtomically(png, [&](const std::string& tmp) {
+            const std::string script =
+                "set terminal pngcairo size 640,420 noenhanced; set output " + gnuplotString(tmp) + "; "
+                "set datafile separator ','; set logscale xy; set grid; set key top right; "
+                "set xlabel 'time (s)'; set ylabel 'relative RMSE'; set title " + gnuplotString(title) + "; "
+                "plot for [name in " + gnuplotString(names) + "] " + gnuplotString(csv) +
+                " using (strcol(1) eq name ? $2 : 1/0):5 with linespoints lw 2 title name";
+            const int exitCode = runProcess({"gnuplot", "-e", script}).exitCode;
+            if (exitCode != 0) throw FileWriteError(exitCode == 127 ? "gnuplot is not installed" : "gnuplot failed");
+        });
+    } catch (const FileWriteError& e) {
+        std::cerr << "converge: no plot (" << e.what() << "); wrote " << csv << "\n";
     }
-};
+}
 
 std::string onOff(bool on) { return on ? "on" : "off"; }
 
@@ -214,56 +195,11 @@ double meanSpp(const FilmImage& film) {
     return film.sampleCount.empty() ? 0.0 : sum / double(film.sampleCount.size());
 }
 
-// Squared relative RMSE against time, e^2(t) = B + V / t, fitted by least squares weighted by
-// 1 / e^2 (each run's error is known to a relative precision): V is the noise, B what does not
-// fall with time: the filter's bias squared plus the reference's own noise (equal for every
-// variant, so the difference of B between filter on and off is the filter's bias squared).
-struct ErrorFit {
-    double B = 0.0, V = 0.0;
-    // Seconds to reach relative RMSE `target`; infinity where the floor B is above it.
-    double timeTo(double target) const { return target * target > B ? V / (target * target - B) : INFINITY; }
-};
-
-ErrorFit fitError(const std::vector<std::pair<double, double>>& timeAndSquaredError) {
-    double s00 = 0, s01 = 0, s11 = 0, r0 = 0, r1 = 0;
-    for (const auto& [t, e2] : timeAndSquaredError) {
-        const double w = 1.0 / (e2 * e2), x = 1.0 / t;
-        s00 += w;
-        s01 += w * x;
-        s11 += w * x * x;
-        r0 += w * e2;
-        r1 += w * e2 * x;
-    }
-    const double det = s00 * s11 - s01 * s01;
-    ErrorFit f;
-    if (timeAndSquaredError.size() >= 2 && det > 0.0) {
-        f.B = (s11 * r0 - s01 * r1) / det;
-        f.V = (s00 * r1 - s01 * r0) / det;
-    }
-    if (!(f.B > 0.0) || !(f.V > 0.0)) {
-        // Noise alone (or too few runs): through the longest run with B = 0.
-        const auto& [t, e2] = timeAndSquaredError.back();
-        f = {0.0, e2 * t};
-    }
-    return f;
-}
-
 std::string seconds(double t) {
     if (!std::isfinite(t)) return "not reached (bias)";
     std::ostringstream s;
     s << std::setprecision(3) << t;
     return s.str();
-}
-
-// Every variant of the options: each filter, noise threshold and integrator, the denoised one
-// right after the same render's undenoised one.
-std::vector<Variant> variantsOf(const ConvergeOptions& o) {
-    std::vector<Variant> variants;
-    for (const std::string& filter : o.filters)
-        for (double threshold : o.thresholds)
-            for (const std::string& integrator : o.integrators)
-                for (const std::string& denoise : o.denoise) variants.push_back({integrator, filter == "on", threshold, denoise == "on"});
-    return variants;
 }
 
 // What one variant's renders measured, over the budgets.
@@ -276,20 +212,27 @@ struct Runs {
 
 // Renders each variant for each budget (a denoised variant denoises its undenoised twin's
 // render), and writes a row of the CSV and of the table for each; returns the runs by variant.
+// The CSV's rows go to `partialCsv` as they are measured (an interrupted comparison leaves them
+// there, under a name no finished table has) and into `csv`.
 std::map<std::string, Runs> measure(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o,
-                                    const std::vector<Variant>& variants, const Image& ref, const std::string& csvPath) {
+                                    const std::vector<ConvergeVariant>& variants, const Image& ref,
+                                    const std::string& partialCsv, std::string& csv) {
     const double referenceDetail = detailEnergy(ref);
-    std::ofstream csv(csvPath);
-    csv << "variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold,denoise,detail\n";
+    std::ofstream partial(partialCsv);
+    const auto addRow = [&](const std::string& row) {
+        csv += row;
+        if (!(partial << row << std::flush)) throw FileWriteError(partialCsv + ": cannot write the file");
+    };
+    addRow("variant,seconds,spp,rel_mse,rel_rmse,efficiency,integrator,filter,noise_threshold,denoise,detail\n");
     std::cout << "| integrator | filter | adaptive | denoise | time (s) | mean spp | relMSE | rel. RMSE | efficiency 1/(relMSE x s) | "
                  "fine detail / reference's |\n"
               << "|---|---|---|---|---:|---:|---:|---:|---:|---:|\n";
     std::map<std::string, Runs> runs;
     uint64_t seed = 1;
     std::map<std::pair<std::string, size_t>, Timed> rendered;  // (render's variant, budget): denoised and not share it
-    for (const Variant& v : variants)
+    for (const ConvergeVariant& v : variants)
         for (size_t b = 0; b < o.budgets.size(); ++b) {
-            Variant undenoised = v;
+            ConvergeVariant undenoised = v;
             undenoised.denoise = false;
             const auto key = std::make_pair(undenoised.name(), b);
             if (rendered.find(key) == rendered.end())
@@ -306,8 +249,10 @@ std::map<std::string, Runs> measure(std::shared_ptr<const SceneDescription> scen
             const double efficiency = 1.0 / (e.relMse * seconds);
             const double spp = meanSpp(t.film);
             const double detail = detailEnergy(image) / referenceDetail;
-            csv << v.name() << "," << seconds << "," << spp << "," << e.relMse << "," << e.relRmse << "," << efficiency << ","
+            std::ostringstream row;
+            row << v.name() << "," << seconds << "," << spp << "," << e.relMse << "," << e.relRmse << "," << efficiency << ","
                 << v.integrator << "," << onOff(v.filter) << "," << v.threshold << "," << onOff(v.denoise) << "," << detail << "\n";
+            addRow(row.str());
             std::cout << "| " << v.integrator << (v.integrator == autoIntegrator().name ? " (" + t.integrator + ")" : "") << " | "
                       << onOff(v.filter) << " | " << adaptiveLabel(v.threshold) << " | " << onOff(v.denoise) << " | " << std::fixed
                       << std::setprecision(2) << seconds << " | " << std::setprecision(1) << spp << " | " << std::scientific << std::setprecision(3) << e.relMse << " | "
@@ -323,14 +268,14 @@ std::map<std::string, Runs> measure(std::shared_ptr<const SceneDescription> scen
 }
 
 // Each variant's fit of its error against time, and the table of the times to 5 % and 1 % from it.
-std::map<std::string, ErrorFit> fitTimes(const std::vector<Variant>& variants, std::map<std::string, Runs>& runs) {
+std::map<std::string, ErrorFit> fitTimes(const std::vector<ConvergeVariant>& variants, std::map<std::string, Runs>& runs) {
     std::cout << "\nTime to a relative RMSE, from the fit e^2(t) = B + V/t over the runs above (B: what does not "
                  "fall with time: the filter's and the denoiser's bias, the error at which adaptive sampling stops a pixel, "
                  "and the reference's noise)\n\n"
               << "| integrator | filter | adaptive | denoise | time to 5% (s) | time to 1% (s) | floor sqrt(B) |\n"
               << "|---|---|---|---|---:|---:|---:|\n";
     std::map<std::string, ErrorFit> fits;
-    for (const Variant& v : variants) {
+    for (const ConvergeVariant& v : variants) {
         const ErrorFit f = fits[v.name()] = fitError(runs[v.name()].squaredError);
         std::cout << "| " << v.integrator << " | " << onOff(v.filter) << " | " << adaptiveLabel(v.threshold) << " | "
                   << onOff(v.denoise) << " | " << seconds(f.timeTo(0.05))
@@ -339,28 +284,14 @@ std::map<std::string, ErrorFit> fitTimes(const std::vector<Variant>& variants, s
     return fits;
 }
 
-// The settings woven render takes by default, of those the options compare.
-struct Defaults {
-    bool filter, denoise;
-    double threshold;
-};
-
-Defaults defaultsOf(const ConvergeOptions& o) {
-    return {std::find(o.filters.begin(), o.filters.end(), "off") == o.filters.end(),
-            std::find(o.denoise.begin(), o.denoise.end(), "on") != o.denoise.end(),
-            std::find(o.thresholds.begin(), o.thresholds.end(), kDefaultNoiseThreshold) != o.thresholds.end()
-                ? kDefaultNoiseThreshold
-                : o.thresholds.front()};
-}
-
 // One table of relMSE at equal time, per budget, of the variants `before` and `after` make of
 // each integrator; none where no integrator ran both.
 void compareVariants(const ConvergeOptions& o, const std::map<std::string, Runs>& runs, std::map<std::string, ErrorFit>& fits,
-                     const std::string& title, const std::function<Variant(const std::string&)>& before,
-                     const std::function<Variant(const std::string&)>& after, bool bias) {
+                     const std::string& title, const std::function<ConvergeVariant(const std::string&)>& before,
+                     const std::function<ConvergeVariant(const std::string&)>& after, bool bias) {
     bool header = false;
     for (const std::string& integrator : o.integrators) {
-        const Variant vb = before(integrator), va = after(integrator);
+        const ConvergeVariant vb = before(integrator), va = after(integrator);
         const auto b = runs.find(vb.name()), a = runs.find(va.name());
         if (b == runs.end() || a == runs.end() || b == a) continue;
         if (!header) {
@@ -386,35 +317,35 @@ void compareVariants(const ConvergeOptions& o, const std::map<std::string, Runs>
 // The default settings against the filter, adaptive sampling and the denoiser off, one at a
 // time, from the same run: relMSE at equal time (per budget).
 void compareDefaults(const ConvergeOptions& o, const std::map<std::string, Runs>& runs, std::map<std::string, ErrorFit>& fits,
-                     const Defaults& d) {
+                     const ConvergeDefaults& d) {
     const std::string threshold = std::to_string(d.threshold).substr(0, 4);
     compareVariants(o, runs, fits, "The weave filter: off (before) against on (after), uniform sampling, not denoised; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
-                    [&](const std::string& i) { return Variant{i, true, 0.0, false}; }, true);
+                    [&](const std::string& i) { return ConvergeVariant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return ConvergeVariant{i, true, 0.0, false}; }, true);
     compareVariants(o, runs, fits, "The weave filter under the denoiser: off (before) against on (after), T = " + threshold +
                         ", denoised; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, d.threshold, true}; },
-                    [&](const std::string& i) { return Variant{i, true, d.threshold, true}; }, true);
+                    [&](const std::string& i) { return ConvergeVariant{i, false, d.threshold, true}; },
+                    [&](const std::string& i) { return ConvergeVariant{i, true, d.threshold, true}; }, true);
     compareVariants(o, runs, fits, "Adaptive sampling: uniform (before) against T = " + threshold + " (after), filter off, not denoised",
-                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
-                    [&](const std::string& i) { return Variant{i, false, d.threshold, false}; }, false);
+                    [&](const std::string& i) { return ConvergeVariant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return ConvergeVariant{i, false, d.threshold, false}; }, false);
     compareVariants(o, runs, fits, "The denoiser: off (before) against on (after), filter off, T = " + threshold +
                         "; the bias is sqrt(B_on - B_off)",
-                    [&](const std::string& i) { return Variant{i, false, d.threshold, false}; },
-                    [&](const std::string& i) { return Variant{i, false, d.threshold, true}; }, true);
+                    [&](const std::string& i) { return ConvergeVariant{i, false, d.threshold, false}; },
+                    [&](const std::string& i) { return ConvergeVariant{i, false, d.threshold, true}; }, true);
     compareVariants(o, runs, fits, "The default settings (after) against --noise-threshold 0 --no-denoise without the filter (before)",
-                    [&](const std::string& i) { return Variant{i, false, 0.0, false}; },
-                    [&](const std::string& i) { return Variant{i, d.filter, d.threshold, d.denoise}; }, false);
+                    [&](const std::string& i) { return ConvergeVariant{i, false, 0.0, false}; },
+                    [&](const std::string& i) { return ConvergeVariant{i, d.filter, d.threshold, d.denoise}; }, false);
 }
 
 // Which integrator is most efficient with the default settings, and what auto picks.
 void reportMostEfficient(std::shared_ptr<const SceneDescription> scene, const ConvergeOptions& o,
-                         const std::map<std::string, Runs>& runs, const Defaults& d) {
+                         const std::map<std::string, Runs>& runs, const ConvergeDefaults& d) {
     std::string winner;
     double top = -1;
     for (const IntegratorKind& kind : integratorKinds()) {
         if (!kind.make) continue;
-        const auto r = runs.find(Variant{kind.name, d.filter, d.threshold, d.denoise}.name());
+        const auto r = runs.find(ConvergeVariant{kind.name, d.filter, d.threshold, d.denoise}.name());
         if (r != runs.end() && r->second.efficiency > top) {
             top = r->second.efficiency;
             winner = kind.name;
@@ -422,7 +353,7 @@ void reportMostEfficient(std::shared_ptr<const SceneDescription> scene, const Co
     }
     if (winner.empty()) return;
     const std::string autoName = autoIntegrator().name;
-    const auto autoRuns = runs.find(Variant{autoName, d.filter, d.threshold, d.denoise}.name());
+    const auto autoRuns = runs.find(ConvergeVariant{autoName, d.filter, d.threshold, d.denoise}.name());
     const std::string picked = autoRuns != runs.end() ? autoRuns->second.picked
                                                       : renderFor(scene, o, autoName, 0.5, 99, d.filter, d.threshold).integrator;
     std::cout << "\nmost efficient: " << winner << "; --integrator auto picks: " << picked
@@ -437,15 +368,24 @@ void runConverge(const ConvergeOptions& o) {
     if (!fs::is_directory(o.outDir, ec)) throw std::invalid_argument(o.outDir + ": cannot make the folder");
     const std::string stem = fs::path(o.scene).stem().string();
     const std::string csvPath = (fs::path(o.outDir) / (stem + "_convergence.csv")).string();
-    checkOutput(csvPath);
+    const std::string partialCsv = partialName(csvPath), pngPath = (fs::path(o.outDir) / (stem + "_convergence.png")).string();
+    for (const std::string& out : {csvPath, partialCsv, pngPath}) checkOutput(out);
     const Image ref = reference(scene, o, stem);
-    const std::vector<Variant> variants = variantsOf(o);
-    std::map<std::string, Runs> runs = measure(scene, o, variants, ref, csvPath);
+    const std::vector<ConvergeVariant> variants = convergeVariants(o);
+    std::string csv;
+    std::map<std::string, Runs> runs = measure(scene, o, variants, ref, partialCsv, csv);
+    // The whole table takes its name at once (the output rule, output_path.h), and the rows
+    // written as they came go.
+    writeFileAtomically(csvPath, [&](const std::string& tmp) {
+        std::ofstream out(tmp);
+        if (!(out << csv << std::flush)) throw FileWriteError("cannot write the file");
+    });
+    fs::remove(partialCsv, ec);
     std::string names;
-    for (const Variant& v : variants) names += (names.empty() ? "" : " ") + v.name();
-    plot(csvPath, (fs::path(o.outDir) / (stem + "_convergence.png")).string(), stem, names);
+    for (const ConvergeVariant& v : variants) names += (names.empty() ? "" : " ") + v.name();
+    plot(csvPath, pngPath, stem, names);
     std::map<std::string, ErrorFit> fits = fitTimes(variants, runs);
-    const Defaults defaults = defaultsOf(o);
+    const ConvergeDefaults defaults = convergeDefaults(o);
     compareDefaults(o, runs, fits, defaults);
     reportMostEfficient(scene, o, runs, defaults);
 }
@@ -459,28 +399,7 @@ void addConvergeCommand(CLI::App& app) {
         "Error against an unfiltered, uniformly sampled, undenoised converged reference versus time for each "
         "integrator, with the weave filter on and off, adaptive sampling off and on and the denoiser on and off "
         "(tables, CSV, log-log PNG)");
-    cmd->add_option("scene", o->scene, "scene file (.json, .gltf, .glb)")->required();
-    const CLI::Validator timeCheck = finiteNumber(kMinSeconds, kMaxSeconds);
-    cmd->add_option("--budgets", o->budgets, "time budgets in seconds")->delimiter(',')->check(timeCheck);
-    cmd->add_option("--integrators", o->integrators, "integrators to compare (" + integratorChoices() + ")")
-        ->delimiter(',')
-        ->check(CLI::IsMember(integratorNames()));
-    cmd->add_option("--filter", o->filters, "the weave filter: on, off or on,off (both, compared)")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--denoise", o->denoise, "the denoiser: on, off or on,off (both, from the same renders)")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--noise-thresholds", o->thresholds,
-                    "adaptive sampling's thresholds to compare; 0: uniform sampling (default: 0 and woven render's)")
-        ->delimiter(',')
-        ->check(finiteNumber(0.0));
-    cmd->add_option("--reference-time", o->referenceTime, "seconds for the reference (split between integrators)")
-        ->check(timeCheck);
-    cmd->add_option("--width", o->width, "image width")->check(wholeNumber(8, 8192));
-    cmd->add_option("--height", o->height, "image height")->check(wholeNumber(8, 8192));
-    cmd->add_option("--threads", o->threads, "threads (0 = all cores)")->check(wholeNumber(0));
-    cmd->add_option("--out-dir", o->outDir, "where the reference, CSV and plot go");
+    addConvergeOptions(*cmd, *o);
     cmd->callback([o] { runConverge(*o); });
 }
 

@@ -56,9 +56,9 @@ constexpr const char* kSceneHelp =
 
 void addBakeOptions(CLI::App& cmd, ExportCommand& o) {
     cmd.add_option("--woven", o.woven, "TARGET=JSON: make the parts TARGET names woven first (as woven render's --woven)");
-    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->check(wholeNumber(4, 16384));
+    cmd.add_option("--size", o.options.bake.size, "texels along the longer side of each texture (default 512)")->transform(wholeNumber(4, 16384));
     cmd.add_option("--repeats", o.options.bake.repeats, "weave repeats each texture holds along u and v (default 1)")
-        ->check(wholeNumber(1, 1024));
+        ->transform(wholeNumber(1, 1024));
     cmd.add_flag("--no-sheen", o.noSheen, "fit no KHR_materials_sheen layer");
     cmd.add_flag("--isotropic", o.isotropic,
                  "no KHR_materials_anisotropy: one roughness a texel, for renderers that ignore the extension (Blender 3.4)");
@@ -237,11 +237,11 @@ void addExportCommands(CLI::App& app) {
     addBakeOptions(*cmd, *e);
     cmd->add_option("--material", e->u3m.material, "U3M: the woven material to export (default: the scene's only one)");
     cmd->add_option("--preview-size", e->u3m.previewSize, "U3M: pixels along the preview render's longer side (default 256; 0: none)")
-        ->check(CLI::Range(0, 4096));
-    cmd->add_option("--preview-spp", e->u3m.previewSpp, "U3M: samples per pixel of the preview render (default 16)")->check(CLI::Range(1, 1 << 16));
+        ->transform(wholeNumber(0, 4096));
+    cmd->add_option("--preview-spp", e->u3m.previewSpp, "U3M: samples per pixel of the preview render (default 16)")->transform(wholeNumber(1, 1 << 16));
     cmd->add_flag("--keep-woven", e->options.keepWoven, "also keep the woven parameters (WOVEN_fabric), so woven reads the file back as woven");
     cmd->add_flag("--report", e->report, "print the bake's error against the model, rendered near and far, per feature");
-    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->check(wholeNumber(1, 1 << 16));
+    cmd->add_option("--report-spp", e->reportOptions.spp, "samples per pixel of the report's near renders (default 256; the far ones take 16 times as many at a quarter of the size)")->transform(wholeNumber(1, 1 << 16));
     cmd->add_option("--report-images", e->reportOptions.imageFolder, "write the report's renders of the model and the bake as PNGs into this folder (OUT_MATERIAL_near_model.png, ...)");
     cmd->callback([e] { runExport(*e); });
 
@@ -258,8 +258,8 @@ void addExportCommands(CLI::App& app) {
     share->add_option("scene", p->scene, kSceneHelp)->required();
     share->add_option("-o,--out", p->out, "the page's folder (created if missing): index.html, scene.glb, poster.png, ...")->required();
     addBakeOptions(*share, *p);
-    share->add_option("--poster-size", p->share.posterSize, "pixels along the poster render's longer side (default 640)")->check(CLI::Range(16, 8192));
-    share->add_option("--poster-spp", p->share.posterSpp, "samples per pixel of the poster render (default 64)")->check(CLI::Range(1, 1 << 16));
+    share->add_option("--poster-size", p->share.posterSize, "pixels along the poster render's longer side (default 640)")->transform(wholeNumber(16, 8192));
+    share->add_option("--poster-spp", p->share.posterSpp, "samples per pixel of the poster render (default 64)")->transform(wholeNumber(1, 1 << 16));
     share->callback([p] { runShare(*p); });
 }
 

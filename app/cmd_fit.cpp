@@ -132,9 +132,10 @@ void addFitCommand(CLI::App& app) {
         ->check(positiveNumber());
     cmd->add_option("--report", o->report, "folder for the photos beside their fitted renders, each statistic's error "
                                            "and the loss against time");
-    cmd->add_option("--seed", o->seed, "seed of the fit's renders (default 1): the loss is a pure function of the parameters");
-    cmd->add_option("--spp", o->spp, "samples per pixel of the fit's renders (default 4)")->check(wholeNumber(1, 1024));
-    cmd->add_option("--threads", o->threads, "render threads (default: all cores)")->check(wholeNumber(0));
+    cmd->add_option("--seed", o->seed, "seed of the fit's renders (default 1): the loss is a pure function of the parameters")
+        ->transform(wholeNumber(0));
+    cmd->add_option("--spp", o->spp, "samples per pixel of the fit's renders (default 4)")->transform(wholeNumber(1, 1024));
+    cmd->add_option("--threads", o->threads, "render threads (default: all cores)")->transform(wholeNumber(0));
     cmd->callback([o] {
         if (int rc = runFit(*o)) throw CLI::RuntimeError(rc);
     });

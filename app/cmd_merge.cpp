@@ -16,8 +16,8 @@
 #include "frame_io.h"
 #include "image_io.h"
 #include "integrators.h"
+#include "number_checks.h"
 #include "output_path.h"
-#include "sample_index_check.h"
 #include "short_number.h"
 
 namespace woven {
@@ -253,7 +253,7 @@ void addMergeCommand(CLI::App& app) {
                     "the parts must hold samples 0..N-1 of every pixel: when some are missing, OUT is not written, "
                     "the missing samples are named, the parts there are go to OUT.partial.exr and the exit status "
                     "is 1")
-        ->check(sampleIndexCheck(1, kSampleIndexLimit));
+        ->transform(wholeNumber(1, kSampleIndexLimit));
     cmd->add_flag("--denoise,!--no-denoise", o->denoise,
                   "denoise the merged frame, as woven render denoises a frame (default: on; the noisy beauty is kept "
                   "as noisy.R/G/B)");

@@ -2,6 +2,7 @@
 // colours as a PNG; the weave is an (i, j, k) pattern, a WIF draft or a woven material (a
 // library fabric's "preset" included), whose thread counts also give its cover, weight and repeat.
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "commands.h"
@@ -75,17 +76,17 @@ void addPatternCommand(CLI::App& app) {
     auto opts = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("pattern", "Print the top-yarn map of a weave ('-' weft, '|' warp), or draw it as a PNG");
     CLI::Option* pattern = cmd->add_option("--pattern", opts->pattern, "I,J,K: I weft, J warp elements per row, shift K per row")
-        ->delimiter(',')->expected(3);
+        ->delimiter(',')->expected(3)->transform(wholeNumber(std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
     CLI::Option* wif = cmd->add_option("--wif", opts->wif, "a weaving draft (WIF file) instead of --pattern")->excludes(pattern);
     cmd->add_option("--material", opts->material,
                     "a woven material's JSON instead (e.g. '{\"preset\": \"denim\"}'); with thread counts its cover, "
                     "weight and repeat size are printed after the map")
         ->excludes(pattern)->excludes(wif);
     cmd->add_option("--size", opts->size, "W,H: columns and rows (default: one repeat)")
-        ->delimiter(',')->expected(2);
+        ->delimiter(',')->expected(2)->transform(wholeNumber(1, std::numeric_limits<int>::max()));
     cmd->add_option("--png", opts->png, "draw the weave in thread colours to this PNG instead of printing it "
                                         "(a draft's colours; black warp, white weft otherwise)");
-    cmd->add_option("--cell-pixels", opts->cellPixels, "pixels per weave cell in --png")->check(wholeNumber(1, 256));
+    cmd->add_option("--cell-pixels", opts->cellPixels, "pixels per weave cell in --png")->transform(wholeNumber(1, 256));
     cmd->callback([opts] {
         Weave weave = [&] {
             if (!opts->wif.empty()) return weaveFromDraft(opts->wif);

@@ -6,6 +6,7 @@
 #include <vector>
 #include <stdexcept>
 
+#include "choice_check.h"
 #include "commands.h"
 #include "number_checks.h"
 #include "demo_scene.h"
@@ -121,17 +122,17 @@ void addPreviewCommand(CLI::App& app) {
     cmd->add_option("--viewport", o->viewport,
                     "glsl: the view drawn by OpenGL (default); rendered: by the path tracer, progressively (key R in the "
                     "window; with --headless, the frame after --passes passes)")
-        ->check(CLI::IsMember({"glsl", "rendered"}));
+        ->check(oneOf({"glsl", "rendered"}));
     cmd->add_option("--passes", o->passes,
                     "With --headless --viewport rendered: the passes (samples a pixel) the frame takes (default: --spp's)")
-        ->check(wholeNumber(1, 1 << 24));
+        ->transform(wholeNumber(1, 1 << 24));
     cmd->add_option("--screenshot", o->screenshot, "With --headless: the image to write (.png, or .exr for linear radiance)");
     addFrameOptions(*cmd, o->frame);
     cmd->add_flag("--no-shadows", o->noShadows, "Light every surface as if nothing stood in the way");
     cmd->add_flag("--no-filter", o->frame.noFilter,
                   "Point-sample the weave in the preview even where it is finer than a pixel (the Render button "
                   "filters only with --filter)");
-    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->check(wholeNumber(0));
+    cmd->add_option("--frames", o->frames, "Window: quit after N frames (0 = when closed, or on SIGINT or SIGTERM)")->transform(wholeNumber(0));
     cmd->add_option("--window-screenshot", o->windowScreenshot, "Window: PNG of the last frame, panel included");
     cmd->add_option("--widget-map", o->widgetMap,
                     "Window: write the panel's widgets (label, ImGui ID, rectangle) and the window's state as JSON to FILE each frame");

@@ -20,7 +20,6 @@
 #include "progress_bar.h"
 #include "render_options.h"
 #include "render_job.h"
-#include "sample_index_check.h"
 #include "scene_camera.h"
 #include "scene_lighting.h"
 #include "scene_loader.h"
@@ -186,11 +185,17 @@ void addRenderCommand(CLI::App& app) {
                     "that woven merge adds up) or .png (sRGB, tone-mapped); default: the scene's name with .exr");
     cmd->add_option("--first-sample", o->firstSample,
                     "index of the first sample (disjoint ranges, e.g. from a job array, merge by sample count)")
-        ->check(sampleIndexCheck(0, kSampleIndexLimit - 1));
-    cmd->add_flag("--list", o->list,
-                  "print the scene's cameras (the numbers --camera takes), materials, meshes and lights, and "
-                  "render nothing");
-    cmd->callback([o] {
+        ->transform(wholeNumber(0, kSampleIndexLimit - 1));
+    CLI::Option* list = cmd->add_flag("--list", o->list,
+                                      "print the scene's cameras (the numbers --camera takes), materials, meshes and "
+                                      "lights, and render nothing");
+    cmd->callback([o, cmd, list] {
+        // --list reads the scene and renders nothing: any option but those of the reading
+        // (--allow-any-path, --strict) would be ignored without a word (`--list -o x.exr` wrote nothing).
+        for (const CLI::Option* option : cmd->get_options())
+            if (o->list && option != list && option->count() > 0 && option->nonpositional() &&
+                !option->check_lname("allow-any-path") && !option->check_lname("strict"))
+                throw CLI::ExcludesError(option->get_name(), list->get_name());
         if (int rc = runRender(*o)) throw CLI::RuntimeError(rc);
     });
 }

@@ -298,7 +298,7 @@ void addSubmitCommand(CLI::App& app) {
     cmd->add_option("-o,--out", o->out, "merged EXR; with several frames a pattern such as frame_%04d.exr")->required();
     cmd->add_option("--tasks", o->tasks, "render tasks per frame, each a range of the samples")
         ->required()
-        ->check(wholeNumber(1, 1000000));
+        ->transform(wholeNumber(1, 1000000));
     cmd->add_option("--frames", o->frames, "A..B: the frame numbers (an animation: SCENE and OUT have a %04d field)");
     cmd->add_option("--job-dir", o->jobDir,
                     "folder of the job's scripts, logs and part files, on a file system every node shares "
@@ -320,7 +320,7 @@ void addSubmitCommand(CLI::App& app) {
     }
     cmd->add_option("--partition", o->sbatch.partition, "Slurm partition");
     cmd->add_option("--time", o->sbatch.time, "Slurm time limit of each job, e.g. 30:00 (sbatch --time)");
-    cmd->add_option("--cpus-per-task", o->sbatch.cpusPerTask, "CPUs of each render task")->check(wholeNumber(1));
+    cmd->add_option("--cpus-per-task", o->sbatch.cpusPerTask, "CPUs of each render task")->transform(wholeNumber(1));
     cmd->add_option("--sbatch", o->sbatch.extra, "one more sbatch argument, e.g. --sbatch=--account=lab (repeatable)");
     cmd->add_flag("--requeue", o->sbatch.requeue,
                   "let Slurm requeue a task that is pre-empted or loses its node (it renders the same samples again)");

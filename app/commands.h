@@ -15,4 +15,8 @@ void addSubmitCommand(CLI::App& app);  // docs/CLUSTER.md
 void addExportCommands(CLI::App& app);  // export, bake, share (docs/EXPORT.md)
 void addFitCommand(CLI::App& app);  // docs/FIT.md
 
+// Every command above, in the order `woven --help` lists them, one of them required (main(),
+// fuzz/fuzz_options); no option of any takes an empty value.
+void addCommands(CLI::App& app);
+
 }  // namespace woven

@@ -11,17 +11,7 @@ int main(int argc, char** argv) {
     CLI::App app{"woven: a renderer for woven fabric"};
     app.set_version_flag("--version", std::string("woven ") + woven::wovenVersion() + " (commit " + woven::wovenCommit() + ")",
                          "print the version and the git commit woven was built from, and exit");
-    app.require_subcommand(1);
-    woven::addPatternCommand(app);
-    woven::addFabricsCommand(app);
-    woven::addBsdfCommands(app);
-    woven::addPreviewCommand(app);
-    woven::addRenderCommand(app);
-    woven::addConvergeCommand(app);
-    woven::addMergeCommand(app);
-    woven::addSubmitCommand(app);
-    woven::addExportCommands(app);
-    woven::addFitCommand(app);
+    woven::addCommands(app);
     // Every file the command reads is an input none of its outputs may replace (output_path.h).
     woven::rememberInputs(true);
     try {

@@ -50,6 +50,25 @@ std::string commandPath(const CLI::App* app) {
     return "woven " + path;
 }
 
+std::string valueCountMessage(const std::string& message) {
+    const size_t colon = message.find(": ");
+    if (colon == std::string::npos) return message;
+    const std::string option = message.substr(0, colon), rest = message.substr(colon + 2);
+    const auto count = [&](const std::string& before) -> std::string {
+        const size_t at = rest.find(before);
+        if (at == std::string::npos) return "";
+        const size_t start = at + before.size();
+        return rest.substr(start, rest.find_first_not_of("0123456789", start) - start);
+    };
+    const auto values = [](const std::string& n) { return n == "1" ? std::string("one value") : n + " values"; };
+    if (rest.rfind("At Most ", 0) == 0)
+        return option + ": takes " + values(count("At Most ")) + ", given " + count("received ") + " (give the option once)";
+    if (rest.rfind("At least ", 0) == 0)
+        return option + ": takes " + values(count("At least ")) + ", given " + count("received ");
+    if (rest.find(" missing") != std::string::npos) return option + ": a value is missing";
+    return message;
+}
+
 }  // namespace
 
 std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {
@@ -114,6 +133,12 @@ int reportParseError(const CLI::App& app, const CLI::ParseError& error, int argc
             message = rest.substr(0, eq) + ": '" + rest.substr(eq + 3) + "' is not a value this option takes (a whole number "
                       "in its range, or a number where it takes one)";
     }
+    // CLI11's counts of values ("--width: At Most 1 required but received 2", "--size: At least 2
+    // required but received 1", "--budgets: 1 required FLOAT:... missing") in woven's words.
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&error)) message = valueCountMessage(message);
+    // CLI11's "--spp excludes --list": either may come first.
+    if (const size_t at = message.find(" excludes "); dynamic_cast<const CLI::ExcludesError*>(&error) && at != std::string::npos)
+        message = message.substr(0, at) + " and " + message.substr(at + 10) + " cannot be given together";
     std::cerr << name << ": error: " << message << "\n(" << name << " --help lists its options)\n";
     return code;
 }

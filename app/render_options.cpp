@@ -7,7 +7,7 @@ namespace woven {
 std::vector<CLI::Option*> addRenderOptions(CLI::App& command, RenderOptions& o) {
     const size_t before = command.get_options().size();
     addFrameOptions(command, o.frame);
-    command.add_option("--threads", o.threads, "worker threads (default: all cores)")->check(wholeNumber(0));
+    command.add_option("--threads", o.threads, "worker threads (default: all cores)")->transform(wholeNumber(0));
     const std::vector<CLI::Option*> all = command.get_options();
     return {all.begin() + std::ptrdiff_t(before), all.end()};
 }

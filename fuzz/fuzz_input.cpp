@@ -1,5 +1,6 @@
 #include "fuzz_input.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,17 @@ FuzzDir::FuzzDir() { writeCompanionFiles(dir_.path().string()); }
 void showRefusal(const std::exception& e) {
     static const bool show = std::getenv("WOVEN_FUZZ_SHOW_ERRORS") != nullptr;
     if (show) std::cerr << "refused: " << e.what() << "\n";
+}
+
+std::vector<std::string> arguments(const uint8_t* data, size_t size) {
+    std::vector<std::string> words{"woven"};
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    for (size_t start = 0; !text.empty() && start <= text.size();) {
+        const size_t end = std::min(text.find('\0', start), text.size());
+        words.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return words;
 }
 
 std::string FuzzDir::write(const std::string& name, const uint8_t* data, size_t size) const {

@@ -7,6 +7,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "temp_dir.h"
 
@@ -25,6 +26,10 @@ private:
 };
 
 void showRefusal(const std::exception& e);
+
+// The bytes as a command line: the words between NUL bytes (no argument can hold one), after
+// argv[0] "woven". A command-line target's seeds are written so (seed_files.h).
+std::vector<std::string> arguments(const uint8_t* data, size_t size);
 
 // Runs `parse` on one input. Refusing bad input by throwing is what woven does, so any
 // std::exception is fine except std::bad_alloc: every size is checked before it is allocated

@@ -178,7 +178,7 @@ void writeCompanionFiles(const std::string& dir) {
 
 void writeSeedCorpora(const std::string& dir) {
     const fs::path root(dir);
-    for (const char* target : {"gltf", "scene_file", "wif", "image", "exr", "bsdf_eval"})
+    for (const char* target : {"gltf", "scene_file", "wif", "image", "exr", "bsdf_eval", "options", "converge"})
         fs::create_directories(root / target);
     const test::TempDir companions;
     writeCompanionFiles(companions.path().string());
@@ -244,6 +244,40 @@ void writeSeedCorpora(const std::string& dir) {
                           json{{"material", rich}, {"uv", {0.5, 0.25}}, {"wi", {0.2, 0.1, 1}}, {"wo", {0.1, 0.4, -1}}}})
         queries += q.dump() + "\n";
     writeText(root / "bsdf_eval" / "queries.jsonl", queries);
+
+    // Command lines, their words joined by NUL bytes (fuzz_input.h): each command with options
+    // of every kind (numbers, whole numbers, lists, flags, choices, repeated options).
+    const auto commandLine = [](const std::vector<std::string>& words) {
+        std::string line;
+        for (size_t i = 0; i < words.size(); ++i) line += (i ? std::string(1, '\0') : "") + words[i];
+        return line;
+    };
+    const std::vector<std::vector<std::string>> commands = {
+        {"render", "scene.json", "--width", "64", "--height", "48", "--spp", "4", "--integrator", "bdpt", "--seed", "7",
+         "--max-depth", "5", "--noise-threshold", "0.02", "--no-denoise", "--exposure", "1.5", "--tone-map", "aces",
+         "--environment", "0.5", "--environment-rotation", "90", "--woven", "*={\"repeat\":[50,50]}", "--threads", "2",
+         "--time", "1", "--first-sample", "16", "-o", "out.exr"},
+        {"render", "scene.gltf", "--no-passes", "--camera", "auto", "--list"},
+        {"preview", "scene.json", "--headless", "--screenshot", "shot.png", "--width", "32", "--height", "24", "--final"},
+        {"merge", "a.exr", "b.exr", "-o", "merged.exr", "--expect-samples", "64"},
+        {"submit", "scene_%04d.json", "--tasks", "4", "--spp", "64", "--job-dir", "job", "--frames", "0..3", "-o", "frame_%04d.exr"},
+        {"export", "scene.json", "--size", "256", "-o", "out.glb"},
+        {"bake", "scene.json", "--size", "64", "-o", "baked"},
+        {"fit", "shot.json", "--target", "Cloth", "--time", "5", "--spp", "4", "-o", "fit.json"},
+        {"pattern", "--pattern", "2,2,1", "--size", "16,8"},
+        {"fabrics", "--json"},
+        {"bsdf-plot", "--material", "{\"preset\":\"denim\"}", "--theta", "30", "--size", "64", "-o", "plot.png"},
+        {"converge", "scene.json", "--budgets", "1,2,4", "--integrators", "path,bdpt", "--filter", "on,off",
+         "--noise-thresholds", "0,0.02", "--denoise", "on", "--reference-time", "10", "--width", "64", "--height", "48"},
+        {"render", "--help"},
+        {"--version"},
+    };
+    for (size_t i = 0; i < commands.size(); ++i)
+        writeText(root / "options" / ("command_" + std::to_string(i)), commandLine(commands[i]));
+    // converge's own arguments (its target parses them without the command's name).
+    writeText(root / "converge" / "every_option", commandLine(std::vector<std::string>(commands[11].begin() + 1, commands[11].end())));
+    writeText(root / "converge" / "out_of_order", commandLine({"s.gltf", "--budgets", "8,0.5,2", "--noise-thresholds", "0.1,0,0.01",
+                                                               "--integrators", "auto", "--out-dir", "out", "--threads", "0"}));
 }
 
 }  // namespace woven::fuzz

@@ -4,7 +4,7 @@
 #
 #   tools/fuzz.sh [--build-dir DIR] [--ctest] [TARGET|all] [SECONDS]
 #
-# TARGET is gltf, scene_file, wif, image, exr or bsdf_eval (default all); SECONDS per target
+# TARGET is gltf, scene_file, wif, image, exr, bsdf_eval, options or converge (default all); SECONDS per target
 # (default 60). Build first: cmake --preset fuzz && cmake --build --preset fuzz.
 # The corpus grows in DIR/corpus/TARGET and is kept between runs (the seeds in
 # DIR/fuzz/seeds/TARGET are read too); crashing inputs go to DIR/artifacts/TARGET/, the log to
@@ -20,7 +20,7 @@ while [[ $# -gt 0 && $1 == --* ]]; do
     *) echo "usage: $0 [--build-dir DIR] [--ctest] [TARGET|all] [SECONDS]" >&2; exit 2 ;;
   esac
 done
-all=(gltf scene_file wif image exr bsdf_eval)
+all=(gltf scene_file wif image exr bsdf_eval options converge)
 which=${1:-all} seconds=${2:-60}
 if [[ $which == all ]]; then targets=("${all[@]}"); else targets=("$which"); fi
 [[ $seconds =~ ^[1-9][0-9]*$ ]] || { echo "$0: SECONDS must be a positive integer, not '$seconds'" >&2; exit 2; }

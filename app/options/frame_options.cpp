@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "choice_check.h"
 #include "integrators.h"
 #include "number_checks.h"
 #include "scene_camera.h"
@@ -18,21 +19,21 @@
 namespace woven {
 
 void addFrameOptions(CLI::App& command, FrameOptions& o) {
-    command.add_option("--width", o.width, "image width (default: the scene's, else 640)")->check(wholeNumber(1, 1 << 15));
-    command.add_option("--height", o.height, "image height (default: the scene's, else 480)")->check(wholeNumber(1, 1 << 15));
-    command.add_option("--spp", o.spp, "samples per pixel (default: the scene's, else 64)")->check(wholeNumber(1, 1 << 24));
+    command.add_option("--width", o.width, "image width (default: the scene's, else 640)")->transform(wholeNumber(1, 1 << 15));
+    command.add_option("--height", o.height, "image height (default: the scene's, else 480)")->transform(wholeNumber(1, 1 << 15));
+    command.add_option("--spp", o.spp, "samples per pixel (default: the scene's, else 64)")->transform(wholeNumber(1, 1 << 24));
     std::string integrators;
     for (const IntegratorKind& kind : integratorKinds())
         integrators += std::string(integrators.empty() ? "" : "; ") + kind.name + ": " + kind.description;
     command.add_option("--integrator", o.integrator,
                        integrators + " (default: the scene's, else " + autoIntegrator().name + ")")
-        ->check(CLI::IsMember(integratorNames()));
-    command.add_option("--seed", o.seed, "random seed");
+        ->check(oneOf(integratorNames()));
+    command.add_option("--seed", o.seed, "random seed")->transform(wholeNumber(0));
     command.add_option("--sampler", o.sampler,
                        "sobol (Owen-scrambled Sobol points, converging faster) or independent (PCG numbers, as woven "
                        "rendered before; default: the scene's, else sobol)")
-        ->check(CLI::IsMember(std::vector<std::string>(std::begin(kSamplerNames), std::end(kSamplerNames))));
-    command.add_option("--max-depth", o.maxDepth, "maximum bounces")->check(wholeNumber(1, 1000));
+        ->check(oneOf(std::vector<std::string>(std::begin(kSamplerNames), std::end(kSamplerNames))));
+    command.add_option("--max-depth", o.maxDepth, "maximum bounces")->transform(wholeNumber(1, 1000));
     std::ostringstream threshold;
     threshold << "adaptive sampling: a pixel stops once the estimated relative error of its mean is below this, "
                  "--spp is then its most; 0: every pixel takes every sample (default: "

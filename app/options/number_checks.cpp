@@ -52,6 +52,7 @@ CLI::Validator wholeNumber(long long lowest, long long highest) {
             if (!whole && !parseNumber(text, number)) return "'" + text + "' is not a number";
             if (!whole) return "'" + text + "' is not a whole number (it must be one " + range + ")";
             if (errno == ERANGE || value < lowest || value > highest) return "'" + text + "' is outside the range: it must be " + range;
+            text = std::to_string(value);
             return std::string();
         },
         "a whole number " + range);

@@ -19,6 +19,9 @@ CLI::Validator positiveNumber();
 
 // A whole number from `lowest` to `highest`, for the options that count (pixels, samples,
 // threads): "'2.5' is not a whole number", "'-1' is outside the range: it must be at least 0".
+// It hands CLI11 the number in plain decimal, so register it with transform(), not check():
+// CLI11 reads a leading 0 as octal (`--spp 010` rendered 8 samples) and "-1" into an unsigned
+// option as 2^64 - 1.
 CLI::Validator wholeNumber(long long lowest, long long highest = std::numeric_limits<long long>::max());
 
 }  // namespace woven

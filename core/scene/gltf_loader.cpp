@@ -421,9 +421,10 @@ private:
         if (flat)
             warn("node '" + nodeName + "': " + std::to_string(flat) + " of its " + std::to_string(flat + kept) +
                  " EXT_mesh_gpu_instancing instances have a zero scale (or flattened axes) and are not drawn");
-        if (const size_t repeated = dropCopies(*instances))
+        if (const size_t repeated = dropCopies(*instances, box))
             warn("node '" + nodeName + "': " + std::to_string(repeated) + " of its EXT_mesh_gpu_instancing instances repeat "
-                 "another's matrix exactly (the same triangles in the same place) and are drawn once");
+                 "another's placement (the same triangles in the same place, within a millionth of their size) and are "
+                 "drawn once");
         kept = instances->size();
         if (kept == 0) {
             scene_.meshes.resize(first);

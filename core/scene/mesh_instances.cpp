@@ -1,10 +1,12 @@
 #include "mesh_instances.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <numeric>
+#include <functional>
+#include <string_view>
+#include <utility>
 
 #include "coordinate_limits.h"
 
@@ -38,15 +40,53 @@ bool invertible(const glm::mat4& placement) {
     return std::abs(det) > 1e-6 * axes && std::isfinite(det);
 }
 
-size_t dropCopies(std::vector<glm::mat4>& placements) {
-    const auto bytes = [&](uint32_t i) { return reinterpret_cast<const char*>(&placements[i]); };
-    std::vector<uint32_t> order(placements.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](uint32_t a, uint32_t b) { return std::memcmp(bytes(a), bytes(b), sizeof(glm::mat4)) < 0; });
+namespace {
+
+// Where an instance places four corners of the box (the lowest and its three neighbours, which
+// fix an affine placement), each coordinate as its cell on a grid of a power of two at most
+// kCoincidentFraction of the placed box's diagonal.
+using PlacementKey = std::array<double, 12>;
+
+PlacementKey placementKey(const glm::mat4& placement, const MeshBox& box) {
+    const glm::dmat4 m(placement);
+    const glm::dvec3 lo(box.lo), hi(box.hi);
+    const glm::dvec3 corners[4] = {lo, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}};
+    glm::dvec3 placed[4];
+    for (int c = 0; c < 4; ++c) placed[c] = glm::dvec3(m * glm::dvec4(corners[c], 1.0));
+    const double diagonal = glm::length(placed[1] + placed[2] + placed[3] - 3.0 * placed[0]);
+    const double cell = diagonal > 0.0 ? std::exp2(std::floor(std::log2(kCoincidentFraction * diagonal))) : 0.0;
+    PlacementKey key;
+    for (int c = 0; c < 4; ++c)
+        for (int a = 0; a < 3; ++a)  // + 0.0: -0 and 0 are one cell
+            key[size_t(3 * c + a)] = (cell > 0.0 ? std::floor(placed[c][a] / cell) : placed[c][a]) + 0.0;
+    return key;
+}
+
+}  // namespace
+
+size_t dropCopies(std::vector<glm::mat4>& placements, const MeshBox& ownBox) {
+    MeshBox box = ownBox;
+    const bool finite = std::isfinite(box.lo.x + box.lo.y + box.lo.z + box.hi.x + box.hi.y + box.hi.z);
+    if (box.empty() || !finite) box.lo = glm::vec3(0.0f), box.hi = glm::vec3(1.0f);
+    // Sorted by the hash of each key, then by index: equal keys meet in a run, the first kept.
+    std::vector<std::pair<size_t, uint32_t>> order(placements.size());
+    for (uint32_t i = 0; i < placements.size(); ++i) {
+        const PlacementKey key = placementKey(placements[i], box);
+        order[i] = {std::hash<std::string_view>{}(std::string_view(reinterpret_cast<const char*>(key.data()), sizeof key)), i};
+    }
+    std::sort(order.begin(), order.end());
     std::vector<bool> copy(placements.size(), false);
-    for (size_t i = 1; i < order.size(); ++i)
-        copy[order[i]] = std::memcmp(bytes(order[i]), bytes(order[i - 1]), sizeof(glm::mat4)) == 0;
+    for (size_t run = 0; run < order.size();) {
+        size_t end = run;
+        while (end < order.size() && order[end].first == order[run].first) ++end;
+        std::vector<PlacementKey> kept;  // the run's distinct keys (one, but for a hash collision)
+        for (size_t i = run; i < end; ++i) {
+            const PlacementKey key = placementKey(placements[order[i].second], box);
+            copy[order[i].second] = std::find(kept.begin(), kept.end(), key) != kept.end();
+            if (!copy[order[i].second]) kept.push_back(key);
+        }
+        run = end;
+    }
     size_t kept = 0;
     for (size_t i = 0; i < placements.size(); ++i)
         if (!copy[i]) placements[kept++] = placements[i];

@@ -37,11 +37,19 @@ MeshBox worldBox(const Mesh& mesh);
 // (relative to the axes' lengths, so that a tiny but sound scale, millimetre parts, passes).
 bool invertible(const glm::mat4& placement);
 
-// Drops the instances whose matrix is exactly another's (the first of each kept, in order) and
-// returns how many: a copy draws the same triangles in the same place, and every ray through a
-// pile of them tests each one (a million coincident copies hung a 32 x 24 render), as coincident
-// triangles are dropped within a primitive.
-size_t dropCopies(std::vector<glm::mat4>& placements);
+// Copies closer than this fraction of their size (the diagonal of the mesh's box as placed) are
+// one copy: a float position holds about 2^-24 of itself, so copies this close differ by a few
+// rounding steps (a matrix composed again, a quaternion normalised another way), and a frame of
+// 32768 pixels across the copy has pixels 32 times as wide.
+constexpr double kCoincidentFraction = 1.0 / (1 << 20);
+
+// Drops the instances that place the mesh's box (`box`; the unit box when empty or unbounded) where
+// an earlier one does, within kCoincidentFraction of the copy's size, and returns how many: a copy
+// draws the same triangles in the same place, and every ray through a pile of them tests each one
+// (a million coincident copies hung a 32 x 24 render), as coincident triangles are dropped within
+// a primitive. Positions are compared on a grid of that spacing, so a pile of copies that straddles
+// a grid line keeps one copy on each side.
+size_t dropCopies(std::vector<glm::mat4>& placements, const MeshBox& box);
 
 // What is wrong with an instance's matrix, or empty: it must be finite and invertible (Embree
 // intersects in the mesh's space through its inverse), and place the mesh's own box (`box`)

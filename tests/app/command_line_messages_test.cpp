@@ -82,6 +82,44 @@ TEST_F(NumberOptions, NonFiniteAndOutOfRangeNumbersAreRefusedNamingTheOption) {
     }
 }
 
+// Numbers read as written: CLI11 read a leading 0 as octal (`--spp 010` rendered 8 samples,
+// `pattern --pattern 010,1,0` drew 8 weft elements) and "-1" into the unsigned seed as 2^64 - 1. A bad choice and a wrong count of values are said in
+// woven's words, not CLI11's ("foo not in {path,bdpt,auto}", "At Most 1 required but received 2").
+TEST_F(NumberOptions, NumbersAreReadAsWrittenAndMistakesAreSaidInWovensWords) {
+    const auto r = runWovenCommand("render " + kScene + " --width 010 --height 8 --spp 010 -o " + file("out.exr"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find(", 10 spp"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(", 10x8,"), std::string::npos) << r.out;
+    const auto pattern = runWovenCommand("pattern --pattern 010,1,0");
+    EXPECT_EQ(pattern.exitCode, 0) << pattern.out;
+    EXPECT_EQ(pattern.out.substr(0, pattern.out.find('\n')), std::string(10, '-') + "|") << pattern.out;
+    const std::string out = " -o " + file("refused.exr");
+    for (const auto& [options, says] : std::vector<std::pair<std::string, std::string>>{
+             {"render " + kScene + " --seed -1" + out, "--seed: '-1' is outside the range: it must be at least 0"},
+             {"render " + kScene + " --integrator foo" + out, "--integrator: 'foo' is not one of path, bdpt or auto"},
+             {"render " + kScene + " --sampler {}" + out, "--sampler: '{}' is not one of independent or sobol"},
+             {"render " + kScene + " --width 10 --width 20" + out, "--width: takes one value, given 2 (give the option once)"},
+             {"converge " + kScene + " --filter maybe --out-dir " + file("refused"), "--filter: 'maybe' is not one of on or off"},
+             {"pattern --size 4", "--size: takes 2 values, given 1"},
+             // An empty value stood for "not given": -o '' wrote the default name, --environment ''
+             // kept the scene's light.
+             {"render " + kScene + " --environment ''" + out, "--environment: '' names nothing"},
+             {"render " + kScene + " -o ''", "--out: '' names nothing"},
+             // --list renders nothing: the options of a render were ignored without a word.
+             {"render " + kScene + " --list" + out, "--out and --list cannot be given together"},
+             {"render " + kScene + " --spp 4 --list", "--spp and --list cannot be given together"},
+             // An azimuth of NaN drew a plot of zeros.
+             {"bsdf-plot --phi nan" + out, "--phi: 'nan' is not a finite number"}}) {
+        const auto refused = runWovenCommand(options);
+        EXPECT_NE(refused.exitCode, 0) << options;
+        EXPECT_NE(refused.out.find(says), std::string::npos) << refused.out;
+        EXPECT_EQ(refused.out.find("required but received"), std::string::npos) << refused.out;
+        EXPECT_EQ(refused.out.find("not in {"), std::string::npos) << refused.out;
+    }
+    EXPECT_FALSE(std::filesystem::exists(file("refused.exr")));
+    EXPECT_FALSE(std::filesystem::exists(file("refused")));
+}
+
 // nlohmann's tags ("[json.exception.out_of_range.406]") are the library's words, not woven's.
 TEST_F(NumberOptions, JsonProblemsAreSaidWithoutTheParsersTags) {
     std::ofstream(file("huge.json")) << R"({"gltf": "cloth_drape.glb", "render": {"width": 1e400}})";

@@ -228,7 +228,7 @@ TEST_F(MergeCommand, RangesPast32BitsAreCheckedAndMergeBitForBit) {
     const std::string scene = std::string(WOVEN_ASSETS_DIR) + "/default_scene.json";
     r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387904 -o " + file("x.exr"));
     EXPECT_NE(r.exitCode, 0);
-    EXPECT_THAT(r.out, testing::HasSubstr("--first-sample: '4611686018427387904' is not a whole number from 0 to"));
+    EXPECT_THAT(r.out, testing::HasSubstr("--first-sample: '4611686018427387904' is outside the range: it must be from 0 to"));
     r = run("render " + scene + " --width 12 --height 9 --first-sample 4611686018427387900 --spp 5 -o " + file("x.exr"));
     EXPECT_NE(r.exitCode, 0);
     EXPECT_THAT(r.out, testing::HasSubstr("--first-sample 4611686018427387900 with --spp 5 ends past sample index 2^62"));

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <stb_image_write.h>
 
@@ -187,8 +188,9 @@ TEST(UntrustedGltf, CoincidentCopiesOfATriangleAreDroppedAndCountedInOneLine) {
 }
 
 // A million instances in one place hung a 32 x 24 render (every ray tests every copy): copies of
-// another's matrix are dropped in one warning, as coincident triangles are. A scale of 1e30 is
-// no "zero scale": it is refused as past the coordinate limit.
+// another's placement are dropped in one warning, as coincident triangles are, also those a few
+// rounding steps away (kCoincidentFraction: 2^-20 of the copy's size). A scale of 1e30 is no
+// "zero scale": it is refused as past the coordinate limit.
 TEST(UntrustedGltf, CoincidentInstancesAreDrawnOnceAndAHugeScaleIsNoZeroScale) {
     TempDir dir;
     const auto write = [&](const std::string& name, const nlohmann::json& attributes, GltfBuilder& b) {
@@ -196,6 +198,11 @@ TEST(UntrustedGltf, CoincidentInstancesAreDrawnOnceAndAHugeScaleIsNoZeroScale) {
         b.useExtension("EXT_mesh_gpu_instancing", true);
         b.setScene({b.addNode({{"mesh", mesh}, {"name", "tree"}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", attributes}}}}}})});
         b.writeGlb(dir.file(name));
+    };
+    const auto instances = [&](const std::string& name) {
+        const SceneDescription scene = loadScene(dir.file(name));
+        EXPECT_EQ(scene.meshes.size(), 1u);
+        return scene.meshes.empty() ? std::vector<glm::mat4>() : *scene.meshes[0].instances;
     };
     GltfBuilder pile;
     std::vector<glm::vec3> t(1000000, glm::vec3(0.0f));
@@ -206,7 +213,34 @@ TEST(UntrustedGltf, CoincidentInstancesAreDrawnOnceAndAHugeScaleIsNoZeroScale) {
     ASSERT_EQ(scene.meshes[0].instances->size(), 2u);
     EXPECT_EQ((*scene.meshes[0].instances)[1][3], glm::vec4(5.0f, 0.0f, 0.0f, 1.0f));
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_THAT(scene.warnings[0], HasSubstr("node 'tree': 999998 of its EXT_mesh_gpu_instancing instances repeat another's matrix"));
+    EXPECT_THAT(scene.warnings[0], HasSubstr("node 'tree': 999998 of its EXT_mesh_gpu_instancing instances repeat another's placement"));
+
+    // A million copies moved and turned by less than the grid's spacing (2^-20 of the leaf's
+    // diagonal, 1.41): each coordinate of the three placed corners that fix a flat leaf lies in at
+    // most two cells, so at most 2^9 copies stay.
+    GltfBuilder near;
+    std::vector<glm::vec3> moved(1000000);
+    std::vector<glm::vec4> turned(1000000);
+    uint32_t state = 12345;
+    const auto jitter = [&] {  // in [-1, 1)
+        state = state * 1664525u + 1013904223u;
+        return float(int32_t(state)) / 2147483648.0f;
+    };
+    const float step = std::ldexp(1.0f, -22);
+    for (size_t i = 0; i < moved.size(); ++i) {
+        moved[i] = glm::vec3(0.3f, 0.2f, 0.1f) + step * glm::vec3(jitter(), jitter(), jitter());
+        turned[i] = glm::normalize(glm::vec4(0.5f * step * jitter(), 0.5f * step * jitter(), 0.5f * step * jitter(), 1.0f));
+    }
+    write("near.glb", {{"TRANSLATION", near.addVec3(moved)}, {"ROTATION", near.addVec4(turned)}}, near);
+    const size_t kept = instances("near.glb").size();
+    EXPECT_GE(kept, 1u);
+    EXPECT_LE(kept, 512u);
+    // Copies eight grid steps apart (8 x 2^-20 of their size) are distinct, all kept.
+    GltfBuilder row;
+    std::vector<glm::vec3> apart(1000);
+    for (size_t i = 0; i < apart.size(); ++i) apart[i] = glm::vec3(0.3f + float(i) * 8.0f * std::ldexp(1.0f, -20), 0.2f, 0.1f);
+    write("row.glb", {{"TRANSLATION", row.addVec3(apart)}}, row);
+    EXPECT_EQ(instances("row.glb").size(), apart.size());
 
     GltfBuilder huge;
     write("huge.glb", {{"SCALE", huge.addVec3({glm::vec3(1e30f)})}}, huge);
