@@ -184,10 +184,9 @@ void PreviewWindow::drawThreadPalette(WovenParams& p) {
     ImGui::TextUnformatted("thread colours");
     const std::vector<glm::vec3> palette = threadPalette(p);
     for (size_t i = 0; i < palette.size(); ++i) {
-        if (i % 8 != 0) ImGui::SameLine();
         glm::vec3 c = palette[i];
-        const std::string label = "##thread colour " + std::to_string(i + 1);
-        if (ui::ColorEdit3(label.c_str(), &c.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_NoInputs)) recolour(p, palette[i], c);
+        const std::string label = "thread colour " + std::to_string(i + 1);
+        if (ui::ColorEdit3(label.c_str(), &c.x, ImGuiColorEditFlags_Float)) recolour(p, palette[i], c);
         if (ImGui::IsItemHovered()) {
             const auto count = [&](const std::vector<glm::vec3>& list) { return std::count(list.begin(), list.end(), palette[i]); };
             ImGui::SetTooltip("%td of %zu ends, %td of %zu picks: a click edits every thread of this colour",

@@ -87,6 +87,9 @@ class Window:
     def __init__(self, woven, tmp, display, args):
         self.tmp = tmp
         self.map_path = os.path.join(tmp, 'map.json')
+        # A window before this one in the same folder left its map: not this window's.
+        if os.path.exists(self.map_path):
+            os.remove(self.map_path)
         self.env = dict(os.environ, DISPLAY=f':{display}', LIBGL_ALWAYS_SOFTWARE='1')
         self.stderr = open(os.path.join(tmp, 'woven.stderr'), 'w+')
         # The window keeps its default 1280x800.
