@@ -26,10 +26,11 @@ from window_truth_xvfb import drag, scene_in, scroll_to  # noqa: E402
 VALUE_KINDS = ('slider', 'drag', 'colour', 'checkbox')
 SIZE = ('--width', '640', '--height', '480', '--spp', '1', '--noise-threshold', '0', '--integrator', 'path',
         '--no-denoise')
-# A mean colour "moved" by more than this share of its length. The preview and the render differ by
-# up to 15 % a block (the fidelity harness), so smaller moves may differ in direction and are not
-# compared.
-MOVED = 0.01
+# A mean colour "moved" by more than this share of its length. The preview may differ from the
+# render by a median 5 % a block (the fidelity harness's bound), and how much differs varies with
+# the parameter, so smaller moves may go different ways and are not compared (the tartan's c_y:
+# +2.5 % in the view, -3 % in the frame).
+MOVED = 0.05
 
 
 def settled(window, timeout=60):
