@@ -28,8 +28,8 @@ SIZE = ('--width', '640', '--height', '480', '--spp', '1', '--noise-threshold', 
         '--no-denoise')
 # A mean colour "moved" by more than this share of its length. The preview may differ from the
 # render by a median 5 % a block (the fidelity harness's bound), and how much differs varies with
-# the parameter, so smaller moves may go different ways and are not compared (the tartan's c_y:
-# +2.5 % in the view, -3 % in the frame).
+# the parameter, so smaller moves may go different ways and are not compared (the tartan's c_y
+# moved the view's mean up and the frame's down, both by over 1 %, not both by 5 %).
 MOVED = 0.05
 
 
