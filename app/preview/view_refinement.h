@@ -19,7 +19,7 @@ inline glm::vec2 refinementOffset(int index) {
     // of the grid sits at (i / 3 + j / 9, j / 3 + i / 9).
     static constexpr int kOrder[kRefinementFrames][2] = {{0, 0},  {-1, -1}, {1, 1},  {-1, 1}, {1, -1},
                                                          {0, -1}, {0, 1},   {-1, 0}, {1, 0}};
-    const glm::vec2 cell(float(kOrder[index][0]), float(kOrder[index][1]));
+    const glm::vec2 cell{float(kOrder[index][0]), float(kOrder[index][1])};
     return cell / 3.0f + glm::vec2(cell.y, cell.x) / 9.0f;
 }
 
