@@ -102,17 +102,28 @@ Environment studioEnvironment() {
     image->width = 512;
     image->height = 256;
     image->pixels.resize(size_t(image->width) * image->height);
-    for (int y = 0; y < image->height; ++y)
+    double weighted = 0.0, solidAngle = 0.0;
+    for (int y = 0; y < image->height; ++y) {
+        const double rowSolidAngle = std::sin(kPiDouble * (y + 0.5) / image->height);
         for (int x = 0; x < image->width; ++x) {
             const glm::vec3 d = equirectDirection({(x + 0.5f) / image->width, (y + 0.5f) / image->height});
-            // A dome brighter at the zenith, a darker floor, blended across the horizon.
-            const float dome = 0.32f + 0.18f * std::max(d.y, 0.0f);
-            const float floorRadiance = 0.16f;
+            // A dome brighter at the zenith over a light grey floor, blended across the horizon:
+            // the backdrop a camera sees behind a model is not much darker than a viewer's grey.
+            const float dome = 0.55f + 0.15f * std::max(d.y, 0.0f);
+            const float floorRadiance = 0.45f;
             const float t = std::clamp(d.y / 0.05f * 0.5f + 0.5f, 0.0f, 1.0f);
             float L = floorRadiance + (dome - floorRadiance) * t;
             for (const SoftBox& box : boxes) L += box.at(d);
             image->at(x, y) = glm::vec3(L);
+            weighted += rowSolidAngle * L;
+            solidAngle += rowSolidAngle;
         }
+    }
+    // As much light, over the sphere, as a uniform environment of radiance 1 (`--environment 1`,
+    // the grey many glTF viewers light a model by): a model is as bright at the defaults as
+    // there, on average, with the soft boxes' shape added.
+    const float scale = float(solidAngle / weighted);
+    for (glm::vec3& p : image->pixels) p *= scale;
     Environment env;
     env.color = glm::vec3(1.0f);
     env.image = std::move(image);

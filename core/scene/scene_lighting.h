@@ -1,6 +1,6 @@
 #pragma once
 // What lights a scene when its file brings no light, as glTF viewers do: a neutral studio
-// environment built into woven (a soft grey dome over a darker floor, a key, a fill and a rim
+// environment built into woven (a soft grey dome over a light grey floor, a key, a fill and a rim
 // soft box); and the command line's --environment, which replaces a scene's environment with an
 // image or a uniform grey.
 #include <memory>
@@ -28,7 +28,8 @@ float lightIrradianceAtCentre(const SceneDescription& scene);
 // as a small area light, L A cos / d^2 with d^2 at least the triangle's area.
 float emitterIrradiance(const SceneDescription& scene, const glm::vec3& at);
 
-// The built-in studio environment (an equirectangular image, 512 x 256).
+// The built-in studio environment (an equirectangular image, 512 x 256), of mean radiance 1
+// over the sphere: on average as bright as `--environment 1`.
 Environment studioEnvironment();
 
 // Why a scene was given the studio environment, as glTF viewers light a file with theirs: it
@@ -37,7 +38,7 @@ Environment studioEnvironment();
 enum class DefaultLighting { None, NoLight, TooDim };
 
 // Irradiance (W/m^2) below which a scene counts as too dim: half what a uniform environment of
-// radiance 1 gives (pi), and about half the studio environment's. glTF viewers add their
+// radiance 1 gives (pi), and about a quarter of what the studio gives a surface facing up. glTF viewers add their
 // environment to a file's own lights, so a file its own lights give less is darker at the
 // defaults than any viewer shows it.
 inline constexpr float kDimIrradiance = 1.5f;

@@ -2,9 +2,12 @@
 // says, and reached by --environment NAME.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <gmock/gmock.h>
 
 #include "environment_mapping.h"
+#include "math_constants.h"
 #include "scene_lighting.h"
 #include "studio_environments.h"
 
@@ -24,6 +27,28 @@ glm::vec3 radianceTowards(const Environment& env, const glm::vec3& d) {
     const glm::vec2 uv = equirectUv(d);
     const Image& image = *env.image;
     return image.at(std::min(int(uv.x * image.width), image.width - 1), std::min(int(uv.y * image.height), image.height - 1));
+}
+
+// What lights a model with no light of its own is on average as bright as `--environment 1`, so
+// a model is not darker at the defaults than a viewer's grey shows it: the mean radiance over the
+// sphere is 1, and a surface facing any way but the floor gets at least half the irradiance a
+// uniform radiance of 1 gives (pi). The floor is darker, as a studio's is.
+TEST(StudioEnvironments, TheDefaultStudioIsAsBrightOnAverageAsAUniformEnvironmentOfOne) {
+    const Environment studio = studioEnvironment();
+    const Image& image = *studio.image;
+    const glm::vec3 facing[] = {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 0, -1}};
+    double radiance = 0.0, solidAngle = 0.0, irradiance[5] = {};
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 d = equirectDirection({(x + 0.5f) / image.width, (y + 0.5f) / image.height});
+            const double dOmega = std::sin(kPiDouble * (y + 0.5) / image.height) * (2.0 * kPiDouble / image.width) *
+                                  (kPiDouble / image.height);
+            radiance += dOmega * image.at(x, y).g;
+            solidAngle += dOmega;
+            for (int n = 0; n < 5; ++n) irradiance[n] += dOmega * image.at(x, y).g * std::max(glm::dot(d, facing[n]), 0.0f);
+        }
+    EXPECT_NEAR(radiance / solidAngle, 1.0, 1e-3);
+    for (int n = 0; n < 5; ++n) EXPECT_GT(irradiance[n], 0.5 * kPiDouble) << "facing " << n;
 }
 
 TEST(StudioEnvironments, EachIsAnImageOfLightWhereItsNameSays) {
