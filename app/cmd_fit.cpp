@@ -16,6 +16,7 @@
 #include "fit_report.h"
 #include "interrupt_guard.h"
 #include "number_checks.h"
+#include "threads_option.h"
 #include "output_path.h"
 #include "progress_bar.h"
 #include "weave_candidates.h"
@@ -135,7 +136,7 @@ void addFitCommand(CLI::App& app) {
     cmd->add_option("--seed", o->seed, "seed of the fit's renders (default 1): the loss is a pure function of the parameters")
         ->transform(wholeNumber(0));
     cmd->add_option("--spp", o->spp, "samples per pixel of the fit's renders (default 4)")->transform(wholeNumber(1, 1024));
-    cmd->add_option("--threads", o->threads, "render threads (default: all cores)")->transform(wholeNumber(0));
+    addThreadsOption(*cmd, o->threads, "render threads (default: all cores)");
     cmd->callback([o] {
         if (int rc = runFit(*o)) throw CLI::RuntimeError(rc);
     });

@@ -8,6 +8,7 @@
 #include "choice_check.h"
 #include "integrators.h"
 #include "number_checks.h"
+#include "threads_option.h"
 
 namespace woven {
 
@@ -51,7 +52,7 @@ void addConvergeOptions(CLI::App& cmd, ConvergeOptions& o) {
         ->check(timeCheck);
     cmd.add_option("--width", o.width, "image width")->transform(wholeNumber(8, 8192));
     cmd.add_option("--height", o.height, "image height")->transform(wholeNumber(8, 8192));
-    cmd.add_option("--threads", o.threads, "threads (0 = all cores)")->transform(wholeNumber(0));
+    addThreadsOption(cmd, o.threads, "threads (0 = all cores)");
     cmd.add_option("--out-dir", o.outDir, "where the reference, CSV and plot go");
     cmd.parse_complete_callback([&o] {
         checkList(o.budgets, "--budgets");

@@ -120,6 +120,17 @@ TEST_F(NumberOptions, NumbersAreReadAsWrittenAndMistakesAreSaidInWovensWords) {
     EXPECT_FALSE(std::filesystem::exists(file("refused")));
 }
 
+// More threads than the machine offers is valid (a job script written for a larger machine): the
+// render runs, capped to the cores, and says so once.
+TEST_F(NumberOptions, MoreThreadsThanCoresRenderWithOneWarning) {
+    const auto r = runWovenCommand("render " + kScene + " --width 8 --height 8 --spp 1 --threads 100000 -o " + file("out.exr"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    const std::string warning = "warning: --threads 100000: woven may use ";
+    ASSERT_NE(r.out.find(warning), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(warning, r.out.find(warning) + 1), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(file("out.exr")));
+}
+
 // nlohmann's tags ("[json.exception.out_of_range.406]") are the library's words, not woven's.
 TEST_F(NumberOptions, JsonProblemsAreSaidWithoutTheParsersTags) {
     std::ofstream(file("huge.json")) << R"({"gltf": "cloth_drape.glb", "render": {"width": 1e400}})";
