@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "fabric_scene.h"
 #include "number_checks.h"
 #include "frame_limits.h"
 #include "frame_denoise.h"
@@ -104,13 +105,13 @@ void listScene(const SceneDescription& scene, std::ostream& out) {
 
 int runRender(RenderCommand o) {
     if (o.list) {
-        listScene(loadScene(o.scene, o.options.frame.load), std::cout);
+        listScene(loadSceneOrFabric(o.scene, o.options.frame.load), std::cout);
         return 0;
     }
     if (o.out.empty()) o.out = std::filesystem::path(o.scene).stem().string() + ".exr";
     checkFrameFileName(o.out);
 
-    auto scene = std::make_shared<SceneDescription>(loadScene(o.scene, o.options.frame.load));
+    auto scene = std::make_shared<SceneDescription>(loadSceneOrFabric(o.scene, o.options.frame.load));
     if (scene->photo)
         std::cerr << "render: " << o.scene << " is a shot: its photo " << scene->photo->image
                   << " is for woven fit; the render does not use it\n";
@@ -175,7 +176,7 @@ int runRender(RenderCommand o) {
 void addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderCommand>();
     CLI::App* cmd = app.add_subcommand("render", "Render a final frame of a scene (.gltf, .glb or a woven .json scene file)");
-    cmd->add_option("scene", o->scene, "scene file")->required();
+    cmd->add_option("scene", o->scene, "scene file (.gltf, .glb, .json), or a fabric on woven's drape: a library fabric's name, a fabric or material .json, a .wif draft or a .u3ma/.u3m")->required();
     addRenderOptions(*cmd, o->options);
     cmd->add_option("--time", o->time, "render for this many seconds (stops after the pass that crosses it; "
                                        "without --spp no sample limit)")

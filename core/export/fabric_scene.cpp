@@ -44,16 +44,16 @@ SceneDescription drape() {
 
 }  // namespace
 
-SceneDescription loadSceneOrFabric(const std::string& argument) {
+SceneDescription loadSceneOrFabric(const std::string& argument, const LoadOptions& options) {
     const std::string extension = lowerExtension(argument);
     std::error_code ec;
     const bool isFile = fs::is_regular_file(argument, ec);
     WovenAssignment fabric{"Cloth", json::object(), "the fabric", isFile ? fs::path(argument).parent_path().string() : ""};
     std::string name = fs::path(argument).stem().string();
-    if (extension == ".gltf" || extension == ".glb") return loadScene(argument);
+    if (extension == ".gltf" || extension == ".glb") return loadScene(argument, options);
     if (extension == ".json") {
         const json j = readJson(argument);
-        if (j.is_object() && j.contains("gltf")) return loadScene(argument);  // a woven scene file
+        if (j.is_object() && j.contains("gltf")) return loadScene(argument, options);  // a woven scene file
         if (j.is_object() && j.contains("material") && j.contains("name")) {  // a fabric file
             fabric.params = j["material"];
             if (j["name"].is_string()) name = j["name"].get<std::string>();

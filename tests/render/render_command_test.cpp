@@ -167,6 +167,21 @@ double meanRadiance(const std::string& exr) {
     return sum / double(image.pixels.size());
 }
 
+// A fabric without a scene renders on woven's drape, as export, bake and share show it: a library
+// fabric by name, a fabric file, a draft. A name that is neither a file nor a fabric is refused.
+TEST(RenderCommand, ABareFabricRendersOnTheDrape) {
+    test::TempDir dir;
+    for (const std::string& fabric : {std::string("denim"), std::string(WOVEN_ASSETS) + "/fabrics/tartan.json",
+                                      std::string(WOVEN_ASSETS) + "/drafts/houndstooth.wif"}) {
+        const Result r = runWoven({"render", fabric, "--spp", "1", "--width", "16", "--height", "12", "--out", dir.file("f.exr")}, dir);
+        ASSERT_EQ(r.exitCode, 0) << fabric << ": " << r.err;
+        EXPECT_GT(meanRadiance(dir.file("f.exr")), 0.0) << fabric;
+        fs::remove(dir.file("f.exr"));
+    }
+    const Result unknown = runWoven({"render", "denimm", "--out", dir.file("f.exr")}, dir);
+    expectFailure(unknown, "denimm: no such file, nor a fabric of the library", "", dir);
+}
+
 TEST(RenderCommand, AnEmissiveLampIsTheScenesLightAndAFaintScreenIsNot) {
     // The lamp gives the scene's centre about 4 W/m^2 (radiance 4 x 1 m^2 / (1 m)^2), above
     // kDimIrradiance: the frame is the one its own light gives, bit for bit, with nothing added.
