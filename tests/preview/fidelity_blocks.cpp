@@ -69,21 +69,22 @@ BlockErrors blockNoise(const Image& core, const Image& variance, const std::vect
     return summarise(sums);
 }
 
-void writeFidelityPicture(const std::string& name, const Image& preview, const Image& core) {
+void writeFidelityPicture(const std::string& name, const Image& preview, const Image& core, int shrink) {
     const char* folder = std::getenv("WOVEN_FIDELITY_PICTURES");
     if (!folder) return;
     Image picture;
-    picture.width = core.width;
-    picture.height = core.height / 2;
+    const int side = core.width / shrink;
+    picture.width = 2 * side;
+    picture.height = core.height / shrink;
     picture.pixels.assign(size_t(picture.width) * size_t(picture.height), glm::vec3(0.0f));
     const Image* halves[2] = {&preview, &core};
     for (int half = 0; half < 2; ++half)
         for (int y = 0; y < picture.height; ++y)
-            for (int x = 0; x < core.width / 2; ++x) {
-                const Image& from = *halves[half];
-                picture.at(half * (core.width / 2) + x, y) =
-                    0.25f * (from.at(2 * x, 2 * y) + from.at(2 * x + 1, 2 * y) + from.at(2 * x, 2 * y + 1) +
-                             from.at(2 * x + 1, 2 * y + 1));
+            for (int x = 0; x < side; ++x) {
+                glm::vec3 sum(0.0f);
+                for (int dy = 0; dy < shrink; ++dy)
+                    for (int dx = 0; dx < shrink; ++dx) sum += halves[half]->at(shrink * x + dx, shrink * y + dy);
+                picture.at(half * side + x, y) = sum / float(shrink * shrink);
             }
     writePng(std::string(folder) + "/" + name + ".png", picture);
 }

@@ -26,7 +26,7 @@ BlockErrors blockErrors(const Image& preview, const Image& core, const std::vect
 BlockErrors blockNoise(const Image& core, const Image& variance, const std::vector<uint8_t>& mask);
 
 // With $WOVEN_FIDELITY_PICTURES naming a folder: <name>.png there, the preview beside core's
-// image, each at half size (tools/preview_fidelity_pictures.sh).
-void writeFidelityPicture(const std::string& name, const Image& preview, const Image& core);
+// image, each its size / `shrink` (1 or 2; tools/preview_fidelity_pictures.sh).
+void writeFidelityPicture(const std::string& name, const Image& preview, const Image& core, int shrink);
 
 }  // namespace woven::test

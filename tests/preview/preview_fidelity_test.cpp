@@ -145,7 +145,7 @@ TEST_P(PreviewFidelity, BlockMeansMatchCore) {
     // As a resting window shows it: the mean of the refinement's 3 x 3 sample points a pixel.
     const Image preview = previewRadiance(scene, kWidth, kHeight, true, false, true, true);
     const BlockErrors e = blockErrors(preview, core, onCloth);
-    writeFidelityPicture(c.subject.name + "_" + c.distance.name, preview, core);
+    writeFidelityPicture(c.subject.name + "_" + c.distance.name, preview, core, 2);
     std::cout << "fidelity " << c.subject.name << " " << c.distance.name << ": " << e.blocks
               << " blocks, median " << e.median << ", worst " << e.worst << "\n";
     ASSERT_GT(e.blocks, size_t(50));

@@ -111,7 +111,7 @@ TEST_P(SceneFidelity, BlockMeansMatchCore) {
     const Image preview = previewRadiance(scene, kWidth, kHeight, true, true, true, true);
     const BlockErrors e = blockErrors(preview, core.radiance, onCloth), frame = blockErrors(preview, core.radiance, onScene);
     const BlockErrors noise = blockNoise(core.radiance, passes.variance, onCloth);
-    writeFidelityPicture("scene_" + name, preview, core.radiance);
+    writeFidelityPicture("scene_" + name, preview, core.radiance, 1);
     std::cout << "fidelity scene " << name << ": " << e.blocks << " blocks on the cloth, median " << e.median
               << ", worst " << e.worst << " (core's noise alone " << noise.median << ", " << noise.worst
               << "); the frame's " << frame.blocks << ": " << frame.median << ", " << frame.worst << "\n";
