@@ -80,7 +80,7 @@ std::vector<uint8_t> wovenMask(SceneDescription scene) {
 
 // The scenes that miss the bounds (median 5 %, worst block 15 %), measured on llvmpipe, held at
 // 1.3 x their figures (the bound where that is larger) so that they cannot get worse unseen; the
-// causes in docs/results/fidelity/scenes.md. Most are light the preview does not have: bounced
+// causes in docs/results/fidelity/README.md. Most are light the preview does not have: bounced
 // off the room, the floor or the inside of a shade.
 struct KnownMiss {
     const char* name;
