@@ -107,11 +107,14 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    const std::vector<std::vector<glm::vec2>> sky = skyVisibility(scene);
+    if (const size_t key = skyVisibilityKey(scene); sky_.empty() || key != skyKey_) {
+        sky_ = skyVisibility(scene);
+        skyKey_ = key;
+    }
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& m = scene.meshes[i];
         if (m.triangles.empty()) continue;
-        meshes_.push_back(std::make_unique<GpuMesh>(m, sky[i]));
+        meshes_.push_back(std::make_unique<GpuMesh>(m, sky_[i]));
         // Emitters cast no shadow here: an area light's samples sit on (or in) its own surface.
         const bool emitter = m.material >= 0 && m.material < int(scene.materials.size()) &&
                              scene.materials[m.material].emits();

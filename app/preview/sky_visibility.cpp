@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
+#include <string_view>
 
 #include "frame.h"
 #include "render_scene.h"
@@ -30,7 +32,24 @@ float visibleShare(const RenderScene& scene, const glm::vec3& p, const glm::vec3
     return float(open) / float(kSkyRays);
 }
 
+template <class T>
+size_t hashBytes(const std::vector<T>& values, size_t seed) {
+    const std::string_view bytes(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    return seed * 1099511628211ULL ^ std::hash<std::string_view>{}(bytes);
+}
+
 }  // namespace
+
+size_t skyVisibilityKey(const SceneDescription& scene) {
+    size_t key = scene.meshes.size();
+    for (const Mesh& mesh : scene.meshes) {
+        key = hashBytes(mesh.positions, key);
+        key = hashBytes(mesh.normals, key);
+        key = hashBytes(mesh.triangles, key);
+        key = hashBytes(mesh.instances ? *mesh.instances : std::vector<glm::mat4>{}, key);
+    }
+    return key;
+}
 
 std::vector<std::vector<glm::vec2>> skyVisibility(const SceneDescription& scene) {
     std::vector<std::vector<glm::vec2>> all;

@@ -17,4 +17,8 @@ namespace woven {
 constexpr int kSkyRays = 64;
 std::vector<std::vector<glm::vec2>> skyVisibility(const SceneDescription& scene);
 
+// A fingerprint of what skyVisibility() reads (each mesh's positions, normals, triangles and
+// instances), so that a material edit, which sends the meshes to the GPU again, traces nothing.
+size_t skyVisibilityKey(const SceneDescription& scene);
+
 }  // namespace woven
