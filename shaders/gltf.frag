@@ -33,6 +33,7 @@ void main() {
     if (dot(ng, wo) < 0.0) ng = -ng;
     vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
     bool backSide = dot(wo, ns) < 0.0;
+    ambientAt(backSide);
 
     vec4 base = gltfBaseColor();
 #if defined(ALPHA_MASK)
@@ -71,7 +72,7 @@ void main() {
 #ifdef MAP_OCCLUSION
     occlusion = 1.0 + occlusionStrength * (lookup(MAP_OCCLUSION).r - 1.0);
 #endif
-    vec3 radiance = ambientRadiance * gltfAlbedo(g, woLocal.z) * occlusion;
+    vec3 radiance = ambientSeen * gltfAlbedo(g, woLocal.z) * occlusion;
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
         vec3 L = incidentLight(i, p, ng, wi);

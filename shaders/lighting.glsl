@@ -1,8 +1,9 @@
 // The scene's lights as the preview sees them (app/preview/preview_lights.cpp builds the list):
 // point, spot and directional lights as they are, emissive triangles as a few point-like
 // samples each, the environment's brightest regions as directional lights and the rest of it as
-// a constant ambient radiance integrated against the lobe. With PREVIEW_SHADOWS, the strongest
-// lights are occluded through ShadowMaps (app/preview/shadow_maps.cpp); the ambient is not.
+// a constant ambient radiance integrated against the lobe, weighed by the share of the sky the
+// vertices see (mesh_varyings.glsl). With PREVIEW_SHADOWS, the strongest lights are occluded
+// through ShadowMaps (app/preview/shadow_maps.cpp).
 // PREVIEW_TRANSMITTED_SHADOWS adds the occluders that let coloured light through.
 #define MAX_LIGHTS 32
 const int LIGHT_POINT = 0, LIGHT_SPOT = 1, LIGHT_DIRECTIONAL = 2, LIGHT_AREA = 3, LIGHT_AREA_TWO_SIDED = 4;
@@ -12,6 +13,15 @@ uniform vec4 lightPosition[MAX_LIGHTS];   // xyz: position, or the direction tra
 uniform vec4 lightAxis[MAX_LIGHTS];       // spot: direction travelled, w = cos(outer); area: unit normal
 uniform vec4 lightIntensity[MAX_LIGHTS];  // rgb: W/sr, W/m^2, or radiance x area (area); w: spot cos(inner)
 uniform vec3 ambientRadiance;
+// The ambient as it reaches the shaded point, on the side seen and on the other: ambientRadiance
+// times that side's share of the sky, as the path tracer's environment is occluded (a fold, the
+// floor below). Set by ambientAt() before a surface shader lights anything.
+vec3 ambientSeen, ambientBehind;
+void ambientAt(bool backSide) {
+    vec2 share = backSide ? vSkyVisibility.yx : vSkyVisibility;
+    ambientSeen = ambientRadiance * share.x;
+    ambientBehind = ambientRadiance * share.y;
+}
 
 #ifdef PREVIEW_SHADOWS
 #define MAX_SHADOW_MAPS 8

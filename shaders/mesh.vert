@@ -2,7 +2,8 @@
 // (gpu_mesh.h), the identity for any other mesh, whose vertices are already there (the identity
 // changes no value). Normals go by the inverse transpose, tangents by the matrix, the handedness
 // turns with a mirroring copy, as core places a copy's hit (render_scene.cpp's hitCorners).
-// Attributes a mesh lacks are zero (uv1, tangent) or white (colour).
+// Attributes a mesh lacks are zero (uv1, tangent) or white (colour). skyVisibility: the sky's
+// share about the normal and about its opposite (app/preview/sky_visibility.h).
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
@@ -10,6 +11,7 @@ layout(location = 3) in vec2 uv1;
 layout(location = 4) in vec4 color;
 layout(location = 5) in vec4 tangent;
 layout(location = 6) in mat4 instanceMatrix;  // locations 6 to 9
+layout(location = 10) in vec2 skyVisibility;
 
 uniform mat4 viewProjection;
 
@@ -19,6 +21,7 @@ out vec2 vUv;
 out vec2 vUv1;
 out vec4 vColor;
 out vec4 vTangent;
+out vec2 vSkyVisibility;
 
 void main() {
     mat3 linear = mat3(instanceMatrix);
@@ -27,6 +30,7 @@ void main() {
     vUv = uv;
     vUv1 = uv1;
     vColor = color;
+    vSkyVisibility = skyVisibility;
     vTangent = vec4(linear * tangent.xyz, determinant(linear) < 0.0 ? -tangent.w : tangent.w);
     gl_Position = viewProjection * vec4(vPosition, 1.0);
 }

@@ -52,7 +52,7 @@ Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
 // Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
 vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     vec3 woLocal = toLocal(f, wo);
-    vec3 sum = ambientRadiance * ashikhminShirleyAlbedo(lobe, woLocal.z);
+    vec3 sum = ambientSeen * ashikhminShirleyAlbedo(lobe, woLocal.z);
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
         vec3 L = incidentLight(i, p, ng, wi);
@@ -124,7 +124,7 @@ vec3 transmittedLight(YarnPoint y, Frame tangent, YarnPoint other, Frame otherTa
     // The ambient light from behind, as reflectedLight() takes it from the front: T is what the
     // yarns pass of light from the whole hemisphere behind them (the transmission lobe, diffuse
     // and along the fibres, integrates to it), so a backlit sky shows through as in core.
-    return sum + ambientRadiance * T;
+    return sum + ambientBehind * T;
 }
 #endif
 
@@ -208,7 +208,7 @@ vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec
         warpFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(1, material.cy, x, 0.0)), tangent.y);
         weftWo[k] = toLocal(weftFrame[k], wo);
         warpWo[k] = toLocal(warpFrame[k], wo);
-        sum += ambientRadiance * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k].z) +
+        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k].z) +
                                   yarnArea.y * ashikhminShirleyAlbedo(warp, warpWo[k].z));
     }
     for (int i = 0; i < lightCount; ++i) {
@@ -248,6 +248,7 @@ void main() {
     if (dot(ng, wo) < 0.0) ng = -ng;
     vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
     bool backSide = dot(wo, ns) < 0.0;
+    ambientAt(backSide);
 #ifdef MAP_NORMAL
     vec3 t, b;
     if (tangentSpace(ns, vTangent, t, b)) ns = normalMapped(ns, t, b, lookup(MAP_NORMAL).xyz, normalScale);

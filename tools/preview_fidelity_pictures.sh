@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# docs/results/fidelity/<subject>.png: the pictures of docs/RESULTS.md's table of the preview
-# against core. The harness (test_preview's Shipped/PreviewFidelity cases) writes each case's
-# preview beside core's image at half size; this puts a subject's near, mid and far side by side
-# (the cloth, not the black above it) in 64 colours (ImageMagick, tools/install-deps.sh --tests),
-# about 10 KB a row. About a minute on 2 cores.
+# docs/results/fidelity/<subject>.png and scene_<scene>.png: the pictures of the tables of the
+# preview against core (docs/results/fidelity/README.md). The harnesses (test_preview's
+# Shipped/PreviewFidelity and Shipped/SceneFidelity cases) write each case's preview beside core's
+# image; this puts a subject's near, mid and far side by side (the cloth, not the black above it)
+# and keeps each scene's pair as it is, in 64 colours (ImageMagick, tools/install-deps.sh
+# --tests), about 10 KB a row. About two minutes on 2 cores.
 # Usage: tools/preview_fidelity_pictures.sh [test_preview-binary] [out-folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,7 +13,7 @@ out=${2:-docs/results/fidelity}
 command -v convert >/dev/null || { echo "preview_fidelity_pictures.sh: ImageMagick's convert is missing (tools/install-deps.sh --tests installs it)" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-WOVEN_FIDELITY_PICTURES=$tmp "$test_preview" --gtest_filter='Shipped/PreviewFidelity.*' >"$tmp/log" ||
+WOVEN_FIDELITY_PICTURES=$tmp "$test_preview" --gtest_filter='Shipped/PreviewFidelity.*:Shipped/SceneFidelity.*' >"$tmp/log" ||
     { cat "$tmp/log" >&2; echo "preview_fidelity_pictures.sh: the harness failed (its output above)" >&2; exit 1; }
 mkdir -p "$out"
 for near in "$tmp"/*_near.png; do
@@ -20,4 +21,8 @@ for near in "$tmp"/*_near.png; do
     convert "$near" "$tmp/${subject}_mid.png" "$tmp/${subject}_far.png" -crop 160x45+0+15 +repage -bordercolor white -border 1x0 +append \
         -colors 64 "PNG8:$out/$subject.png"
 done
+for scene in "$tmp"/scene_*.png; do
+    convert "$scene" -colors 64 "PNG8:$out/$(basename "$scene")"
+done
+grep '^fidelity' "$tmp/log"
 ls "$out"

@@ -10,6 +10,7 @@ struct Vertex {
     glm::vec3 position, normal;
     glm::vec2 uv, uv1;
     glm::vec4 color, tangent;
+    glm::vec2 skyVisibility;
 };
 
 void attribute(GLuint location, int size, size_t offset) {
@@ -25,7 +26,7 @@ void instanceMatrices(GLsizei first) {
 }
 }  // namespace
 
-GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
+GpuMesh::GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility) : material_(mesh.material) {
     std::vector<Vertex> vertices(mesh.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i) {
         vertices[i].position = mesh.positions[i];
@@ -34,6 +35,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
         vertices[i].uv1 = mesh.uvs1.empty() ? glm::vec2(0.0f) : mesh.uvs1[i];
         vertices[i].color = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[i];
         vertices[i].tangent = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
+        vertices[i].skyVisibility = skyVisibility[i];
     }
     indexCount_ = GLsizei(mesh.triangles.size() * 3);
     glGenVertexArrays(1, &vao_);
@@ -51,6 +53,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) : material_(mesh.material) {
     attribute(3, 2, offsetof(Vertex, uv1));
     attribute(4, 4, offsetof(Vertex, color));
     attribute(5, 4, offsetof(Vertex, tangent));
+    attribute(kSkyVisibilityLocation, 2, offsetof(Vertex, skyVisibility));
     if (mesh.instances) {
         std::vector<glm::mat4> matrices;
         matrices.reserve(mesh.instances->size());

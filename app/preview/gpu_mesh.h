@@ -1,10 +1,12 @@
 #pragma once
-// One scene mesh in GPU buffers: interleaved position, normal, both uv sets, colour and tangent
+// One scene mesh in GPU buffers: interleaved position, normal, both uv sets, colour, tangent
 // (zeros where the mesh has none, white for colour: the shader then falls back to the geometric
-// normal and one weave element). An instanced mesh (Mesh::instances) also keeps its copies'
+// normal and one weave element) and the sky's share on each side (sky_visibility.h). An instanced mesh (Mesh::instances) also keeps its copies'
 // matrices, one per instance (mesh.vert's instanceMatrix), and is drawn by one instanced draw per
 // handedness; any other has the identity there, which places each vertex exactly where it is.
 #include <epoxy/gl.h>
+
+#include <vector>
 
 #include "scene_description.h"
 
@@ -12,7 +14,8 @@ namespace woven {
 
 class GpuMesh {
 public:
-    explicit GpuMesh(const Mesh& mesh);
+    // skyVisibility: one per vertex, as skyVisibility() gives them.
+    GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
@@ -21,7 +24,8 @@ public:
     int material() const { return material_; }
 
     // The attribute locations mesh.vert and shadow_depth.vert read the instance's matrix from.
-    static constexpr GLuint kInstanceMatrixLocation = 6;
+    static constexpr GLuint kInstanceMatrixLocation = 6;  // to 9
+    static constexpr GLuint kSkyVisibilityLocation = 10;
 
 private:
     GLuint vao_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, instanceBuffer_ = 0;

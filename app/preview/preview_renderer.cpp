@@ -9,6 +9,7 @@
 #include "gl_error.h"
 #include "orbit_camera.h"
 #include "sheen_lobe.h"
+#include "sky_visibility.h"
 #include "display_transform.h"
 #include "woven_params_json.h"
 
@@ -106,9 +107,14 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    for (const Mesh& m : scene.meshes) {
+    if (const size_t key = skyVisibilityKey(scene); sky_.empty() || key != skyKey_) {
+        sky_ = skyVisibility(scene);
+        skyKey_ = key;
+    }
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& m = scene.meshes[i];
         if (m.triangles.empty()) continue;
-        meshes_.push_back(std::make_unique<GpuMesh>(m));
+        meshes_.push_back(std::make_unique<GpuMesh>(m, sky_[i]));
         // Emitters cast no shadow here: an area light's samples sit on (or in) its own surface.
         const bool emitter = m.material >= 0 && m.material < int(scene.materials.size()) &&
                              scene.materials[m.material].emits();

@@ -80,6 +80,9 @@ private:
     std::unique_ptr<ShadowMaps> shadows_;
     std::vector<const GpuMesh*> shadowCasters_;  // every mesh but the emitters
     unsigned meshGeneration_ = 0;
+    // skyVisibility() of the meshes last uploaded, and their skyVisibilityKey().
+    std::vector<std::vector<glm::vec2>> sky_;
+    size_t skyKey_ = 0;
     SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
     void accumulate(int refinement);
 

@@ -11,12 +11,11 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
-#include "display_transform.h"
 #include "fabric_library.h"
+#include "fidelity_blocks.h"
 #include "flat_cloth.h"
 #include "gl_test_context.h"
 #include "material_json.h"
@@ -59,46 +58,6 @@ std::vector<Case> cases() {
     for (const Subject& s : subjects())
         for (const Distance& d : kDistances) all.push_back({s, d});
     return all;
-}
-
-struct BlockErrors {
-    double median = 0.0, worst = 0.0;
-    size_t blocks = 0;
-};
-
-// |preview - core|_1 / (|core|_1 + floor) of each 8 x 8 block wholly on the cloth, the floor 2 %
-// of core's mean over those blocks (as relativeError()'s), so near-black blocks are not judged by
-// their rounding.
-BlockErrors blockErrors(const Image& preview, const Image& core, const std::vector<uint8_t>& onCloth) {
-    constexpr int kBlock = 8;
-    std::vector<std::pair<double, double>> sums;  // (|difference|_1, |core|_1) of each block's means
-    double coreTotal = 0.0;
-    for (int by = 0; by + kBlock <= core.height; by += kBlock)
-        for (int bx = 0; bx + kBlock <= core.width; bx += kBlock) {
-            glm::dvec3 p(0.0), c(0.0);
-            bool whole = true;
-            for (int y = by; y < by + kBlock; ++y)
-                for (int x = bx; x < bx + kBlock; ++x) {
-                    const size_t i = size_t(y) * size_t(core.width) + size_t(x);
-                    whole = whole && onCloth[i];
-                    p += glm::dvec3(preview.pixels[i]);
-                    c += glm::dvec3(core.pixels[i]);
-                }
-            if (!whole) continue;
-            const glm::dvec3 d = glm::abs(p - c);
-            sums.emplace_back(d.x + d.y + d.z, c.x + c.y + c.z);
-            coreTotal += c.x + c.y + c.z;
-        }
-    BlockErrors e;
-    e.blocks = sums.size();
-    if (sums.empty()) return e;
-    const double floor = 0.02 * coreTotal / double(sums.size());
-    std::vector<double> errors;
-    for (const auto& [difference, reference] : sums) errors.push_back(difference / (reference + floor));
-    std::sort(errors.begin(), errors.end());
-    e.median = errors[errors.size() / 2];
-    e.worst = errors.back();
-    return e;
 }
 
 // The weave's period and direction: the magnitude spectrum of a 64 x 64 window of the image's
@@ -147,27 +106,6 @@ Spectrum spectrum(const Image& image, glm::ivec2 corner) {
     return s;
 }
 
-// With $WOVEN_FIDELITY_PICTURES naming a folder, each case writes there its preview beside core's
-// image at half size, <subject>_<distance>.png: docs/RESULTS.md's pictures.
-void writePicture(const std::string& name, const Image& preview, const Image& core) {
-    const char* folder = std::getenv("WOVEN_FIDELITY_PICTURES");
-    if (!folder) return;
-    Image picture;
-    picture.width = core.width;
-    picture.height = core.height / 2;
-    picture.pixels.assign(size_t(picture.width) * size_t(picture.height), glm::vec3(0.0f));
-    const Image* halves[2] = {&preview, &core};
-    for (int half = 0; half < 2; ++half)
-        for (int y = 0; y < picture.height; ++y)
-            for (int x = 0; x < core.width / 2; ++x) {
-                const Image& from = *halves[half];
-                picture.at(half * (core.width / 2) + x, y) =
-                    0.25f * (from.at(2 * x, 2 * y) + from.at(2 * x + 1, 2 * y) + from.at(2 * x, 2 * y + 1) +
-                             from.at(2 * x + 1, 2 * y + 1));
-            }
-    writePng(std::string(folder) + "/" + name + ".png", picture);
-}
-
 // The case that misses the bounds (median 5 %, worst block 15 %), measured on llvmpipe with the
 // refinement, held at 1.3 x its measured figure so that it cannot get worse unseen
 // (docs/RESULTS.md, "The preview against core on everything woven ships"): houndstooth mid (worst
@@ -207,7 +145,7 @@ TEST_P(PreviewFidelity, BlockMeansMatchCore) {
     // As a resting window shows it: the mean of the refinement's 3 x 3 sample points a pixel.
     const Image preview = previewRadiance(scene, kWidth, kHeight, true, false, true, true);
     const BlockErrors e = blockErrors(preview, core, onCloth);
-    writePicture(c.subject.name + "_" + c.distance.name, preview, core);
+    writeFidelityPicture(c.subject.name + "_" + c.distance.name, preview, core, 2);
     std::cout << "fidelity " << c.subject.name << " " << c.distance.name << ": " << e.blocks
               << " blocks, median " << e.median << ", worst " << e.worst << "\n";
     ASSERT_GT(e.blocks, size_t(50));

@@ -1,0 +1,32 @@
+#pragma once
+// The fidelity harnesses' measure of the preview against core (preview_fidelity_test.cpp on the
+// flat cloth, scene_fidelity_test.cpp on the shipped scenes): 8 x 8 block means, and the pictures
+// of docs/results/fidelity/.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene_description.h"
+
+namespace woven::test {
+
+struct BlockErrors {
+    double median = 0.0, worst = 0.0;
+    size_t blocks = 0;
+};
+
+// |preview - core|_1 / (|core|_1 + floor) of each 8 x 8 block wholly in `mask`, the floor 2 % of
+// core's mean over those blocks (as relativeError()'s), so near-black blocks are not judged by
+// their rounding.
+BlockErrors blockErrors(const Image& preview, const Image& core, const std::vector<uint8_t>& mask);
+
+// Over the same blocks, the error core's own noise alone gives a block in expectation: from
+// `variance`, each pixel's mean's per channel (RenderPasses::variance), sqrt(2 / pi) times each
+// channel's standard deviation of the block's mean, summed, over (|core|_1 + floor).
+BlockErrors blockNoise(const Image& core, const Image& variance, const std::vector<uint8_t>& mask);
+
+// With $WOVEN_FIDELITY_PICTURES naming a folder: <name>.png there, the preview beside core's
+// image, each its size / `shrink` (1 or 2; tools/preview_fidelity_pictures.sh).
+void writeFidelityPicture(const std::string& name, const Image& preview, const Image& core, int shrink);
+
+}  // namespace woven::test
