@@ -122,7 +122,7 @@ TEST(EnvironmentRotation, TurnsTheHighlightTheSameWayInTheGlslViewAndThePathTrac
 // Each studio environment (studio_environments.h) on a grey sphere seen from the side, direct
 // light: the mean radiance over the sphere in the GLSL view against the path tracer's. Measured
 // (Lambert, and glossy of roughness 0.3): 0.97 to 1.04 of it; the bound is twice the worst. Where
-// the light falls on the sphere agrees less: docs/RESULTS.md, "The rendered view".
+// the light falls on the sphere agrees less: docs/results/rendered_view.md.
 TEST(EnvironmentStrength, StudioEnvironmentsLightASphereAsStronglyInBothViews) {
     RenderSettings settings = directLight();
     for (const float roughness : {1.0f, 0.3f})
