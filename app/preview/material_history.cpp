@@ -64,7 +64,7 @@ void PreviewWindow::handleShortcuts() {
     if (!io.KeyCtrl || io.WantTextInput) return;  // a text field has its own undo
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? redo() : undo();
     else if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
-    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) attempt([&] { saveSceneFile(); });
+    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) attempt([&] { saveSceneFile(savePath_, false); });
 }
 
 void PreviewWindow::drawUndoButtons() {
@@ -79,15 +79,18 @@ void PreviewWindow::drawUndoButtons() {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
 }
 
-void PreviewWindow::saveSceneFile() {
+void PreviewWindow::saveSceneFile(const std::string& path, bool startAnew) {
     SceneSave save;
     for (const WovenEdit& e : edits_->edits()) save.materials.emplace_back(e.target, e.params);
     if (camera_.moved()) save.camera = viewOf(camera_.camera());
     save.render = {render_.width, render_.height, render_.spp, render_.integrator, samplerName(render_.sampler),
                    render_.noiseThreshold};
     if (scene().environment.color != loadedEnvironment_) save.environmentColor = scene().environment.color;
-    saveScene(materialPath_, scenePath_, save);
-    status_ = std::string("saved ") + materialPath_;
+    save.inputs = scene().inputFiles;
+    save.startAnew = startAnew;
+    saveScene(path, scenePath_, save);
+    savePath_ = path;
+    status_ = "saved " + path;
 }
 
 // Unmoved, the scene's own camera, which the saved file keeps; moved, the view the file is given.

@@ -269,10 +269,14 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
 
     ui::InputText("scene file", materialPath_, sizeof materialPath_);
     const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-    if (ui::Button("Save")) attempt([&] { saveSceneFile(); });
+    if (ui::Button("Save")) attempt([&] { saveSceneFile(savePath_, false); });
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Ctrl+S: every woven material, the view and the render settings into the scene file, which "
-                          "woven render renders as the Render button does");
+        ImGui::SetTooltip("Ctrl+S: every woven material, the view and the render settings into %s, which woven render "
+                          "renders as the Render button does", savePath_.c_str());
+    ImGui::SameLine();
+    if (ui::Button("Save As")) attempt([&] { saveSceneFile(materialPath_, true); });
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the same into a new woven scene file (.json) named by \"scene file\"; Save then writes there");
     ImGui::SameLine();
     if (ui::Button("Load material")) {
         attempt([&] {

@@ -137,7 +137,8 @@ void PreviewWindow::openScene(const std::string& path) {
     messages_ = loaded.warnings;  // printed on stderr as the scene was read
     edits_.emplace(std::move(loaded));
     scenePath_ = path;
-    copyToBuffer(materialPath_, besideScene(path, "-tuned.json", "material.json"));
+    savePath_ = besideScene(path, "-tuned.json", "material.json");
+    copyToBuffer(materialPath_, savePath_);
     copyToBuffer(imagePath_, besideScene(path, "-render.png", "render.png"));
     copyToBuffer(exportPath_, besideScene(path, "-export.glb", "scene.glb"));
     renderer_->setMeshes(scene());

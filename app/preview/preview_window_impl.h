@@ -121,8 +121,9 @@ private:
     // Ctrl+Z, Ctrl+Shift+Z (or Ctrl+Y), Ctrl+S: unless a text field takes the keys.
     void handleShortcuts();
     void drawUndoButtons();
-    // The scene file at the panel's path: every edit, the view and the Render button's settings.
-    void saveSceneFile();
+    // A woven scene file at `path`: every edit, the view and the Render button's settings; Save
+    // writes it there from then on. `startAnew` (Save As): the opened scene, not what the file held.
+    void saveSceneFile(const std::string& path, bool startAnew);
     // The Render button's camera: the one a scene file saved now renders through.
     Camera renderCamera() const;
     // A warning: on stderr as the commands print it, and in the panel's Messages.
@@ -207,7 +208,8 @@ private:
     glm::dvec3 viewMean_{0.0};  // its mean linear radiance
     std::string status_;
     std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
-    char materialPath_[512] = "material.json";
+    char materialPath_[512] = "material.json";  // Save As's and Load material's file
+    std::string savePath_;  // Save's: beside the scene, until Save As chose another
     glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
 
     UndoHistory<MaterialState> history_;
