@@ -43,9 +43,9 @@ void PreviewWindow::undo() {
     if (std::optional<MaterialState> before = history_.undo(materialState())) {
         restore(*before);
         committed_ = std::move(*before);
-        status_ = "undone";
+        status_.say("undone");
     } else {
-        status_ = "nothing to undo";
+        status_.say("nothing to undo");
     }
 }
 
@@ -53,9 +53,9 @@ void PreviewWindow::redo() {
     if (std::optional<MaterialState> after = history_.redo(materialState())) {
         restore(*after);
         committed_ = std::move(*after);
-        status_ = "redone";
+        status_.say("redone");
     } else {
-        status_ = "nothing to redo";
+        status_.say("nothing to redo");
     }
 }
 
@@ -64,7 +64,7 @@ void PreviewWindow::handleShortcuts() {
     if (!io.KeyCtrl || io.WantTextInput) return;  // a text field has its own undo
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? redo() : undo();
     else if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
-    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) attempt([&] { saveSceneFile(savePath_, false); });
+    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) status_.attempt([&] { saveSceneFile(savePath_, false); });
 }
 
 void PreviewWindow::drawUndoButtons() {
@@ -90,7 +90,7 @@ void PreviewWindow::saveSceneFile(const std::string& path, bool startAnew) {
     save.startAnew = startAnew;
     saveScene(path, scenePath_, save);
     savePath_ = path;
-    status_ = "saved " + path;
+    status_.say("saved " + path);
 }
 
 // Unmoved, the scene's own camera, which the saved file keeps; moved, the view the file is given.

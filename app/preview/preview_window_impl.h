@@ -1,8 +1,8 @@
 #pragma once
 // The previewer window's class, private to app/preview: its loop and mouse handling are in
 // preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
-// render_panel.cpp (the Render button), fit_panel.cpp (woven fit) and material_panel.cpp
-// (selection, material, draft).
+// render_panel.cpp (the Render button), fit_section.h (woven fit, an object of its own) and
+// material_panel.cpp (selection, material, draft).
 #include <epoxy/gl.h>
 // epoxy must come first: GLFW would otherwise include the system GL header.
 #include <GLFW/glfw3.h>
@@ -19,7 +19,7 @@
 #include "fabric_choice.h"
 #include "fabric_menu.h"
 #include "final_render.h"
-#include "fit_job.h"
+#include "fit_section.h"
 #include "interactive_resolution.h"
 #include "orbit_camera.h"
 #include "preview_lights.h"
@@ -27,6 +27,7 @@
 #include "preview_window.h"
 #include "rendered_viewport.h"
 #include "scene_picker.h"
+#include "status_line.h"
 #include "undo_history.h"
 #include "view_refinement.h"
 #include "widget_map.h"
@@ -126,22 +127,12 @@ private:
     void saveSceneFile(const std::string& path, bool startAnew);
     // The Render button's camera: the one a scene file saved now renders through.
     Camera renderCamera() const;
-    // A warning: on stderr as the commands print it, and in the panel's Messages.
-    void warn(const std::string& line);
-    void drawMessages();
-    // Runs `step`; an exception it throws becomes the status line.
-    template <typename Step>
-    void attempt(Step&& step) {
-        try {
-            step();
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
     void drawLightControls();
     void drawRenderControls();
-    void drawFitControls();
+    // The finished fit's material into the edit it was started for, now the edited one.
     void applyFinishedFit();
+    // The target of the edit the panel tunes; empty for none.
+    std::string editedTarget() const;
     // The length per UV unit of the target's meshes, measured once a scene (nullopt: no UVs).
     const std::optional<glm::dvec2>& metresPerUvOf(const std::string& target);
     void updateFinalTexture(const FilmImage& film);
@@ -156,9 +147,6 @@ private:
     nlohmann::json renderedViewState() const;
     void writeWindowScreenshot(const std::string& path);
     void writeWidgetMap(const std::string& path);
-    // `value` within [lo, hi], saying so in the status line when it was not.
-    template <typename T>
-    void clampSetting(const char* name, T& value, T lo, T hi);
     WovenParams* editedParams();
     SceneDescription& scene() { return edits_->sceneForLighting(); }
 
@@ -206,8 +194,7 @@ private:
     int refinement_ = 0;  // the frame of the running mean last rendered
     std::string viewChecksum_;  // of the last settled view, with --widget-map
     glm::dvec3 viewMean_{0.0};  // its mean linear radiance
-    std::string status_;
-    std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
+    StatusLine status_;  // what the last action said, and the warnings since the scene was opened
     char materialPath_[512] = "material.json";  // Save As's and Load material's file
     std::string savePath_;  // Save's: beside the scene, until Save As chose another
     glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
@@ -235,13 +222,7 @@ private:
     std::map<std::string, std::optional<glm::dvec2>> metresPerUv_;
     std::string measuresLine_;
 
-    // The Fit section's job, the edit it fits (until it is applied) and whether the last one was.
-    FitJob fit_;
-    std::string fitTarget_;
-    bool fitApplied_ = false;
-    char fitShots_[1024] = "";
-    char fitSwatch_[256] = "";
-    double fitSeconds_ = 180.0;
+    FitSection fit_;
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;
