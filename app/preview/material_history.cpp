@@ -23,7 +23,7 @@ void PreviewWindow::commitCompletedEdit() {
 }
 
 MaterialState PreviewWindow::materialState() const {
-    return {edits_->edits(), editIndex_, draft_, draftEdit_, chosenFabric_};
+    return {edits_->edits(), editIndex_, draft_, draftEdit_, fabrics_.chosen()};
 }
 
 void PreviewWindow::restore(MaterialState state) {
@@ -31,7 +31,7 @@ void PreviewWindow::restore(MaterialState state) {
     editIndex_ = state.editIndex;
     draft_ = std::move(state.draft);
     draftEdit_ = state.draftEdit;
-    chosenFabric_ = std::move(state.chosenFabric);
+    fabrics_.setChosen(std::move(state.chosenFabric));
     if (draft_) copyToBuffer(draftPath_, draft_->name());
     showFinal_ = false;
     ++sceneGeneration_;

@@ -19,12 +19,11 @@
 
 namespace woven {
 
-// The Fabrics menu, and what a weaver quotes of the edited material where its meshes' size is known.
+// The Fabrics menu: a fabric chosen there becomes the edited material, its draft (or its weave
+// as one) in the draft view.
 void PreviewWindow::drawFabricControls(WovenParams& p) {
-    if (!fabricMenu_) fabricMenu_ = std::make_unique<FabricMenu>();
-    const std::string target = edits_->edits()[size_t(editIndex_)].target;
-    const auto chosenHere = [&] { return chosenFabric_ && chosenFabric_->target == target ? &*chosenFabric_ : nullptr; };
-    if (const std::string name = fabricMenu_->draw("fabric", chosenHere() ? chosenHere()->name : ""); !name.empty()) {
+    const std::string target = editedTarget();
+    if (const std::string name = fabrics_.drawMenu(target); !name.empty()) {
         status_.attempt([&] {
             std::vector<std::string> warnings;
             ChosenFabric chosen = chooseFabric(target, name, scene(), edits_->meshesOf(target), warnings);
@@ -32,42 +31,16 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
             materialEdited();
             showDraftOf(chosen.wif, warnings);
             if (chosen.wif.empty()) showWeaveAsDraft(p, name);
-            chosenFabric_ = std::move(chosen);
+            fabrics_.setChosen(std::move(chosen));
             status_.say("fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")"));
             for (const std::string& w : warnings) status_.warn(w);
         });
     }
-    measuresLine_.clear();
-    const std::optional<glm::dvec2>& scale = metresPerUvOf(target);
-    if (!scale) {
-        ImGui::TextDisabled("(its meshes have no UVs to measure the cloth by)");
-        return;
-    }
-    try {
-        validate(p);  // the sliders' message below says what is wrong
-    } catch (const std::invalid_argument&) {
-        return;
-    }
-    measuresLine_ = describe(measureOnMesh(p, *scale, chosenHere()));
-    // One figure a line: ImGui wraps within a number ("0." and "16 cm").
-    std::string lines = measuresLine_;
-    for (size_t at = lines.find(", "); at != std::string::npos; at = lines.find(", ", at)) lines.replace(at, 2, "\n");
-    ImGui::TextUnformatted(lines.c_str());
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the repeat on its meshes, %.3g x %.3g cm per UV unit; the yarn counts of the fabric chosen "
-                          "while its repeat and yarn widths stay, else each side weighed from its width",
-                          100.0 * scale->x, 100.0 * scale->y);
+    fabrics_.drawMeasures(target, p, scene(), edits_->meshesOf(target));
 }
 
 const std::optional<glm::dvec2>& PreviewWindow::metresPerUvOf(const std::string& target) {
-    auto [scale, first] = metresPerUv_.try_emplace(target);
-    if (first) {
-        try {
-            scale->second = worldLengthPerUv(scene(), edits_->meshesOf(target));
-        } catch (const std::invalid_argument&) {  // no UVs: a cloth of no known size
-        }
-    }
-    return scale->second;
+    return fabrics_.metresPerUv(target, scene(), edits_->meshesOf(target));
 }
 
 void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>& warnings) {
@@ -294,7 +267,7 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
             std::vector<std::string> warnings;
             const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
             p = scaledToMeshes(read, scene(), edits_->meshesOf(target), warnings);
-            if (chosenFabric_ && chosenFabric_->target == target) chosenFabric_.reset();
+            if (fabrics_.chosenFor(target)) fabrics_.setChosen(std::nullopt);
             materialEdited();
             status_.say(std::string("loaded ") + materialPath_);
             if (!read.wif.empty()) showDraftOf(read.wif, warnings);

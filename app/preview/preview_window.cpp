@@ -118,7 +118,7 @@ PreviewWindow::~PreviewWindow() {
     rendered_.stop();
     glDeleteTextures(1, &finalTexture_);
     glDeleteTextures(1, &renderedTexture_);
-    fabricMenu_.reset();
+    fabrics_ = FabricsSection();  // the menu's textures go while the context is current
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -144,8 +144,7 @@ void PreviewWindow::openScene(const std::string& path) {
     renderer_->setMeshes(scene());
     picker_.reset();
     pickedMesh_ = -1;
-    chosenFabric_.reset();
-    metresPerUv_.clear();
+    fabrics_.reset();
     lights_ = PreviewLights::fromScene(scene());
     camera_ = OrbitCamera::forScene(scene());
     // The panel starts on the first woven material, as an edit of its own name (no change yet).
@@ -214,7 +213,7 @@ void PreviewWindow::applyFinishedFit() {
     const int fitted = fit_.applyFinished(*edits_, metresPerUv, status_);
     if (fitted < 0) return;
     editIndex_ = fitted;
-    chosenFabric_.reset();
+    fabrics_.setChosen(std::nullopt);
     materialEdited();
     applyEdits();
 }
@@ -422,16 +421,16 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     nlohmann::json material = nullptr;
     if (const WovenParams* p = editedParams()) {
         const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-        const bool chosen = chosenFabric_ && chosenFabric_->target == target;
+        const ChosenFabric* chosen = fabrics_.chosenFor(target);
         material = {{"target", target},
-                    {"fabric", chosen ? nlohmann::json(chosenFabric_->name) : nlohmann::json(nullptr)},
+                    {"fabric", chosen ? nlohmann::json(chosen->name) : nlohmann::json(nullptr)},
                     {"repeat", {p->repeat.x, p->repeat.y}},
                     {"ex", p->ex},
                     {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
                     {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
                     {"tile_rows", p->tile.size()},
                     {"draft_open", draft_.has_value() && draftEdit_ == editIndex_},
-                    {"measures", measuresLine_},
+                    {"measures", fabrics_.measures()},
                     // Every parameter, for the tests to tell whether an undo restored them all.
                     {"params", paramsToJson(*p)}};
     }

@@ -1,8 +1,8 @@
 #pragma once
 // The previewer window's class, private to app/preview: its loop and mouse handling are in
 // preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
-// render_panel.cpp (the Render button), fit_section.h (woven fit, an object of its own) and
-// material_panel.cpp (selection, material, draft).
+// render_panel.cpp (the Render button), material_panel.cpp (selection, material, draft), and
+// the sections that are objects of their own: fit_section.h (woven fit), fabrics_section.h.
 #include <epoxy/gl.h>
 // epoxy must come first: GLFW would otherwise include the system GL header.
 #include <GLFW/glfw3.h>
@@ -18,6 +18,7 @@
 #include "draft_view.h"
 #include "fabric_choice.h"
 #include "fabric_menu.h"
+#include "fabrics_section.h"
 #include "final_render.h"
 #include "fit_section.h"
 #include "interactive_resolution.h"
@@ -213,14 +214,7 @@ private:
     bool showDraftWindow_ = false;  // expand the Draft window next frame: the user opened a draft
     char draftPath_[512] = "draft.wif";
 
-    // The Fabrics menu, made on first use (with the GL context current, as it must be when it
-    // goes); the fabric last chosen, for the edit it was chosen for; the length per UV unit of
-    // each target's meshes, measured once a scene (nullopt: they have no UVs to measure); and
-    // this frame's measures of the edited material, empty where its meshes' size is unknown.
-    std::unique_ptr<FabricMenu> fabricMenu_;
-    std::optional<ChosenFabric> chosenFabric_;
-    std::map<std::string, std::optional<glm::dvec2>> metresPerUv_;
-    std::string measuresLine_;
+    FabricsSection fabrics_;
 
     FitSection fit_;
 
