@@ -9,6 +9,7 @@
 
 #include "atomic_file.h"
 #include "file_reading.h"
+#include "output_path.h"
 #include "untrusted_json.h"
 #include "draft_material.h"
 #include "woven_params_json.h"
@@ -68,23 +69,26 @@ nlohmann::json rebasedSceneFile(const std::string& from, const std::string& to) 
 
 using NamedMaterials = std::vector<std::pair<std::string, nlohmann::json>>;
 
+// What a new file at `path` starts as: the scene the window opened, else the procedural cloth's
+// one material as a bare object.
+nlohmann::json startingFile(const std::string& path, const NamedMaterials& materials, const std::string& scenePath) {
+    if (isSceneFile(scenePath)) return rebasedSceneFile(scenePath, path);
+    if (!scenePath.empty()) return nlohmann::json{{"gltf", pathFromSceneFile(scenePath, path)}};
+    if (materials.size() == 1) return materials.front().second;
+    throw std::runtime_error(path + ": several materials need a scene file, and the procedural cloth has no glTF");
+}
+
 // Reads the file once, sets every material (and the rest `save` holds, where given), writes it once.
 void saveMaterialsJson(const std::string& path, const NamedMaterials& materials, const std::string& scenePath,
                        const SceneSave* save = nullptr) {
     nlohmann::json file;
-    if (std::filesystem::exists(path)) {
+    const bool exists = std::filesystem::exists(path);
+    if (exists) {
         file = readJson(path);
         if (!file.is_object() || !file.contains("gltf"))
             throw std::runtime_error(path + ": not a woven scene file (no \"gltf\" key); not overwriting it");
-    } else if (isSceneFile(scenePath)) {
-        file = rebasedSceneFile(scenePath, path);
-    } else if (!scenePath.empty()) {
-        file = {{"gltf", pathFromSceneFile(scenePath, path)}};
-    } else if (materials.size() == 1) {
-        file = materials.front().second;  // the procedural cloth's one material, as a bare object
-    } else {
-        throw std::runtime_error(path + ": several materials need a scene file, and the procedural cloth has no glTF");
     }
+    if (!exists || (save && save->startAnew)) file = startingFile(path, materials, scenePath);
     if (file.contains("gltf")) {
         for (const auto& [name, material] : materials) file["materials"][name] = material;
         if (save) {
@@ -119,6 +123,12 @@ void saveMaterial(const std::string& path, const std::string& materialName, cons
 }
 
 void saveScene(const std::string& path, const std::string& scenePath, const SceneSave& save) {
+    for (const std::string& input : save.inputs)
+        if (sameFile(path, input))
+            throw std::runtime_error(path + ": the scene reads this file (its scene file, glTF, a buffer, an image or a "
+                                            "draft): saving over it would change the scene; choose another file");
+    if (!isSceneFile(path))
+        throw std::runtime_error(path + ": not a woven scene file name (a scene file ends in .json); choose another file");
     NamedMaterials named;
     for (const auto& [name, params] : save.materials) named.emplace_back(name, paramsToJson(params));
     saveMaterialsJson(path, named, scenePath, &save);

@@ -26,13 +26,19 @@ struct SceneSave {
     std::optional<CameraView> camera;  // the view, where it was moved from the scene's camera
     RenderHints render;                // the Render button's settings
     std::optional<glm::vec3> environmentColor;  // where the window changed it
+    // The files the scene was read from (scene file, glTF, buffers, images, drafts): never saved over.
+    std::vector<std::string> inputs;
+    // Save As: the file starts anew as the opened scene, replacing the woven scene file there
+    // rather than keeping what it had (which may name another glTF).
+    bool startAnew = false;
 };
 
 // `save` into the woven scene file at `path`. An existing scene file keeps everything else it
 // has (saved again, it is overwritten the same way); a new one starts as the scene the window
 // opened (`scenePath`): a copy of that scene file, its relative paths rebased to `path`'s folder,
 // or a scene file naming that glTF. The procedural cloth (no `scenePath`) saves its one material
-// as a bare parameter object.
+// as a bare parameter object. Refused: a path that is one of `save.inputs`, that does not end in
+// .json, or whose file is not a woven scene file.
 void saveScene(const std::string& path, const std::string& scenePath, const SceneSave& save);
 
 // The glTF file a scene path stands for: itself, or the one a woven scene file (.json) names,

@@ -23,7 +23,7 @@ void PreviewWindow::commitCompletedEdit() {
 }
 
 MaterialState PreviewWindow::materialState() const {
-    return {edits_->edits(), editIndex_, draft_, draftEdit_, chosenFabric_};
+    return {edits_->edits(), editIndex_, draft_, draftEdit_, fabrics_.chosen()};
 }
 
 void PreviewWindow::restore(MaterialState state) {
@@ -31,7 +31,7 @@ void PreviewWindow::restore(MaterialState state) {
     editIndex_ = state.editIndex;
     draft_ = std::move(state.draft);
     draftEdit_ = state.draftEdit;
-    chosenFabric_ = std::move(state.chosenFabric);
+    fabrics_.setChosen(std::move(state.chosenFabric));
     if (draft_) copyToBuffer(draftPath_, draft_->name());
     showFinal_ = false;
     ++sceneGeneration_;
@@ -43,9 +43,9 @@ void PreviewWindow::undo() {
     if (std::optional<MaterialState> before = history_.undo(materialState())) {
         restore(*before);
         committed_ = std::move(*before);
-        status_ = "undone";
+        status_.say("undone");
     } else {
-        status_ = "nothing to undo";
+        status_.say("nothing to undo");
     }
 }
 
@@ -53,9 +53,9 @@ void PreviewWindow::redo() {
     if (std::optional<MaterialState> after = history_.redo(materialState())) {
         restore(*after);
         committed_ = std::move(*after);
-        status_ = "redone";
+        status_.say("redone");
     } else {
-        status_ = "nothing to redo";
+        status_.say("nothing to redo");
     }
 }
 
@@ -64,7 +64,7 @@ void PreviewWindow::handleShortcuts() {
     if (!io.KeyCtrl || io.WantTextInput) return;  // a text field has its own undo
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) io.KeyShift ? redo() : undo();
     else if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
-    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) attempt([&] { saveSceneFile(); });
+    else if (ImGui::IsKeyPressed(GLFW_KEY_S, false) && editedParams()) status_.attempt([&] { saveSceneFile(savePath_, false); });
 }
 
 void PreviewWindow::drawUndoButtons() {
@@ -79,15 +79,18 @@ void PreviewWindow::drawUndoButtons() {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
 }
 
-void PreviewWindow::saveSceneFile() {
+void PreviewWindow::saveSceneFile(const std::string& path, bool startAnew) {
     SceneSave save;
     for (const WovenEdit& e : edits_->edits()) save.materials.emplace_back(e.target, e.params);
     if (camera_.moved()) save.camera = viewOf(camera_.camera());
     save.render = {render_.width, render_.height, render_.spp, render_.integrator, samplerName(render_.sampler),
                    render_.noiseThreshold};
     if (scene().environment.color != loadedEnvironment_) save.environmentColor = scene().environment.color;
-    saveScene(materialPath_, scenePath_, save);
-    status_ = std::string("saved ") + materialPath_;
+    save.inputs = scene().inputFiles;
+    save.startAnew = startAnew;
+    saveScene(path, scenePath_, save);
+    savePath_ = path;
+    status_.say("saved " + path);
 }
 
 // Unmoved, the scene's own camera, which the saved file keeps; moved, the view the file is given.

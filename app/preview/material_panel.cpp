@@ -19,44 +19,28 @@
 
 namespace woven {
 
-// The Fabrics menu, and what a weaver quotes of the edited material where its meshes' size is known.
+// The Fabrics menu: a fabric chosen there becomes the edited material, its draft (or its weave
+// as one) in the draft view.
 void PreviewWindow::drawFabricControls(WovenParams& p) {
-    if (!fabricMenu_) fabricMenu_ = std::make_unique<FabricMenu>();
-    const std::string target = edits_->edits()[size_t(editIndex_)].target;
-    const auto chosenHere = [&] { return chosenFabric_ && chosenFabric_->target == target ? &*chosenFabric_ : nullptr; };
-    if (const std::string name = fabricMenu_->draw("fabric", chosenHere() ? chosenHere()->name : ""); !name.empty()) {
-        attempt([&] {
+    const std::string target = editedTarget();
+    if (const std::string name = fabrics_.drawMenu(target); !name.empty()) {
+        status_.attempt([&] {
             std::vector<std::string> warnings;
             ChosenFabric chosen = chooseFabric(target, name, scene(), edits_->meshesOf(target), warnings);
             p = chosen.params;
             materialEdited();
             showDraftOf(chosen.wif, warnings);
             if (chosen.wif.empty()) showWeaveAsDraft(p, name);
-            chosenFabric_ = std::move(chosen);
-            status_ = "fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")");
-            for (const std::string& w : warnings) warn(w);
+            fabrics_.setChosen(std::move(chosen));
+            status_.say("fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")"));
+            for (const std::string& w : warnings) status_.warn(w);
         });
     }
-    measuresLine_.clear();
-    const std::optional<glm::dvec2>& scale = metresPerUvOf(target);
-    if (!scale) {
-        ImGui::TextDisabled("(its meshes have no UVs to measure the cloth by)");
-        return;
-    }
-    try {
-        validate(p);  // the sliders' message below says what is wrong
-    } catch (const std::invalid_argument&) {
-        return;
-    }
-    measuresLine_ = describe(measureOnMesh(p, *scale, chosenHere()));
-    // One figure a line: ImGui wraps within a number ("0." and "16 cm").
-    std::string lines = measuresLine_;
-    for (size_t at = lines.find(", "); at != std::string::npos; at = lines.find(", ", at)) lines.replace(at, 2, "\n");
-    ImGui::TextUnformatted(lines.c_str());
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the repeat on its meshes, %.3g x %.3g cm per UV unit; the yarn counts of the fabric chosen "
-                          "while its repeat and yarn widths stay, else each side weighed from its width",
-                          100.0 * scale->x, 100.0 * scale->y);
+    fabrics_.drawMeasures(target, p, scene(), edits_->meshesOf(target));
+}
+
+const std::optional<glm::dvec2>& PreviewWindow::metresPerUvOf(const std::string& target) {
+    return fabrics_.metresPerUv(target, scene(), edits_->meshesOf(target));
 }
 
 void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>& warnings) {
@@ -174,7 +158,7 @@ void PreviewWindow::drawWeaveControls(WovenParams& p) {
                           p.tile.empty() ? "" : "\nthe weave is a tile now (a draft's or drawn): a weave typed here replaces it");
     if (!chosen.empty() && draft_ && draftEdit_ == editIndex_) {
         draft_.reset();
-        status_ = "the weave " + chosen + " replaces the draft's; its threads keep their colours";
+        status_.say("the weave " + chosen + " replaces the draft's; its threads keep their colours");
     }
 }
 
@@ -269,21 +253,25 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
 
     ui::InputText("scene file", materialPath_, sizeof materialPath_);
     const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-    if (ui::Button("Save")) attempt([&] { saveSceneFile(); });
+    if (ui::Button("Save")) status_.attempt([&] { saveSceneFile(savePath_, false); });
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Ctrl+S: every woven material, the view and the render settings into the scene file, which "
-                          "woven render renders as the Render button does");
+        ImGui::SetTooltip("Ctrl+S: every woven material, the view and the render settings into %s, which woven render "
+                          "renders as the Render button does", savePath_.c_str());
+    ImGui::SameLine();
+    if (ui::Button("Save As")) status_.attempt([&] { saveSceneFile(materialPath_, true); });
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the same into a new woven scene file (.json) named by \"scene file\"; Save then writes there");
     ImGui::SameLine();
     if (ui::Button("Load material")) {
-        attempt([&] {
+        status_.attempt([&] {
             std::vector<std::string> warnings;
             const MaterialJson read = loadMaterial(materialPath_, target, p, warnings);
             p = scaledToMeshes(read, scene(), edits_->meshesOf(target), warnings);
-            if (chosenFabric_ && chosenFabric_->target == target) chosenFabric_.reset();
+            if (fabrics_.chosenFor(target)) fabrics_.setChosen(std::nullopt);
             materialEdited();
-            status_ = std::string("loaded ") + materialPath_;
+            status_.say(std::string("loaded ") + materialPath_);
             if (!read.wif.empty()) showDraftOf(read.wif, warnings);
-            for (const std::string& w : warnings) warn(w);
+            for (const std::string& w : warnings) status_.warn(w);
         });
     }
     drawDraftControls(p);
@@ -293,13 +281,13 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     ImGui::Separator();
     ui::InputText("draft file", draftPath_, sizeof draftPath_);
     if (ui::Button("Open draft")) {
-        attempt([&] {
+        status_.attempt([&] {
             openDraft(draftPath_);
         });
     }
     if (!draft_ || draftEdit_ != editIndex_) {
         ImGui::SameLine();
-        if (ui::Button("Draft view")) attempt([&] { showWeaveAsDraft(p, "weave"); });
+        if (ui::Button("Draft view")) status_.attempt([&] { showWeaveAsDraft(p, "weave"); });
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("this weave and its thread colours as a draft, to edit thread by thread and save as WIF "
                               "(or drop a .wif on the window)");
@@ -307,30 +295,30 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     }
     ImGui::SameLine();
     if (ui::Button("Save WIF")) {
-        attempt([&] {
+        status_.attempt([&] {
             draft_->save(draftPath_);
-            status_ = std::string("saved ") + draftPath_;
+            status_.say(std::string("saved ") + draftPath_);
         });
     }
     ImGui::SameLine();
     // "scale": "draft": the draft's threads per centimetre on this mesh.
     if (ui::Button("Real scale")) {
-        attempt([&] {
+        status_.attempt([&] {
             const std::string& target = edits_->edits()[size_t(editIndex_)].target;
             p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
                                              draftThreadsPerCm(draft_->draft(), draft_->name()));
             validate(p);
             materialEdited();
-            status_ = "repeat from the draft's spacing";
+            status_.say("repeat from the draft's spacing");
         });
     }
     if (ui::Button("Save material with draft")) {
-        attempt([&] {
+        status_.attempt([&] {
             const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
             const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
                                                           gltf ? scenePath_ : "", *draft_);
             copyToBuffer(draftPath_, wif);
-            status_ = std::string("saved ") + materialPath_ + " and " + wif;
+            status_.say(std::string("saved ") + materialPath_ + " and " + wif);
         });
     }
 }
@@ -350,7 +338,7 @@ void PreviewWindow::drawDraftWindow() {
     ImGui::SetNextWindowCollapsed(!showDraftWindow_, showDraftWindow_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
     showDraftWindow_ = false;
     ImGui::Begin("Draft");
-    attempt([&] {
+    status_.attempt([&] {
         if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
             *woven = draft_->material(*woven);
             materialEdited();
@@ -382,11 +370,11 @@ void PreviewWindow::drawSelection() {
     }
     const std::string& target = targets[size_t(targetChoice_)];
     if (ui::Button("Make woven")) {
-        attempt([&] {
+        status_.attempt([&] {
             editIndex_ = edits_->makeWoven(target);
             materialEdited();
             applyEdits();
-            status_ = "made " + target + " woven";
+            status_.say("made " + target + " woven");
         });
     }
     ImGui::SameLine();
@@ -398,9 +386,9 @@ void PreviewWindow::drawSelection() {
                 if (edits_->edits()[i].target == current) editIndex_ = int(i);
             materialEdited();
             applyEdits();
-            status_ = "reverted " + target;
+            status_.say("reverted " + target);
         } else {
-            status_ = target + " has no edit to revert";
+            status_.say(target + " has no edit to revert");
         }
     }
 }

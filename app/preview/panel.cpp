@@ -66,7 +66,7 @@ void PreviewWindow::drawLightControls() {
                 env = studio.make();
                 env.rotation = rotation;
                 changed = true;
-                status_ = std::string("lit by the ") + studio.name + " environment: " + studio.description;
+                status_.say(std::string("lit by the ") + studio.name + " environment: " + studio.description);
             }
         ui::EndCombo();
     }
@@ -124,9 +124,7 @@ void PreviewWindow::drawPanel() {
         const SceneBox box = sceneBounds(scene());
         camera_ = OrbitCamera::around(framingCamera(box, camera_.camera().yfov), box);
     }
-    // Where it is seen without scrolling: what the last action said.
-    if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
-    drawMessages();
+    status_.draw();
 
     // Render first, and Lights (closed) before the long Material section: both within the
     // window's height without scrolling.
@@ -142,7 +140,7 @@ void PreviewWindow::drawPanel() {
     }
     if (ui::CollapsingHeader("Fit")) {
         ImGui::PushID("fit");
-        drawFitControls();
+        fit_.draw(editedTarget(), status_);
         ImGui::PopID();
     }
     applyFinishedFit();
@@ -171,25 +169,6 @@ void PreviewWindow::drawPanel() {
     }
     ImGui::PopItemWidth();
     ImGui::End();
-}
-
-void PreviewWindow::warn(const std::string& line) {
-    std::cerr << "warning: " << line << "\n";
-    constexpr size_t kKept = 200;  // a scene of many faults keeps the window's memory bounded
-    if (messages_.size() == kKept) messages_.erase(messages_.begin());
-    messages_.push_back(line);
-}
-
-// The warnings the commands print, where a user of the window sees them: collapsed under a
-// header that counts them.
-void PreviewWindow::drawMessages() {
-    if (messages_.empty()) return;
-    const std::string header = "Messages (" + std::to_string(messages_.size()) + ")###messages";
-    if (!ui::CollapsingHeader(header.c_str())) return;
-    ImGui::PushID("messages");
-    for (const std::string& line : messages_) ImGui::TextWrapped("%s", line.c_str());
-    if (ui::Button("Clear")) messages_.clear();
-    ImGui::PopID();
 }
 
 }  // namespace woven

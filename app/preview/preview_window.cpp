@@ -118,7 +118,7 @@ PreviewWindow::~PreviewWindow() {
     rendered_.stop();
     glDeleteTextures(1, &finalTexture_);
     glDeleteTextures(1, &renderedTexture_);
-    fabricMenu_.reset();
+    fabrics_ = FabricsSection();  // the menu's textures go while the context is current
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -134,17 +134,17 @@ void PreviewWindow::openScene(const std::string& path) {
     if (path != options_.scene) sceneOptions.woven.clear();
     applySceneOptions(loaded, sceneOptions);
     final_.cancel();
-    messages_ = loaded.warnings;  // printed on stderr as the scene was read
+    status_.restartMessages(loaded.warnings);  // printed on stderr as the scene was read
     edits_.emplace(std::move(loaded));
     scenePath_ = path;
-    copyToBuffer(materialPath_, besideScene(path, "-tuned.json", "material.json"));
+    savePath_ = besideScene(path, "-tuned.json", "material.json");
+    copyToBuffer(materialPath_, savePath_);
     copyToBuffer(imagePath_, besideScene(path, "-render.png", "render.png"));
     copyToBuffer(exportPath_, besideScene(path, "-export.glb", "scene.glb"));
     renderer_->setMeshes(scene());
     picker_.reset();
     pickedMesh_ = -1;
-    chosenFabric_.reset();
-    metresPerUv_.clear();
+    fabrics_.reset();
     lights_ = PreviewLights::fromScene(scene());
     camera_ = OrbitCamera::forScene(scene());
     // The panel starts on the first woven material, as an edit of its own name (no change yet).
@@ -162,7 +162,7 @@ void PreviewWindow::openScene(const std::string& path) {
                 draftEdit_ = editIndex_;
                 copyToBuffer(draftPath_, draft_->name());
             } else if (!p.warp_colors.empty() || !p.weft_colors.empty()) {
-                attempt([&] { showWeaveAsDraft(p, m.name); });
+                status_.attempt([&] { showWeaveAsDraft(p, m.name); });
                 showDraftWindow_ = false;  // collapsed, as a scene's own draft
             }
             break;
@@ -180,7 +180,7 @@ void PreviewWindow::openScene(const std::string& path) {
     glfwGetFramebufferSize(window_, &windowWidth, &windowHeight);
     if (options_.frame.width <= 0 && scene().render.width <= 0) render_.width = std::max(windowWidth, 1);
     if (options_.frame.height <= 0 && scene().render.height <= 0) render_.height = std::max(windowHeight, 1);
-    status_ = "opened " + (path.empty() ? std::string("the procedural cloth") : path);
+    status_.say("opened " + (path.empty() ? std::string("the procedural cloth") : path));
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
 }
 
@@ -196,11 +196,26 @@ void PreviewWindow::openDraft(const std::string& path) {
     materialEdited();
     applyEdits();
     copyToBuffer(draftPath_, path);
-    for (const std::string& w : warnings) warn(w);
-    status_ = "opened " + path;
+    for (const std::string& w : warnings) status_.warn(w);
+    std::string said = "opened " + path;
     if (!warnings.empty())
-        status_ += " (" + std::to_string(warnings.size()) + " warning" + (warnings.size() > 1 ? "s" : "") + ": " +
-                   warnings.front() + ")";
+        said += " (" + std::to_string(warnings.size()) + " warning" + (warnings.size() > 1 ? "s" : "") + ": " +
+                warnings.front() + ")";
+    status_.say(said);
+}
+
+std::string PreviewWindow::editedTarget() const {
+    return editIndex_ >= 0 && editIndex_ < int(edits_->edits().size()) ? edits_->edits()[size_t(editIndex_)].target : "";
+}
+
+void PreviewWindow::applyFinishedFit() {
+    const auto metresPerUv = [&](const std::string& target) -> const std::optional<glm::dvec2>& { return metresPerUvOf(target); };
+    const int fitted = fit_.applyFinished(*edits_, metresPerUv, status_);
+    if (fitted < 0) return;
+    editIndex_ = fitted;
+    fabrics_.setChosen(std::nullopt);
+    materialEdited();
+    applyEdits();
 }
 
 WovenParams* PreviewWindow::editedParams() {
@@ -211,7 +226,7 @@ WovenParams* PreviewWindow::editedParams() {
 // The scene's materials from the edits, after any change; the meshes go to the GPU again only
 // when a primitive's material index changed (a split, a revert).
 void PreviewWindow::applyEdits() {
-    attempt([&] {
+    status_.attempt([&] {
         if (edits_->apply()) {
             renderer_->setMeshes(scene());
             picker_.reset();
@@ -225,12 +240,7 @@ void PreviewWindow::pick(glm::vec2 cursor) {
     glfwGetWindowSize(window_, &width, &height);
     Camera camera = camera_.camera();
     camera.aspect = float(width) / float(std::max(height, 1));
-    try {
-        pickedMesh_ = picker_.pick(scene(), camera, {width, height}, cursor);
-    } catch (const std::exception& e) {
-        status_ = e.what();
-        pickedMesh_ = -1;
-    }
+    if (!status_.attempt([&] { pickedMesh_ = picker_.pick(scene(), camera, {width, height}, cursor); })) pickedMesh_ = -1;
     // Offer the most specific target: the node that holds the primitive.
     if (pickedMesh_ >= 0) targetChoice_ = int(edits_->targetsFor(pickedMesh_).size()) - 1;
 }
@@ -411,24 +421,24 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     nlohmann::json material = nullptr;
     if (const WovenParams* p = editedParams()) {
         const std::string& target = edits_->edits()[size_t(editIndex_)].target;
-        const bool chosen = chosenFabric_ && chosenFabric_->target == target;
+        const ChosenFabric* chosen = fabrics_.chosenFor(target);
         material = {{"target", target},
-                    {"fabric", chosen ? nlohmann::json(chosenFabric_->name) : nlohmann::json(nullptr)},
+                    {"fabric", chosen ? nlohmann::json(chosen->name) : nlohmann::json(nullptr)},
                     {"repeat", {p->repeat.x, p->repeat.y}},
                     {"ex", p->ex},
                     {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
                     {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
                     {"tile_rows", p->tile.size()},
                     {"draft_open", draft_.has_value() && draftEdit_ == editIndex_},
-                    {"measures", measuresLine_},
+                    {"measures", fabrics_.measures()},
                     // Every parameter, for the tests to tell whether an undo restored them all.
                     {"params", paramsToJson(*p)}};
     }
     map["state"] = {
         {"frame", frame_},
         {"window", {{"pos", {x, y}}, {"size", {width, height}}}},
-        {"status", status_},
-        {"messages", messages_},
+        {"status", status_.text()},
+        {"messages", status_.messages()},
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
         {"refinement", std::min(refinement_ + 1, kRefinementFrames)},
@@ -438,9 +448,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
                     {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
-        {"fit", {{"running", fit_.running()}, {"stage", fit_.progress().stage}, {"evaluations", fit_.progress().evaluations},
-                 {"error", fit_.error()}, {"applied", fitApplied_},
-                 {"loss_points", fit_.lossHistory().size()}}},
+        {"fit", fit_.state()},
         {"rendered", renderedViewState()},
         {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
                    {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image}, {"mean", finalMean},
@@ -510,7 +518,7 @@ void PreviewWindow::run() {
         std::vector<std::string> dropped;
         dropped.swap(droppedPaths_);
         for (const std::string& path : dropped) {
-            attempt([&] {
+            status_.attempt([&] {
                 if (isDraftFile(path)) openDraft(path);
                 else openScene(path);
             });
@@ -558,7 +566,7 @@ void PreviewWindow::run() {
             PreviewOptions preview;
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
-            attempt([&] {
+            status_.attempt([&] {
                 const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
                 refinement_ = !interacting_ && view == refinedView_ ? refinement_ + 1 : 0;

@@ -1,8 +1,8 @@
 #pragma once
 // The previewer window's class, private to app/preview: its loop and mouse handling are in
 // preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
-// render_panel.cpp (the Render button), fit_panel.cpp (woven fit) and material_panel.cpp
-// (selection, material, draft).
+// render_panel.cpp (the Render button), material_panel.cpp (selection, material, draft), and
+// the sections that are objects of their own: fit_section.h (woven fit), fabrics_section.h.
 #include <epoxy/gl.h>
 // epoxy must come first: GLFW would otherwise include the system GL header.
 #include <GLFW/glfw3.h>
@@ -18,8 +18,9 @@
 #include "draft_view.h"
 #include "fabric_choice.h"
 #include "fabric_menu.h"
+#include "fabrics_section.h"
 #include "final_render.h"
-#include "fit_job.h"
+#include "fit_section.h"
 #include "interactive_resolution.h"
 #include "orbit_camera.h"
 #include "preview_lights.h"
@@ -27,6 +28,7 @@
 #include "preview_window.h"
 #include "rendered_viewport.h"
 #include "scene_picker.h"
+#include "status_line.h"
 #include "undo_history.h"
 #include "view_refinement.h"
 #include "widget_map.h"
@@ -121,26 +123,17 @@ private:
     // Ctrl+Z, Ctrl+Shift+Z (or Ctrl+Y), Ctrl+S: unless a text field takes the keys.
     void handleShortcuts();
     void drawUndoButtons();
-    // The scene file at the panel's path: every edit, the view and the Render button's settings.
-    void saveSceneFile();
+    // A woven scene file at `path`: every edit, the view and the Render button's settings; Save
+    // writes it there from then on. `startAnew` (Save As): the opened scene, not what the file held.
+    void saveSceneFile(const std::string& path, bool startAnew);
     // The Render button's camera: the one a scene file saved now renders through.
     Camera renderCamera() const;
-    // A warning: on stderr as the commands print it, and in the panel's Messages.
-    void warn(const std::string& line);
-    void drawMessages();
-    // Runs `step`; an exception it throws becomes the status line.
-    template <typename Step>
-    void attempt(Step&& step) {
-        try {
-            step();
-        } catch (const std::exception& e) {
-            status_ = e.what();
-        }
-    }
     void drawLightControls();
     void drawRenderControls();
-    void drawFitControls();
+    // The finished fit's material into the edit it was started for, now the edited one.
     void applyFinishedFit();
+    // The target of the edit the panel tunes; empty for none.
+    std::string editedTarget() const;
     // The length per UV unit of the target's meshes, measured once a scene (nullopt: no UVs).
     const std::optional<glm::dvec2>& metresPerUvOf(const std::string& target);
     void updateFinalTexture(const FilmImage& film);
@@ -155,9 +148,6 @@ private:
     nlohmann::json renderedViewState() const;
     void writeWindowScreenshot(const std::string& path);
     void writeWidgetMap(const std::string& path);
-    // `value` within [lo, hi], saying so in the status line when it was not.
-    template <typename T>
-    void clampSetting(const char* name, T& value, T lo, T hi);
     WovenParams* editedParams();
     SceneDescription& scene() { return edits_->sceneForLighting(); }
 
@@ -205,9 +195,9 @@ private:
     int refinement_ = 0;  // the frame of the running mean last rendered
     std::string viewChecksum_;  // of the last settled view, with --widget-map
     glm::dvec3 viewMean_{0.0};  // its mean linear radiance
-    std::string status_;
-    std::vector<std::string> messages_;  // the warnings since the scene was opened, oldest first
-    char materialPath_[512] = "material.json";
+    StatusLine status_;  // what the last action said, and the warnings since the scene was opened
+    char materialPath_[512] = "material.json";  // Save As's and Load material's file
+    std::string savePath_;  // Save's: beside the scene, until Save As chose another
     glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
 
     UndoHistory<MaterialState> history_;
@@ -224,22 +214,9 @@ private:
     bool showDraftWindow_ = false;  // expand the Draft window next frame: the user opened a draft
     char draftPath_[512] = "draft.wif";
 
-    // The Fabrics menu, made on first use (with the GL context current, as it must be when it
-    // goes); the fabric last chosen, for the edit it was chosen for; the length per UV unit of
-    // each target's meshes, measured once a scene (nullopt: they have no UVs to measure); and
-    // this frame's measures of the edited material, empty where its meshes' size is unknown.
-    std::unique_ptr<FabricMenu> fabricMenu_;
-    std::optional<ChosenFabric> chosenFabric_;
-    std::map<std::string, std::optional<glm::dvec2>> metresPerUv_;
-    std::string measuresLine_;
+    FabricsSection fabrics_;
 
-    // The Fit section's job, the edit it fits (until it is applied) and whether the last one was.
-    FitJob fit_;
-    std::string fitTarget_;
-    bool fitApplied_ = false;
-    char fitShots_[1024] = "";
-    char fitSwatch_[256] = "";
-    double fitSeconds_ = 180.0;
+    FitSection fit_;
 
     FinalRender final_;
     std::optional<FilmImage> finalImage_;

@@ -16,15 +16,6 @@
 
 namespace woven {
 
-template <typename T>
-void PreviewWindow::clampSetting(const char* name, T& value, T lo, T hi) {
-    const T clamped = std::clamp(value, lo, hi);
-    if (clamped == value) return;
-    status_ = std::string(name) + " " + std::to_string(value) + " is out of range " + std::to_string(lo) + ".." +
-              std::to_string(hi) + ": " + std::to_string(clamped) + " instead";
-    value = clamped;
-}
-
 void PreviewWindow::drawRenderControls() {
     // Two fields, so that Tab moves from the width to the height.
     const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
@@ -34,12 +25,12 @@ void PreviewWindow::drawRenderControls() {
     ImGui::SameLine(0.0f, spacing);
     ImGui::SetNextItemWidth(half);
     ui::InputInt("render size##height", &render_.height, 0, 0);
-    clampSetting("render width", render_.width, 1, 16384);
-    clampSetting("render height", render_.height, 1, 16384);
+    clampSetting(status_, "render width", render_.width, 1, 16384);
+    clampSetting(status_, "render height", render_.height, 1, 16384);
     ui::InputInt("spp", &render_.spp);
-    clampSetting("spp", render_.spp, 1, 1 << 20);
+    clampSetting(status_, "spp", render_.spp, 1, 1 << 20);
     ui::InputDouble("noise threshold", &render_.noiseThreshold, 0.01, 0.05, "%.3f");
-    clampSetting("noise threshold", render_.noiseThreshold, 0.0, 1.0);
+    clampSetting(status_, "noise threshold", render_.noiseThreshold, 0.0, 1.0);
     if (ui::BeginCombo("integrator", render_.integrator.c_str())) {
         for (const IntegratorKind& kind : integratorKinds())
             if (ui::Selectable(kind.name, render_.integrator == kind.name)) render_.integrator = kind.name;
@@ -63,14 +54,14 @@ void PreviewWindow::drawRenderControls() {
         SceneDescription shown = scene();
         shown.camera = camera_.camera();
         shown.hasCamera = true;
-        attempt([&] {
+        status_.attempt([&] {
             // By the path: a folder (ending in /) the share page, the edited cloth as a U3M, else
             // the scene as glTF.
             const std::string path = exportPath_;
             if (!path.empty() && path.back() == '/') {
                 const std::vector<std::string> warnings = writeSharePage(shown, path, ShareOptions{});
-                for (const std::string& w : warnings) warn(path + ": " + w);
-                status_ = "wrote the page " + path + "index.html";
+                for (const std::string& w : warnings) status_.warn(path + ": " + w);
+                status_.say("wrote the page " + path + "index.html");
             } else if (hasExtension(path, ".u3ma") || hasExtension(path, ".u3m")) {
                 U3mOptions options;
                 if (editIndex_ >= 0) {
@@ -78,12 +69,12 @@ void PreviewWindow::drawRenderControls() {
                     if (m >= 0) options.material = shown.materials[size_t(m)].name;
                 }
                 const U3mExport u3m = exportU3m(shown, path, options);
-                for (const std::string& n : u3m.notes) warn(path + ": " + n);
-                status_ = "exported " + u3m.material + " to " + path;
+                for (const std::string& n : u3m.notes) status_.warn(path + ": " + n);
+                status_.say("exported " + u3m.material + " to " + path);
             } else {
                 const std::vector<std::string> warnings = exportScene(shown, path, ExportOptions{});
-                for (const std::string& w : warnings) warn(path + ": " + w);
-                status_ = "exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings: see Messages)");
+                for (const std::string& w : warnings) status_.warn(path + ": " + w);
+                status_.say("exported " + path + (warnings.empty() ? "" : " (" + std::to_string(warnings.size()) + " warnings: see Messages)"));
             }
         });
     }
@@ -106,9 +97,9 @@ void PreviewWindow::drawRenderControls() {
         std::string path = imagePath_;
         const size_t dot = path.find_last_of('.');
         path = (dot == std::string::npos ? path : path.substr(0, dot)) + (png ? ".png" : ".exr");
-        attempt([&] {
+        status_.attempt([&] {
             writeFrame(path, finalImage_->exr(), display_);
-            status_ = "saved " + path;
+            status_.say("saved " + path);
         });
     }
 }

@@ -9,6 +9,8 @@ drives it (issue: "what you tune is what you get"):
 - a slider moved after a render hides the stale final frame;
 - Ctrl+Z and Ctrl+Shift+Z undo and redo a material edit;
 - Save, twice, writes a scene file that `woven render` renders bit for bit as the Render button;
+  Save As writes the file typed into "scene file" (Save then writes there), which renders the same,
+  and refuses the scene's own file and a name that is no woven scene file;
 - Export's warnings are listed in the window's Messages.
 
 Usage: window_truth_xvfb.py WOVEN_BINARY ASSETS_DIR
@@ -88,6 +90,29 @@ def render_and_save(window, tmp):
     path = os.path.join(tmp, 'denim-render.png')
     window.wait('"saved denim-render.png"', lambda m: m['state']['status'] == f'saved {path}', 30)
     return png_pixels(path)[2]
+
+
+def settle_layout(window):
+    """The frame that took the last press drew the status line above before the press changed it:
+    the panel's layout is the next frame's (a resting window draws one on an input)."""
+    window.xdotool('mousemove_relative', '1', '0')
+    window.frames()
+
+
+def save_as(window, path):
+    """`path` typed into the "scene file" field in place of what it held, then Save As pressed."""
+    settle_layout(window)
+    scroll_to(window, 'scene file', 'input')
+    window.click('scene file', 'input')
+    # Ctrl held across frames: a Ctrl+A within one software frame may reach ImGui without its Ctrl.
+    window.xdotool('keydown', 'ctrl')
+    window.frames()
+    window.key('a')
+    window.xdotool('keyup', 'ctrl')
+    window.frames()
+    window.type(path)
+    scroll_to(window, 'Save As', 'button')
+    window.click('Save As', 'button')
 
 
 def scene_in(tmp, assets):
@@ -176,6 +201,35 @@ def main(woven, assets):
         rendered = png_pixels(os.path.join(tmp, 'saved.png'))[2]
         check(rendered == button, f'woven render {os.path.basename(saved)} differs from the Render button\'s frame')
         print(f'saved twice to {os.path.basename(saved)}, which woven render renders as the Render button did')
+
+        # Save As: the path typed into "scene file". Refused over the scene's own file (an input)
+        # and into a name that is no woven scene file, each in the status line, the file untouched;
+        # then a new file in another folder, which Save writes again and woven render renders as
+        # the Render button did.
+        scene_file, image = os.path.join(tmp, 'denim.json'), os.path.join(tmp, 'denim-render.png')
+        for path, why in ((scene_file, 'the scene reads this file'), (image, 'not a woven scene file name')):
+            with open(path, 'rb') as f:
+                before = f.read()
+            save_as(window, path)
+            window.wait(f'Save As over {os.path.basename(path)} refused',
+                        lambda m: m['state']['status'].startswith(f'{path}: {why}'), 30)
+            with open(path, 'rb') as f:
+                check(f.read() == before, f'Save As changed {path}')
+        os.makedirs(os.path.join(tmp, 'chosen'))
+        chosen = os.path.join(tmp, 'chosen', 'sateen.json')
+        save_as(window, chosen)
+        window.wait('Save As', lambda m: m['state']['status'] == f'saved {chosen}', 30)
+        os.remove(chosen)
+        settle_layout(window)
+        scroll_to(window, 'Save', 'button')
+        window.click('Save', 'button')
+        window.wait('Save to the file Save As chose', lambda m: os.path.exists(chosen), 30)
+        result = subprocess.run([woven, 'render', chosen, '-o', os.path.join(tmp, 'chosen.png')],
+                                capture_output=True, text=True, timeout=300)
+        check(result.returncode == 0, f'woven render {chosen} failed: {result.stderr}')
+        check(png_pixels(os.path.join(tmp, 'chosen.png'))[2] == button,
+              f'woven render of the file Save As wrote differs from the Render button\'s frame')
+        print('Save As refused the scene file and a .png, wrote chosen/sateen.json, which renders as the Render button did')
 
         # Export: what the command line would warn of is in the window's Messages, not only on stderr.
         exported = os.path.join(tmp, 'denim-export.glb')  # the default: beside the scene

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "../scene/gltf_builder.h"
 #include "../scene/temp_dir.h"
@@ -24,6 +25,11 @@ namespace woven::test {
 namespace {
 
 using json = nlohmann::json;
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // Three quads side by side facing +z: "Left" and "Middle" share material "Shared [a]" (a name
 // with glob characters), "Right" has no material; Left and Middle hang under node "Group".
@@ -204,6 +210,48 @@ TEST(WovenEdits, ASavedSceneFileRendersAsTheRenderButton) {
     window.hasCamera = true;
     const FilmImage a = render(window), b = render(reloaded);
     EXPECT_TRUE(a.radiance.pixels == b.radiance.pixels) << "the saved scene renders differently from the window's";
+}
+
+// Save As: never over a file the scene reads, nor into a name or a file that is not a woven scene
+// file (each refused in a message naming the path, the file untouched); over a woven scene file
+// it starts anew as the opened scene, not keeping the old file's glTF.
+TEST(WovenEdits, SaveAsRefusesTheScenesInputsAndReplacesAnOldSceneFile) {
+    ThreeQuads q;
+    const std::string opened = q.dir.file("opened.json");
+    {
+        std::ofstream out(opened);
+        out << json{{"gltf", "quads.gltf"}}.dump();
+    }
+    SceneDescription scene = loadScene(opened);
+    SceneSave save;
+    save.materials.emplace_back("node:Group", WovenParams{});
+    save.inputs = scene.inputFiles;
+    save.startAnew = true;
+    const auto refused = [&](const std::string& path, const std::string& why) {
+        const std::string before = readText(path);
+        try {
+            saveScene(path, opened, save);
+            ADD_FAILURE() << path << " was written";
+        } catch (const std::runtime_error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(path + ": " + why, 0), 0u) << e.what();
+        }
+        EXPECT_EQ(readText(path), before) << path << " changed";
+    };
+    refused(opened, "the scene reads this file");
+    refused(q.path, "the scene reads this file");
+    const std::string image = q.dir.file("render.png");
+    std::ofstream(image) << "not a scene";
+    refused(image, "not a woven scene file name");
+    const std::string other = q.dir.file("other.json");
+    std::ofstream(other) << json{{"pattern", {1, 2, 1}}}.dump();
+    refused(other, "not a woven scene file");
+
+    const std::string old = q.dir.file("old.json");
+    std::ofstream(old) << json{{"gltf", "elsewhere.gltf"}, {"lights", json::array()}}.dump();
+    saveScene(old, opened, save);
+    const json written = json::parse(readText(old));
+    EXPECT_EQ(written["gltf"], "quads.gltf");
+    EXPECT_FALSE(written.contains("lights")) << "Save As kept the old file's keys";
 }
 
 }  // namespace
