@@ -263,7 +263,10 @@ void PreviewWindow::onKey(GLFWwindow* window, int key, int scancode, int action,
     auto* self = static_cast<PreviewWindow*>(glfwGetWindowUserPointer(window));
     auto& pressed = self->pressedSinceFrame_;
     if (action == GLFW_PRESS) pressed.push_back(key);
-    if (action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), key) != pressed.end()) {
+    // Once a key went down since the last frame, every release waits for that frame: the release
+    // of a modifier held since an earlier frame (Ctrl+Shift+Z's Shift, when Z came in the next
+    // batch of events) would otherwise reach ImGui before the frame that reads Z with it.
+    if (action == GLFW_RELEASE && !pressed.empty()) {
         self->deferredReleases_.emplace_back(key, scancode, mods);
         return;
     }

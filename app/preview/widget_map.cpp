@@ -171,7 +171,11 @@ bool InputDouble(const char* label, double* v, double step, double stepFast, con
     return recorded(ImGui::InputDouble(label, v, step, stepFast, format), label, "input");
 }
 bool InputText(const char* label, char* buffer, size_t size) {
-    return recorded(ImGui::InputText(label, buffer, size), label, "input");
+    // Every text field names a file or a target for a button beside it (Save As, Load, Export,
+    // Fit): typing in it changes no value, so it is no edit of the cloth and no undo step.
+    const bool typed = ImGui::InputText(label, buffer, size);
+    recorded(false, label, "input");
+    return typed;
 }
 
 }  // namespace ui

@@ -107,6 +107,36 @@ TEST(WidgetMap, JsonHasEachWidgetsPlace) {
     EXPECT_TRUE(json["windows"].contains("panel"));
 }
 
+// A text field holds a path or a name for a button beside it: typing in it is no value change (it
+// hid the final frame and left an empty undo step); a number typed is one.
+TEST(WidgetMap, TypingAPathChangesNoValueAndTypingANumberDoes) {
+    HeadlessImGui imgui;
+    WidgetMap map;
+    char path[64] = "";
+    int samples = 1;
+    int focus = 0;  // 1: the text field, 2: the number field
+    const auto draw = [&] {
+        if (focus == 1) ImGui::SetKeyboardFocusHere();
+        ui::InputText("scene file", path, sizeof path);
+        if (focus == 2) ImGui::SetKeyboardFocusHere();
+        ui::InputInt("samples", &samples, 0, 0, 0);
+    };
+    const auto type = [&](int field, char c) {
+        focus = field;
+        recordFrame(imgui, map, draw);
+        focus = 0;
+        recordFrame(imgui, map, draw);
+        ImGui::GetIO().AddInputCharacter(c);
+        recordFrame(imgui, map, draw);
+    };
+    type(1, 'a');
+    EXPECT_STREQ(path, "a");
+    EXPECT_EQ(map.valueChanges(), 0u);
+    type(2, '7');
+    EXPECT_NE(samples, 1);
+    EXPECT_GT(map.valueChanges(), 0u);
+}
+
 TEST(WidgetMap, AnOpenCombosBoxIsRecordedInItsWindow) {
     HeadlessImGui imgui;
     WidgetMap map;
