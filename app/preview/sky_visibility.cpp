@@ -7,12 +7,15 @@
 #include <string_view>
 
 #include "frame.h"
+#include "math_constants.h"
 #include "render_scene.h"
 #include "yarn_noise.h"
 
 namespace woven {
 
 namespace {
+
+constexpr float kGoldenRatioFraction = 0.618034f;  // of a turn between successive spiral points
 
 // The share of kSkyRays cosine-weighted directions about n (a Fibonacci spiral on the disc, turned
 // by a hashed angle per vertex so that neighbours' errors do not line up) that no geometry blocks.
@@ -25,7 +28,7 @@ float visibleShare(const RenderScene& scene, const glm::vec3& p, const glm::vec3
     int open = 0;
     for (int i = 0; i < kSkyRays; ++i) {
         const float r = std::sqrt((float(i) + 0.5f) / float(kSkyRays));
-        const float phi = 6.2831853f * (float(i) * 0.618034f + turn);
+        const float phi = 2.0f * kPi * (float(i) * kGoldenRatioFraction + turn);
         const glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::fmax(0.0f, 1.0f - r * r)));
         open += !scene.occludedToInfinity(hit, frame.toWorld(local));
     }
