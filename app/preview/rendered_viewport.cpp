@@ -200,7 +200,6 @@ void RenderedViewport::render(const Request& request) {
     double renderedSeconds = 0.0, denoisedSeconds = 0.0;
     job.run(cancel_, [&](const RenderProgress& p) {
         renderedSeconds += secondsSince(passEnd);
-        FilmImage film = job.snapshot();
         const double pixels = double(request.settings.width) * request.settings.height;
         double perPixel = 0.0;
         {
@@ -213,10 +212,17 @@ void RenderedViewport::render(const Request& request) {
             perPixel > 0.0 ? perPixel * pixels : kUnmeasuredDenoisePasses * renderedSeconds / p.samplesDone;
         const bool denoise = request.denoise && !request.interacting &&
                              (last || denoiseDue(cost, denoisedSeconds, renderedSeconds, p.samplesDone, request.settings.spp));
+        // Only a pass to denoise and the last take the whole film (its sums and passes); the
+        // others show their running mean alone: copying the film, while the render's threads
+        // wait, took about a tenth of each pass (docs/results/rendered_view.md).
+        std::optional<FilmImage> film;
+        Image mean;
+        if (denoise || last) film = job.snapshot();
+        else mean = job.meanRadiance();
         double denoiseSeconds = 0.0;
         if (denoise) {
             const Clock::time_point denoiseStart = Clock::now();
-            denoiseFilm(film);
+            denoiseFilm(*film);
             denoiseSeconds = secondsSince(denoiseStart);
             denoisedSeconds += denoiseSeconds;
             std::lock_guard<std::mutex> lock(mutex_);
@@ -240,10 +246,10 @@ void RenderedViewport::render(const Request& request) {
         // The view keeps this restart's last denoised frame until the next one; the running
         // mean shows until there is one.
         if (denoise || progress_.denoisedAt == 0) {
-            shown_ = film.denoised ? *film.denoised : film.radiance;
+            shown_ = !film ? std::move(mean) : film->denoised ? *film->denoised : film->radiance;
             fresh_ = true;
         }
-        frame_ = std::move(film);
+        if (film) frame_ = std::move(*film);
         passEnd = Clock::now();
     });
 }

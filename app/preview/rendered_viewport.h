@@ -65,8 +65,9 @@ public:
     // The image to draw (the denoised frame where there is one, else the running mean) when a new
     // one arrived since the last call.
     std::optional<Image> newImage();
-    // The latest pass's frame: its running mean, and its denoised beauty where that pass was
-    // denoised (always so once converged with `denoise`).
+    // The frame of the latest pass that was denoised or the last (for headless frames: once
+    // converged, the last pass's, denoised with `denoise`): the other passes publish their running
+    // mean alone (newImage()).
     std::optional<FilmImage> frame() const;
     ViewportProgress progress() const;
     // "12/64 spp, 3.2 s", "1/64 spp at 160x90, 0.1 s", "64/64 spp, 20.5 s, denoised, converged"
@@ -102,7 +103,7 @@ private:
     std::string builtHash_;
 
     // What the worker publishes, under mutex_.
-    std::optional<FilmImage> frame_;  // the latest pass's
+    std::optional<FilmImage> frame_;  // frame()'s
     Image shown_;                     // what the view draws
     bool fresh_ = false;              // shown_ changed since newImage()
     ViewportProgress progress_;

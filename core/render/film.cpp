@@ -55,15 +55,21 @@ void Film::addPass(const PassImage& pass) {
 
 FilmImage Film::image() const {
     FilmImage out;
-    out.radiance.width = width_;
-    out.radiance.height = height_;
-    out.radiance.pixels.resize(count_.size());
+    out.radiance = meanRadiance();
     out.sampleCount = count_;
     out.sampleSums = sum_;
     out.passSums = passSums_;
-    for (size_t i = 0; i < count_.size(); ++i)
-        for (int c = 0; c < 3; ++c) out.radiance.pixels[i][c] = sum_[3 * i + size_t(c)].mean(count_[i]);
     return out;
+}
+
+Image Film::meanRadiance() const {
+    Image radiance;
+    radiance.width = width_;
+    radiance.height = height_;
+    radiance.pixels.resize(count_.size());
+    for (size_t i = 0; i < count_.size(); ++i)
+        for (int c = 0; c < 3; ++c) radiance.pixels[i][c] = sum_[3 * i + size_t(c)].mean(count_[i]);
+    return radiance;
 }
 
 }  // namespace woven

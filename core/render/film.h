@@ -74,6 +74,9 @@ public:
     // why it stays right when it is not). `samples` is left empty: the film
     // does not know which sample indices its passes were.
     FilmImage image() const;
+    // Its radiance alone (image().radiance): what a progressive view shows after each pass,
+    // without copying the sums and passes that a frame file and the denoiser need.
+    Image meanRadiance() const;
     int passes() const { return passes_; }
 
 private:

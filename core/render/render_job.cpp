@@ -301,6 +301,11 @@ FilmImage RenderJob::snapshot() const {
     return image;
 }
 
+Image RenderJob::meanRadiance() const {
+    std::lock_guard<std::mutex> lock(impl_->filmMutex);
+    return impl_->film.meanRadiance();
+}
+
 const std::string& RenderJob::integratorName() const { return impl_->integratorName; }
 
 }  // namespace woven

@@ -79,6 +79,7 @@ public:
     // or, with a noise threshold, every pixel below it.
     void run(const std::atomic<bool>& cancel, const std::function<void(const RenderProgress&)>& onProgress = {});
     FilmImage snapshot() const;  // thread-safe
+    Image meanRadiance() const;  // thread-safe: snapshot().radiance alone, without copying the rest
     // The one chosen: auto is resolved by a short pilot at the start of run(), so until then
     // it reads auto's name.
     const std::string& integratorName() const;
