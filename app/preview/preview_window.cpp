@@ -445,8 +445,8 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"interacting", interacting_},
         {"resolution_scale", resolution_.scale()},
         {"refinement", std::min(refinement_ + 1, kRefinementFrames)},
-        {"view_checksum", viewChecksum_},
-        {"view_mean", {viewMean_.r, viewMean_.g, viewMean_.b}},
+        {"view", {{"since", begunView_.frame}, {"checksum", begunView_.checksum},
+                  {"mean", {begunView_.mean.r, begunView_.mean.g, begunView_.mean.b}}}},
         {"material", material},
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
         {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
@@ -579,10 +579,11 @@ void PreviewWindow::run() {
                     preview.refinement = refinement_;
                     preview.pixelOffset = refinementOffset(refinement_);
                     renderer_->render(scene(), lights_, camera, size, preview);
-                    // For the window tests: what the settled view shows, to tell whether an edit changed it.
-                    if (refinement_ == kRefinementFrames - 1 && !options_.widgetMap.empty()) {
-                        viewChecksum_ = checksum(renderer_->radiance());
-                        viewMean_ = meanColour(renderer_->radiance());
+                    // Its first frame is a function of the view alone: the window tests need not
+                    // wait for the refinement to end to tell whether an edit changed the view.
+                    if (refinement_ == 0 && size == glm::ivec2(width, height) && !options_.widgetMap.empty()) {
+                        const Image radiance = renderer_->radiance();
+                        begunView_ = {frame_, checksum(radiance), meanColour(radiance)};
                     }
                 }
                 renderer_->display(0, {0, 0}, {width, height}, display_);

@@ -193,8 +193,13 @@ private:
     uint64_t sceneGeneration_ = 0;
     RefinedView refinedView_;
     int refinement_ = 0;  // the frame of the running mean last rendered
-    std::string viewChecksum_;  // of the last settled view, with --widget-map
-    glm::dvec3 viewMean_{0.0};  // its mean linear radiance
+    // With --widget-map, for the window tests to tell whether an edit changed the view: the first
+    // full-size frame of the latest refinement (a view begun), its checksum and mean linear radiance.
+    struct BegunView {
+        int frame = -1;
+        std::string checksum;
+        glm::dvec3 mean{0.0};
+    } begunView_;
     StatusLine status_;  // what the last action said, and the warnings since the scene was opened
     char materialPath_[512] = "material.json";  // Save As's and Load material's file
     std::string savePath_;  // Save's: beside the scene, until Save As chose another

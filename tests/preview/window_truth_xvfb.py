@@ -16,6 +16,7 @@ drives it (issue: "what you tune is what you get"):
 Usage: window_truth_xvfb.py WOVEN_BINARY ASSETS_DIR
 """
 import json
+import math
 import os
 import subprocess
 import sys
@@ -50,17 +51,26 @@ def rested(window, quiet=1.5, timeout=90):
 
 
 def scroll_to(window, label, kind):
-    """Scrolls the panel (the mouse wheel over it) until the widget is on screen."""
+    """Scrolls the panel (the mouse wheel over it) until the widget is on screen: as many wheel
+    clicks at once as its distance needs at the step the clicks before moved it (one to start),
+    as a hand spins the wheel, so that a long way costs the window a few frames, not one a click."""
+    step = None
     for _ in range(40):
         item = window.item(label, kind)
         clip = window.map['windows']['woven']['clip']
-        if item['visible'] and clip[1] <= item['frame'][1] and item['frame'][3] <= clip[3]:
+        top, bottom = item['frame'][1], item['frame'][3]
+        if item['visible'] and clip[1] <= top and bottom <= clip[3]:
             return
-        down = item['frame'][1] > clip[1]
+        down = top > clip[1]
+        distance = bottom - clip[3] if down else clip[1] - top
+        clicks = max(1, min(20, math.ceil(distance / step))) if step else 1
         wx, wy = window.map['state']['window']['pos']
         window.xdotool('mousemove', str(int(wx + (clip[0] + clip[2]) / 2)), str(int(wy + (clip[1] + clip[3]) / 2)))
-        window.xdotool('click', '5' if down else '4')
+        window.xdotool('click', '--repeat', str(clicks), '--delay', '1', '5' if down else '4')
         window.frames()
+        moved = abs(window.item(label, kind)['frame'][1] - top)
+        if moved > 0:
+            step = moved / clicks
     raise Failure(f'"{label}" could not be scrolled into view')
 
 

@@ -3,7 +3,8 @@
 says why it cannot"). Under Xvfb, on three kinds of cloth: the procedural cloth (a plain weave
 of the panel's own parameters), the default scene's denim (from a draft) and the library's tartan
 (per-thread colours), the walk nudges each slider, drag, colour and checkbox of the Material
-section as a user would (a drag of 40 pixels, a click) and waits for the settled view to change;
+section as a user would (a drag of 40 pixels, a click) and waits for the view to change (the first
+frame of the view's refinement, a function of what it shows: the walk need not wait for the rest);
 then it presses Render and checks that the final frame changed too, and the same way: where both
 mean colours moved by more than MOVED of their size, the two moves point the same way (a positive
 dot product). The Undo button must then bring back every parameter as it was (Ctrl+Z is the truth
@@ -33,10 +34,10 @@ SIZE = ('--width', '640', '--height', '480', '--spp', '1', '--noise-threshold', 
 MOVED = 0.05
 
 
-def settled(window, timeout=60):
-    """The checksum of the view once its refinement is complete and a frame has passed."""
-    m = window.wait('the settled view', lambda m: m['state']['refinement'] == 9 and m['state']['view_checksum'], timeout)
-    return m['state']['view_checksum']
+def view_since(window, frame, timeout=60):
+    """The view begun after `frame` (its first full-size frame: checksum and mean), once there is one."""
+    m = window.wait(f'a view begun after frame {frame}', lambda m: m['state']['view']['since'] > frame, timeout)
+    return m['state']['view']
 
 
 def material_controls(m):
@@ -81,38 +82,42 @@ def walk(window, cloth):
     m = window.read()
     controls = material_controls(m)
     check(len(controls) >= 15, f'{cloth}: only {len(controls)} material controls: {controls}')
-    settled(window)
-    view_before = window.read()['state']['view_mean']
+    view_since(window, -1)
     frame_before = final_mean(window)
+    view = window.read()['state']['view']
+    view_before = view['mean']
     silent, unrendered, opposite, disabled, unrestored = [], [], [], [], []
     for label, kind, off in controls:
         if off:
             disabled.append(label)
             continue
-        before = settled(window)
-        params = window.read()['state']['material']['params']
+        m = window.read()
+        frame, params = m['state']['frame'], m['state']['material']['params']
         nudge(window, label, kind)
-        deadline = time.monotonic() + 15
-        after = before
-        while after == before and time.monotonic() < deadline:
-            after = settled(window)
+        try:
+            changed = window.wait(f'{label} to change the view', lambda m: m['state']['view']['since'] > frame and
+                                  m['state']['view']['checksum'] != view['checksum'], 15)['state']['view']
+        except Failure:
+            changed = None
         print(f'{cloth}: {label}', flush=True)
-        if after == before:
+        if changed is None:
             silent.append(label)
             continue
-        view_after = window.read()['state']['view_mean']
+        view_after = changed['mean']
         frame_after = final_mean(window)
         view_move, frame_move = moved(view_before, view_after), moved(frame_before, frame_after)
         if frame_after == frame_before:
             unrendered.append(label)
         elif view_move and frame_move and sum(a * b for a, b in zip(view_move, frame_move)) <= 0:
             opposite.append(f'{label}: view {view_move}, frame {frame_move}')
+        frame = window.read()['state']['frame']
         scroll_to(window, 'Undo', 'button')
         window.click('Undo', 'button')
         # The edit was committed once the control was let go (nothing to redo); the undo makes one.
         m = window.wait('the undo', lambda m: m['state']['history']['redo'], 30)
         if m['state']['material']['params'] != params:
             unrestored.append(label)
+        view = view_since(window, frame)
     acted = len(controls) - len(silent) - len(disabled)
     print(f'{cloth}: {acted} controls act, disabled: {disabled}')
     check(not silent, f'{cloth}: controls that change nothing and are not disabled: {silent}')
