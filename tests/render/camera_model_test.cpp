@@ -5,12 +5,12 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math_constants.h"
 #include "sampling.h"
 
 namespace woven {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 // A camera at (1, 2, 3) turned 30 degrees about +y (so it looks down -z rotated towards -x).
 Camera turnedCamera() {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math_constants.h"
 #include "render_scene.h"
 #include "sampling.h"
 #include "spherical_rectangle.h"
@@ -15,7 +16,6 @@
 namespace woven {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 // Mean and standard error of a Monte Carlo estimate. Tests accept |mean - truth| < 5 standard
 // errors (plus a small absolute slack for float rounding): with fixed seeds this never flakes,

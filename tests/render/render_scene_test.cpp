@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "math_constants.h"
 #include "sampling.h"
 #include "scene_loader.h"
 #include "test_scenes.h"
@@ -17,7 +18,6 @@ using test::occludedFrom;
 using test::quad;
 using test::sceneWith;
 
-constexpr float kPi = 3.14159265358979f;
 
 float dist(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b); }
 

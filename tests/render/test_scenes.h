@@ -10,6 +10,7 @@
 
 #include <atomic>
 
+#include "math_constants.h"
 #include "render_job.h"
 #include "render_scene.h"
 #include "scene_description.h"
@@ -57,7 +58,6 @@ inline std::vector<Mesh> boxInside(const glm::vec3& lo, const glm::vec3& hi, int
 // A sphere about the origin, `rings` x `segments` quads of its latitude-longitude grid, with
 // its normals and uv = (longitude, latitude) / their ranges.
 inline Mesh uvSphere(float radius, int rings, int segments, int material) {
-    constexpr float kPi = 3.14159265358979323846f;
     Mesh m;
     m.name = "sphere";
     for (int r = 0; r <= rings; ++r)
