@@ -9,7 +9,7 @@
 namespace woven {
 
 void PreviewWindow::materialEdited() {
-    showFinal_ = false;  // the rendered frame is of the old cloth
+    render_.hide();  // the rendered frame is of the old cloth
     editPending_ = true;
     ++sceneGeneration_;
 }
@@ -33,7 +33,7 @@ void PreviewWindow::restore(MaterialState state) {
     draftEdit_ = state.draftEdit;
     fabrics_.setChosen(std::move(state.chosenFabric));
     if (draft_) copyToBuffer(draftPath_, draft_->name());
-    showFinal_ = false;
+    render_.hide();
     ++sceneGeneration_;
     applyEdits();
 }
@@ -83,8 +83,9 @@ void PreviewWindow::saveSceneFile(const std::string& path, bool startAnew) {
     SceneSave save;
     for (const WovenEdit& e : edits_->edits()) save.materials.emplace_back(e.target, e.params);
     if (camera_.moved()) save.camera = viewOf(camera_.camera());
-    save.render = {render_.width, render_.height, render_.spp, render_.integrator, samplerName(render_.sampler),
-                   render_.noiseThreshold};
+    const RenderSettings& render = render_.settings();
+    save.render = {render.width, render.height, render.spp, render.integrator, samplerName(render.sampler),
+                   render.noiseThreshold};
     if (scene().environment.color != loadedEnvironment_) save.environmentColor = scene().environment.color;
     save.inputs = scene().inputFiles;
     save.startAnew = startAnew;
@@ -96,6 +97,15 @@ void PreviewWindow::saveSceneFile(const std::string& path, bool startAnew) {
 // Unmoved, the scene's own camera, which the saved file keeps; moved, the view the file is given.
 Camera PreviewWindow::renderCamera() const {
     return camera_.moved() ? cameraOf(viewOf(camera_.camera())) : camera_.camera();
+}
+
+RenderSection::Shown PreviewWindow::shown() {
+    std::string material;  // the edited cloth's, for a U3M export
+    if (editIndex_ >= 0) {
+        const int m = edits_->materialOf(edits_->edits()[size_t(editIndex_)].target);
+        if (m >= 0) material = scene().materials[size_t(m)].name;
+    }
+    return {scene(), renderCamera(), camera_.camera(), material, options_.frame.denoise};
 }
 
 }  // namespace woven

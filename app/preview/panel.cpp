@@ -113,7 +113,7 @@ void PreviewWindow::drawPanel() {
     const bool exposureChanged = ui::SliderFloat("exposure", &display_.exposure, -8.0f, 8.0f, "%.2f stops");
     const bool toneMapChanged = ui::Combo("tone map", &toneMap, toneMaps, int(std::size(toneMaps)));
     display_.toneMap = ToneMap(toneMap);
-    if ((exposureChanged || toneMapChanged) && finalImage_) updateFinalTexture(*finalImage_);
+    if (exposureChanged || toneMapChanged) render_.redisplay(display_);
     ui::Checkbox("filter distant weave", &filterWeave_);
     ImGui::SameLine();
     ui::Checkbox("shadows", &shadows_);
@@ -130,7 +130,7 @@ void PreviewWindow::drawPanel() {
     // window's height without scrolling.
     if (ui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushID("render");
-        drawRenderControls();
+        render_.draw(shown(), display_, status_);
         ImGui::PopID();
     }
     if (ui::CollapsingHeader("Lights")) {

@@ -105,7 +105,6 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     renderer_ = std::make_unique<PreviewRenderer>();
-    glGenTextures(1, &finalTexture_);
     glGenTextures(1, &renderedTexture_);
     display_ = options.frame.display;
     openScene(options.scene);
@@ -114,9 +113,9 @@ PreviewWindow::PreviewWindow(const PreviewWindowOptions& options)
 }
 
 PreviewWindow::~PreviewWindow() {
-    final_.cancel();
+    render_.cancel();
     rendered_.stop();
-    glDeleteTextures(1, &finalTexture_);
+    render_.releaseTexture();
     glDeleteTextures(1, &renderedTexture_);
     fabrics_ = FabricsSection();  // the menu's textures go while the context is current
     renderer_.reset();
@@ -133,14 +132,12 @@ void PreviewWindow::openScene(const std::string& path) {
     FrameOptions sceneOptions = options_.frame;
     if (path != options_.scene) sceneOptions.woven.clear();
     applySceneOptions(loaded, sceneOptions);
-    final_.cancel();
+    render_.cancel();
     status_.restartMessages(loaded.warnings);  // printed on stderr as the scene was read
     edits_.emplace(std::move(loaded));
     scenePath_ = path;
     savePath_ = besideScene(path, "-tuned.json", "material.json");
     copyToBuffer(materialPath_, savePath_);
-    copyToBuffer(imagePath_, besideScene(path, "-render.png", "render.png"));
-    copyToBuffer(exportPath_, besideScene(path, "-export.glb", "scene.glb"));
     renderer_->setMeshes(scene());
     picker_.reset();
     pickedMesh_ = -1;
@@ -167,7 +164,6 @@ void PreviewWindow::openScene(const std::string& path) {
             }
             break;
         }
-    showFinal_ = false;
     loadedEnvironment_ = scene().environment.color;
     ++sceneGeneration_;
     history_.clear();
@@ -175,11 +171,12 @@ void PreviewWindow::openScene(const std::string& path) {
     editPending_ = false;
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
-    render_ = frameSettings(scene(), options_.frame);
+    RenderSettings settings = frameSettings(scene(), options_.frame);
     int windowWidth = 0, windowHeight = 0;
     glfwGetFramebufferSize(window_, &windowWidth, &windowHeight);
-    if (options_.frame.width <= 0 && scene().render.width <= 0) render_.width = std::max(windowWidth, 1);
-    if (options_.frame.height <= 0 && scene().render.height <= 0) render_.height = std::max(windowHeight, 1);
+    if (options_.frame.width <= 0 && scene().render.width <= 0) settings.width = std::max(windowWidth, 1);
+    if (options_.frame.height <= 0 && scene().render.height <= 0) settings.height = std::max(windowHeight, 1);
+    render_.reset(settings, besideScene(path, "-render.png", "render.png"), besideScene(path, "-export.glb", "scene.glb"));
     status_.say("opened " + (path.empty() ? std::string("the procedural cloth") : path));
     glfwSetWindowTitle(window_, ("woven preview - " + (path.empty() ? std::string("cloth") : path)).c_str());
 }
@@ -336,52 +333,10 @@ void PreviewWindow::handleMouse() {
     }
     if (scroll != 0.0) camera_.zoom(std::pow(0.9f, float(scroll)));
     // The rendered frame is of the old view: moving the camera goes back to the live preview.
-    if (changed) showFinal_ = false;
+    if (changed) render_.hide();
     // A held button steers even while the cursor rests, so a pause in a drag is no full frame.
     steering_ = changed || pressedAt_ || glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-}
-
-void PreviewWindow::updateFinalTexture(const FilmImage& film) {
-    uploadImageTexture(finalTexture_, film.radiance, display_);
-}
-
-// The part of the window the panel leaves free on its right (the whole window when the panel is
-// collapsed or elsewhere).
-static ImVec4 viewArea() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const ImGuiWindow* panel = ImGui::FindWindowByName("woven");
-    float left = 0.0f;
-    if (panel && !panel->Collapsed && panel->Pos.x < display.x * 0.5f) left = std::min(panel->Rect().Max.x, display.x * 0.5f);
-    return ImVec4(left, 0.0f, display.x, display.y);
-}
-
-// The rendered frame, letterboxed in the view area beside the panel (row 0 of the image is its
-// top); while the live preview shows, an outline of what the Render button's frame will hold.
-void PreviewWindow::drawFinalImage() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    if (!showFinal_ || !finalImage_) {
-        // The render shares the view's camera and vertical field: its width follows its aspect.
-        if (render_.width <= 0 || render_.height <= 0 || display.y <= 0.0f) return;
-        const float width = display.y * float(render_.width) / float(render_.height);
-        const float x0 = std::max(0.5f * (display.x - width), 0.0f), x1 = std::min(0.5f * (display.x + width), display.x);
-        draw->AddRect(ImVec2(x0, 0.0f), ImVec2(x1, display.y), IM_COL32(255, 255, 255, 96), 0.0f, 0, 1.0f);
-        return;
-    }
-    drawInView(finalTexture_, float(finalImage_->radiance.width) / float(finalImage_->radiance.height));
-}
-
-void PreviewWindow::drawInView(GLuint texture, float imageAspect) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const ImVec4 area = viewArea();
-    const ImVec2 free(area.z - area.x, area.w - area.y);
-    ImVec2 size(free.x, free.x / imageAspect);
-    if (size.y > free.y) size = ImVec2(free.y * imageAspect, free.y);
-    const ImVec2 lo(area.x + (free.x - size.x) * 0.5f, area.y + (free.y - size.y) * 0.5f);
-    draw->AddRectFilled(ImVec2(0, 0), display, IM_COL32(0, 0, 0, 255));
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), lo, ImVec2(lo.x + size.x, lo.y + size.y));
 }
 
 void PreviewWindow::writeWindowScreenshot(const std::string& path) {
@@ -413,13 +368,6 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
     int x = 0, y = 0, width = 0, height = 0;
     glfwGetWindowPos(window_, &x, &y);
     glfwGetWindowSize(window_, &width, &height);
-    nlohmann::json image = nullptr;
-    nlohmann::json finalMean = nullptr;
-    if (finalImage_) {
-        image = {finalImage_->radiance.width, finalImage_->radiance.height};
-        const glm::dvec3 m = meanColour(finalImage_->radiance);
-        finalMean = {m.r, m.g, m.b};
-    }
     // The edited material as the panel shows it: its fabric, repeat and measures.
     nlohmann::json material = nullptr;
     if (const WovenParams* p = editedParams()) {
@@ -449,13 +397,10 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
                   {"mean", {begunView_.mean.r, begunView_.mean.g, begunView_.mean.b}}}},
         {"material", material},
         {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
-        {"render", {{"width", render_.width}, {"height", render_.height}, {"spp", render_.spp},
-                    {"noise_threshold", render_.noiseThreshold}, {"integrator", render_.integrator}}},
+        {"render", render_.settingsState()},
         {"fit", fit_.state()},
         {"rendered", renderedViewState()},
-        {"final", {{"running", final_.running()}, {"fraction", final_.fractionDone()},
-                   {"progress", final_.progressText()}, {"error", final_.error()}, {"image", image}, {"mean", finalMean},
-                   {"shown", showFinal_ && finalImage_.has_value()}, {"done", finalDone_}}},
+        {"final", render_.frameState()},
     };
     const std::string tmp = path + ".tmp";
     {
@@ -470,8 +415,8 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
 // passes or a fit under way, the view still at a reduced size, a drag held, or a counted run
 // (--frames).
 bool PreviewWindow::busy() const {
-    const bool refining = refinement_ < kRefinementFrames - 1 && !(showFinal_ && finalImage_) && !renderedView_;
-    return final_.running() || fit_.running() || (renderedView_ && rendered_.running()) || interacting_ || refining ||
+    const bool refining = refinement_ < kRefinementFrames - 1 && !render_.shown() && !renderedView_;
+    return render_.running() || fit_.running() || (renderedView_ && rendered_.running()) || interacting_ || refining ||
            resolution_.scale() < 1.0f || options_.frames > 0 || !deferredReleases_.empty() ||
            !deferredModifierReleases_.empty();
 }
@@ -526,14 +471,7 @@ void PreviewWindow::run() {
                 else openScene(path);
             });
         }
-        // The job stores its last snapshot before it stops running: once it was seen stopped,
-        // the snapshot taken next is its last.
-        const bool renderStopped = !final_.running();
-        if (std::optional<FilmImage> snapshot = final_.newSnapshot()) {
-            finalImage_ = std::move(snapshot);
-            updateFinalTexture(*finalImage_);
-        }
-        finalDone_ = renderStopped && finalImage_ && final_.error().empty();
+        render_.poll(display_);
 
         releaseDeferredModifiers();
         ImGui_ImplOpenGL3_NewFrame();
@@ -549,11 +487,11 @@ void PreviewWindow::run() {
         commitCompletedEdit();
         setCurrentWidgetMap(nullptr);
         widgets_.warnClashes();
-        drawFinalImage();
+        render_.drawInView();
         handleMouse();
         // A focused text field is no interaction: the view stays sharp while typing.
         interacting_ = steering_ || panelInteracting();
-        const bool finalShown = showFinal_ && finalImage_;
+        const bool finalShown = render_.shown();
         if (renderedView_ && !finalShown) drawRenderedView();
         ImGui::Render();
 

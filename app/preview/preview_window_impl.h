@@ -1,8 +1,8 @@
 #pragma once
 // The previewer window's class, private to app/preview: its loop and mouse handling are in
 // preview_window.cpp, its ImGui panel's sections in panel.cpp (the panel, lights),
-// render_panel.cpp (the Render button), material_panel.cpp (selection, material, draft), and
-// the sections that are objects of their own: fit_section.h (woven fit), fabrics_section.h.
+// material_panel.cpp (selection, material, draft), and the sections that are objects of their
+// own: render_section.h (the Render button), fit_section.h (woven fit), fabrics_section.h.
 #include <epoxy/gl.h>
 // epoxy must come first: GLFW would otherwise include the system GL header.
 #include <GLFW/glfw3.h>
@@ -19,13 +19,14 @@
 #include "fabric_choice.h"
 #include "fabric_menu.h"
 #include "fabrics_section.h"
-#include "final_render.h"
+#include "file_fields.h"
 #include "fit_section.h"
 #include "interactive_resolution.h"
 #include "orbit_camera.h"
 #include "preview_lights.h"
 #include "preview_renderer.h"
 #include "preview_window.h"
+#include "render_section.h"
 #include "rendered_viewport.h"
 #include "scene_picker.h"
 #include "status_line.h"
@@ -35,25 +36,6 @@
 #include "woven_edits.h"
 
 namespace woven {
-
-// ImGui's text fields edit fixed buffers.
-template <size_t N>
-void copyToBuffer(char (&buffer)[N], const std::string& text) {
-    std::snprintf(buffer, N, "%s", text.c_str());
-}
-
-inline bool hasExtension(const std::string& path, const char* ext) {
-    const size_t n = std::char_traits<char>::length(ext);
-    return path.size() >= n && path.compare(path.size() - n, n, ext) == 0;
-}
-
-// The mean of every pixel, summed in double (an empty image: 0): how the widget map says what a
-// view or a frame shows.
-inline glm::dvec3 meanColour(const Image& image) {
-    glm::dvec3 sum(0.0);
-    for (const glm::vec3& c : image.pixels) sum += glm::dvec3(c);
-    return image.pixels.empty() ? sum : sum / double(image.pixels.size());
-}
 
 // An output's default path: beside the scene, named after it (the procedural cloth's: `fallback`
 // in the working directory).
@@ -129,17 +111,14 @@ private:
     // The Render button's camera: the one a scene file saved now renders through.
     Camera renderCamera() const;
     void drawLightControls();
-    void drawRenderControls();
+    // What the Render section renders and exports: the scene and cameras as the window shows them.
+    RenderSection::Shown shown();
     // The finished fit's material into the edit it was started for, now the edited one.
     void applyFinishedFit();
     // The target of the edit the panel tunes; empty for none.
     std::string editedTarget() const;
     // The length per UV unit of the target's meshes, measured once a scene (nullopt: no UVs).
     const std::optional<glm::dvec2>& metresPerUvOf(const std::string& target);
-    void updateFinalTexture(const FilmImage& film);
-    void drawFinalImage();
-    // `texture`, letterboxed in the part of the window the panel leaves free.
-    static void drawInView(GLuint texture, float imageAspect);
     // Rendered mode (rendered_view.cpp).
     void setRenderedView(bool on);
     void handleViewKeys();
@@ -208,8 +187,6 @@ private:
     UndoHistory<MaterialState> history_;
     MaterialState committed_;    // the state after the last completed edit
     bool editPending_ = false;  // a material changed since
-    char imagePath_[512] = "render.png";
-    char exportPath_[512] = "scene.glb";
 
     // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
     // parameters at once, so the next frame shows it.
@@ -223,12 +200,7 @@ private:
 
     FitSection fit_;
 
-    FinalRender final_;
-    std::optional<FilmImage> finalImage_;
-    GLuint finalTexture_ = 0;
-    bool showFinal_ = false;
-    RenderSettings render_;  // the Render button's, but for the camera
-    bool finalDone_ = false;  // the render ended (not cancelled, not failed) and its last pass is shown
+    RenderSection render_;
 
     // The view's Rendered mode: the path tracer's progressive frame in place of the GLSL one.
     RenderedViewport rendered_;

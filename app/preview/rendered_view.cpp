@@ -5,6 +5,7 @@
 
 #include "image_texture.h"
 #include "preview_window_impl.h"
+#include "view_area.h"
 
 namespace woven {
 
@@ -32,7 +33,7 @@ bool PreviewWindow::restWhileRendering() {
 // button's size, sampler and seed) handed to the path tracer, which starts again where it changed,
 // and its latest image letterboxed in the view as the Render button's frame is.
 void PreviewWindow::drawRenderedView() {
-    RenderSettings settings = viewportSettings(render_);
+    RenderSettings settings = viewportSettings(render_.settings());
     settings.camera = camera_.camera();
     rendered_.show(scene(), settings, interacting_, options_.frame.denoise);
     std::optional<Image> image = rendered_.newImage();

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "image.h"
+
 namespace woven {
 
 struct WidgetItem {
@@ -24,6 +26,14 @@ struct WidgetItem {
     bool visible = false;       // not clipped away (scrolled out, a collapsed window)
     bool disabled = false;      // drawn disabled (ImGui::BeginDisabled): it takes no input
 };
+
+// The mean of every pixel, summed in double (an empty image: 0): how the widget map says what a
+// view or a frame shows.
+inline glm::dvec3 meanColour(const Image& image) {
+    glm::dvec3 sum(0.0);
+    for (const glm::vec3& c : image.pixels) sum += glm::dvec3(c);
+    return image.pixels.empty() ? sum : sum / double(image.pixels.size());
+}
 
 namespace ui {
 bool BeginCombo(const char* label, const char* preview);
