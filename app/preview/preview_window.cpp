@@ -3,7 +3,6 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
-#include <imgui_internal.h>
 
 #include <algorithm>
 #include <atomic>
@@ -18,7 +17,6 @@
 #include "demo_scene.h"
 #include "gl_error.h"
 #include "image_io.h"
-#include "image_texture.h"
 #include "scene_loader.h"
 #include "woven_assignment.h"
 #include "woven_params_json.h"
