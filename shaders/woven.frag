@@ -174,7 +174,9 @@ vec3 averagedTransmission(Frame front, vec3 p, vec3 ng, vec3 wo, Lobe weft, Lobe
         }
         sum += f * L;
     }
-    return sum / float(FILTER_SAMPLES);
+    // The ambient light from behind (the sky, the light bounced inside a lampshade) passes as
+    // transmittedLight() passes it, through the covered share.
+    return sum / float(FILTER_SAMPLES) + ambientBehind * T * (yarnCoverage.x + yarnCoverage.y);
 }
 #endif
 

@@ -18,8 +18,8 @@
 
 namespace woven {
 
-constexpr int kBounceRays = 32;  // a side
-constexpr int kHitSkyRays = 8;   // at each hit, for its share of the sky
+constexpr int kBounceRays = 16;  // a side
+constexpr int kHitSkyRays = 4;   // at each hit, for its share of the sky
 
 // What a vertex sees bounced, on the normal's side [0] and on the other [1].
 struct BouncedVertex {
