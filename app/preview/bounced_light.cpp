@@ -56,7 +56,9 @@ glm::vec3 lightIrradiance(const RenderScene& traced, const SceneDescription& sce
             const float dist2 = std::max(glm::dot(d, d), 1e-12f);
             distance = std::sqrt(dist2);
             wi = d / distance;
-            intensity /= dist2;
+            // An area sample as a disc of its area seen along its axis, L A / (d^2 + A / pi): at
+            // most pi L however close a wall next to a lamp is, where a point's 1 / d^2 is not.
+            intensity /= dist2 + l.area / kPi;
         }
         const float cosine = glm::dot(wi, n);
         if (cosine <= 0.0f) continue;
@@ -106,7 +108,7 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
         const glm::vec3 d = frame.toWorld(spiralDirection(i, kBounceRays, turn));
         ++out.rays;
         const std::optional<SurfaceHit> hit = traced.intersect(traced.spawnRay(from, d));
-        if (!hit || hit->mesh < 0) continue;
+        if (!hit) continue;
         const glm::vec3 towards = -d;
         const glm::vec3 facing = glm::dot(hit->ns, towards) >= 0.0f ? hit->ns : -hit->ns;
         const float hitTurn = vertexTurn(key ^ (uint32_t(i + 1) * 0x85EBCA6BU));

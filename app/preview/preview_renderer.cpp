@@ -39,7 +39,7 @@ void uploadLights(const ShaderProgram& program, const PreviewLights& lights, con
 bool sameLights(const PreviewLights& a, const PreviewLights& b) {
     auto same = [](const PreviewLight& x, const PreviewLight& y) {
         return x.type == y.type && x.position == y.position && x.axis == y.axis && x.intensity == y.intensity &&
-               x.cosOuter == y.cosOuter && x.cosInner == y.cosInner;
+               x.cosOuter == y.cosOuter && x.cosInner == y.cosInner && x.area == y.area;
     };
     return a.ambient == b.ambient &&
            std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(), same);
@@ -101,7 +101,7 @@ PreviewRenderer::~PreviewRenderer() {
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
     sceneMeshes_.clear();
-    bounced_ = {};
+    clothShares_.clear();
     bouncedLights_.reset();
     weaves_.clear();
     textures_.reset(&scene.textures);
@@ -190,22 +190,23 @@ void PreviewRenderer::updateShadows(const SceneDescription& scene, const Preview
 
 void PreviewRenderer::updateBouncedLight(const SceneDescription& scene, const PreviewLights& lights, bool retrace) {
     if (bouncedLights_ && (!retrace || sameLights(*bouncedLights_, lights))) return;
-    bounced_ = bouncedLight(scene, lights);
+    const BouncedLight bounced = bouncedLight(scene, lights);
     bouncedLights_ = lights;
-    for (size_t k = 0; k < meshes_.size(); ++k) meshes_[k]->setBouncedLight(bounced_.meshes[sceneMeshes_[k]]);
+    clothShares_ = bounced.clothShares;
+    for (size_t k = 0; k < meshes_.size(); ++k) meshes_[k]->setBouncedLight(bounced.meshes[sceneMeshes_[k]]);
 }
 
 glm::vec3 PreviewRenderer::bouncedClothAlbedo(const SceneDescription& scene) {
     glm::vec3 albedo(0.0f);
-    for (size_t m = 0; m < bounced_.clothShares.size() && m < scene.materials.size(); ++m) {
-        if (!(bounced_.clothShares[m] > 0.0f) || !scene.materials[m].woven) continue;
+    for (size_t m = 0; m < clothShares_.size() && m < scene.materials.size(); ++m) {
+        if (!(clothShares_[m] > 0.0f) || !scene.materials[m].woven) continue;
         const WovenParams& params = *scene.materials[m].woven;
         auto& [key, cached] = clothAlbedos_[int(m)];
         if (std::string json = paramsToJson(params).dump(); json != key) {
             cached = wovenAlbedo(params);
             key = std::move(json);
         }
-        albedo += bounced_.clothShares[m] * cached;
+        albedo += clothShares_[m] * cached;
     }
     return albedo;
 }

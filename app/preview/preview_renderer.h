@@ -96,9 +96,10 @@ private:
     // skyVisibility() of the meshes last uploaded, and their skyVisibilityKey().
     std::vector<std::vector<glm::vec2>> sky_;
     size_t skyKey_ = 0;
-    // bouncedLight() of the meshes, traced with bouncedLights_ (none: not traced since setMeshes()).
-    BouncedLight bounced_;
+    // The lights bouncedLight() was last traced with (none: not since setMeshes()), and the
+    // shares of its rays off woven cloth per material.
     std::optional<PreviewLights> bouncedLights_;
+    std::vector<float> clothShares_;
     // wovenAlbedo() per material index, with its parameters' JSON, for bouncedClothAlbedo().
     std::map<int, std::pair<std::string, glm::vec3>> clothAlbedos_;
     SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
