@@ -52,7 +52,7 @@ Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
 // Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
 vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     vec3 woLocal = toLocal(f, wo);
-    vec3 sum = ambientSeen * ashikhminShirleyAlbedo(lobe, woLocal.z);
+    vec3 sum = ambientSeen * ashikhminShirleyAlbedo(lobe, woLocal, toLocal(f, ng));
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
         vec3 L = incidentLight(i, p, ng, wi);
@@ -210,8 +210,8 @@ vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec
         warpFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(1, material.cy, x, 0.0)), tangent.y);
         weftWo[k] = toLocal(weftFrame[k], wo);
         warpWo[k] = toLocal(warpFrame[k], wo);
-        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k].z) +
-                                  yarnArea.y * ashikhminShirleyAlbedo(warp, warpWo[k].z));
+        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k], toLocal(weftFrame[k], ng)) +
+                              yarnArea.y * ashikhminShirleyAlbedo(warp, warpWo[k], toLocal(warpFrame[k], ng)));
     }
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
