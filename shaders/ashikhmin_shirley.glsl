@@ -57,19 +57,29 @@ vec3 ashikhminShirleyHalfVector(Lobe l, vec2 u) {
 // integral falls below the Schlick Fresnel at n.k1 at grazing angles, where the lobe reaches
 // below the horizon): it is averaged over half vectors drawn from its density on a fixed
 // Fibonacci lattice, each weighing F(k1.h) wi.z / max(wo.z, wi.z) (the lobe x cosine / density).
-const int ALBEDO_SAMPLES = 21, ALBEDO_STEP = 13;  // consecutive Fibonacci numbers
-vec3 ashikhminShirleyAlbedo(Lobe l, vec3 wo, vec3 ng) {
+const int ALBEDO_SAMPLES = 8, ALBEDO_STEP = 5;  // consecutive Fibonacci numbers
+// The lobe's half vectors for ashikhminShirleyAlbedo(), drawn once where one lobe is seen from
+// several directions (the far field's cross-section).
+struct AlbedoHalfVectors { vec3 h[ALBEDO_SAMPLES]; };
+AlbedoHalfVectors albedoHalfVectors(Lobe l) {
+    AlbedoHalfVectors hv;
+    for (int i = 0; i < ALBEDO_SAMPLES; ++i) {
+        vec2 u = vec2((float(i) + 0.5) / float(ALBEDO_SAMPLES), fract((float(i * ALBEDO_STEP) + 0.5) / float(ALBEDO_SAMPLES)));
+        hv.h[i] = ashikhminShirleyHalfVector(l, u);
+    }
+    return hv;
+}
+vec3 ashikhminShirleyAlbedo(Lobe l, AlbedoHalfVectors hv, vec3 wo, vec3 ng) {
     if (wo.z <= 0.0) return vec3(0.0);
     float spec = 0.0;
     for (int i = 0; i < ALBEDO_SAMPLES; ++i) {
-        vec2 u = vec2((float(i) + 0.5) / float(ALBEDO_SAMPLES), fract((float(i * ALBEDO_STEP) + 0.5) / float(ALBEDO_SAMPLES)));
-        vec3 h = ashikhminShirleyHalfVector(l, u);
-        float oh = dot(wo, h);
+        float oh = dot(wo, hv.h[i]);
         if (oh <= 0.0) continue;
-        vec3 wi = 2.0 * oh * h - wo;
+        vec3 wi = 2.0 * oh * hv.h[i] - wo;
         if (wi.z <= 0.0 || dot(wi, ng) <= 0.0) continue;
         spec += (l.rs + (1.0 - l.rs) * pow5(1.0 - oh)) * wi.z / max(wo.z, wi.z);
     }
     return l.rd * (1.0 - l.rs) * (1.0 - pow5(1.0 - 0.5 * wo.z)) * (0.5 + 0.5 * clamp(ng.z, -1.0, 1.0)) +
            vec3(spec / float(ALBEDO_SAMPLES));
 }
+vec3 ashikhminShirleyAlbedo(Lobe l, vec3 wo, vec3 ng) { return ashikhminShirleyAlbedo(l, albedoHalfVectors(l), wo, ng); }

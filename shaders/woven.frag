@@ -204,14 +204,15 @@ vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     vec3 weftWo[FILTER_SAMPLES], warpWo[FILTER_SAMPLES];
     vec3 sum = vec3(0.0);
+    AlbedoHalfVectors weftH = albedoHalfVectors(weft), warpH = albedoHalfVectors(warp);
     for (int k = 0; k < FILTER_SAMPLES; ++k) {
         float x = (float(k) + 0.5) * (2.0 / float(FILTER_SAMPLES)) - 1.0;
         weftFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(0, material.cy, x, 0.0)), tangent.x);
         warpFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(1, material.cy, x, 0.0)), tangent.y);
         weftWo[k] = toLocal(weftFrame[k], wo);
         warpWo[k] = toLocal(warpFrame[k], wo);
-        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k], toLocal(weftFrame[k], ng)) +
-                              yarnArea.y * ashikhminShirleyAlbedo(warp, warpWo[k], toLocal(warpFrame[k], ng)));
+        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftH, weftWo[k], toLocal(weftFrame[k], ng)) +
+                              yarnArea.y * ashikhminShirleyAlbedo(warp, warpH, warpWo[k], toLocal(warpFrame[k], ng)));
     }
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
