@@ -2,7 +2,7 @@
 // point, spot and directional lights as they are, emissive triangles as a few point-like
 // samples each, the environment's brightest regions as directional lights and the rest of it as
 // a constant ambient radiance integrated against the lobe, weighed by the share of the sky the
-// vertices see (mesh_varyings.glsl). With PREVIEW_SHADOWS, the strongest lights are occluded
+// vertices see, plus one bounce of light off the scene (mesh_varyings.glsl). With PREVIEW_SHADOWS, the strongest lights are occluded
 // through ShadowMaps (app/preview/shadow_maps.cpp).
 // PREVIEW_TRANSMITTED_SHADOWS adds the occluders that let coloured light through.
 #define MAX_LIGHTS 32
@@ -15,12 +15,13 @@ uniform vec4 lightIntensity[MAX_LIGHTS];  // rgb: W/sr, W/m^2, or radiance x are
 uniform vec3 ambientRadiance;
 // The ambient as it reaches the shaded point, on the side seen and on the other: ambientRadiance
 // times that side's share of the sky, as the path tracer's environment is occluded (a fold, the
-// floor below). Set by ambientAt() before a surface shader lights anything.
+// floor below), plus the light bounced to that side off the scene (a room's ceiling, the floor
+// below a hem). Set by ambientAt() before a surface shader lights anything.
 vec3 ambientSeen, ambientBehind;
 void ambientAt(bool backSide) {
     vec2 share = backSide ? vSkyVisibility.yx : vSkyVisibility;
-    ambientSeen = ambientRadiance * share.x;
-    ambientBehind = ambientRadiance * share.y;
+    ambientSeen = ambientRadiance * share.x + (backSide ? vBouncedBack : vBouncedFront);
+    ambientBehind = ambientRadiance * share.y + (backSide ? vBouncedFront : vBouncedBack);
 }
 
 #ifdef PREVIEW_SHADOWS

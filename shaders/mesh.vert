@@ -3,7 +3,9 @@
 // changes no value). Normals go by the inverse transpose, tangents by the matrix, the handedness
 // turns with a mirroring copy, as core places a copy's hit (render_scene.cpp's hitCorners).
 // Attributes a mesh lacks are zero (uv1, tangent) or white (colour). skyVisibility: the sky's
-// share about the normal and about its opposite (app/preview/sky_visibility.h).
+// share about the normal and about its opposite (app/preview/sky_visibility.h); bounced and
+// offCloth: the light bounced to each side (app/preview/bounced_light.h), that off woven cloth
+// times the cloth's albedo here.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
@@ -12,8 +14,13 @@ layout(location = 4) in vec4 color;
 layout(location = 5) in vec4 tangent;
 layout(location = 6) in mat4 instanceMatrix;  // locations 6 to 9
 layout(location = 10) in vec2 skyVisibility;
+layout(location = 11) in vec3 bouncedFront;
+layout(location = 12) in vec3 bouncedBack;
+layout(location = 13) in vec3 offClothFront;
+layout(location = 14) in vec3 offClothBack;
 
 uniform mat4 viewProjection;
+uniform vec3 bouncedClothAlbedo;
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -22,6 +29,7 @@ out vec2 vUv1;
 out vec4 vColor;
 out vec4 vTangent;
 out vec2 vSkyVisibility;
+out vec3 vBouncedFront, vBouncedBack;
 
 void main() {
     mat3 linear = mat3(instanceMatrix);
@@ -31,6 +39,8 @@ void main() {
     vUv1 = uv1;
     vColor = color;
     vSkyVisibility = skyVisibility;
+    vBouncedFront = bouncedFront + bouncedClothAlbedo * offClothFront;
+    vBouncedBack = bouncedBack + bouncedClothAlbedo * offClothBack;
     vTangent = vec4(linear * tangent.xyz, determinant(linear) < 0.0 ? -tangent.w : tangent.w);
     gl_Position = viewProjection * vec4(vPosition, 1.0);
 }

@@ -1,6 +1,7 @@
 // What mesh.vert hands every surface shader, interpolated: world-space position and normal, both
 // sets of texture coordinates, the vertex colour and the tangent (zero or white where the mesh
-// has none), and the sky's share on the normal's side and on the other (sky_visibility.h).
+// has none), the sky's share on the normal's side and on the other (sky_visibility.h), and the
+// radiance bounced to either side (bounced_light.h).
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
@@ -8,3 +9,4 @@ in vec2 vUv1;
 in vec4 vColor;
 in vec4 vTangent;
 in vec2 vSkyVisibility;
+in vec3 vBouncedFront, vBouncedBack;

@@ -52,7 +52,7 @@ Frame tangentFrame(vec3 n, vec3 dpdu, vec3 dpdv) {
 // Light reflected towards wo by a lobe in frame f at p; `ng` as for incidentLight().
 vec3 reflectedLight(Frame f, Lobe lobe, vec3 p, vec3 ng, vec3 wo) {
     vec3 woLocal = toLocal(f, wo);
-    vec3 sum = ambientSeen * ashikhminShirleyAlbedo(lobe, woLocal.z);
+    vec3 sum = ambientSeen * ashikhminShirleyAlbedo(lobe, woLocal, toLocal(f, ng));
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;
         vec3 L = incidentLight(i, p, ng, wi);
@@ -174,7 +174,9 @@ vec3 averagedTransmission(Frame front, vec3 p, vec3 ng, vec3 wo, Lobe weft, Lobe
         }
         sum += f * L;
     }
-    return sum / float(FILTER_SAMPLES);
+    // The ambient light from behind (the sky, the light bounced inside a lampshade) passes as
+    // transmittedLight() passes it, through the covered share.
+    return sum / float(FILTER_SAMPLES) + ambientBehind * T * (yarnCoverage.x + yarnCoverage.y);
 }
 #endif
 
@@ -202,14 +204,15 @@ vec3 averagedRadiance(Frame tangent, Frame front, int face, vec3 p, vec3 ng, vec
     Frame weftFrame[FILTER_SAMPLES], warpFrame[FILTER_SAMPLES];
     vec3 weftWo[FILTER_SAMPLES], warpWo[FILTER_SAMPLES];
     vec3 sum = vec3(0.0);
+    AlbedoHalfVectors weftH = albedoHalfVectors(weft), warpH = albedoHalfVectors(warp);
     for (int k = 0; k < FILTER_SAMPLES; ++k) {
         float x = (float(k) + 0.5) * (2.0 / float(FILTER_SAMPLES)) - 1.0;
         weftFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(0, material.cy, x, 0.0)), tangent.x);
         warpFrame[k] = frameFromNormalAndAxis(toWorld(tangent, yarnNormal(1, material.cy, x, 0.0)), tangent.y);
         weftWo[k] = toLocal(weftFrame[k], wo);
         warpWo[k] = toLocal(warpFrame[k], wo);
-        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftWo[k].z) +
-                                  yarnArea.y * ashikhminShirleyAlbedo(warp, warpWo[k].z));
+        sum += ambientSeen * (yarnArea.x * ashikhminShirleyAlbedo(weft, weftH, weftWo[k], toLocal(weftFrame[k], ng)) +
+                              yarnArea.y * ashikhminShirleyAlbedo(warp, warpH, warpWo[k], toLocal(warpFrame[k], ng)));
     }
     for (int i = 0; i < lightCount; ++i) {
         vec3 wi;

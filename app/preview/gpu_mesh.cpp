@@ -13,9 +13,9 @@ struct Vertex {
     glm::vec2 skyVisibility;
 };
 
-void attribute(GLuint location, int size, size_t offset) {
+void attribute(GLuint location, int size, size_t offset, size_t stride = sizeof(Vertex)) {
     glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offset));
+    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, GLsizei(stride), reinterpret_cast<void*>(offset));
 }
 
 // The instance matrices from instance `first` on, a column per location.
@@ -54,6 +54,13 @@ GpuMesh::GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility) 
     attribute(4, 4, offsetof(Vertex, color));
     attribute(5, 4, offsetof(Vertex, tangent));
     attribute(kSkyVisibilityLocation, 2, offsetof(Vertex, skyVisibility));
+    glGenBuffers(1, &bouncedBuffer_);
+    setBouncedLight(std::vector<BouncedVertex>(vertices.size()));
+    glBindBuffer(GL_ARRAY_BUFFER, bouncedBuffer_);
+    attribute(kBouncedLightLocation, 3, offsetof(BouncedVertex, radiance[0]), sizeof(BouncedVertex));
+    attribute(kBouncedLightLocation + 1, 3, offsetof(BouncedVertex, radiance[1]), sizeof(BouncedVertex));
+    attribute(kBouncedLightLocation + 2, 3, offsetof(BouncedVertex, offCloth[0]), sizeof(BouncedVertex));
+    attribute(kBouncedLightLocation + 3, 3, offsetof(BouncedVertex, offCloth[1]), sizeof(BouncedVertex));
     if (mesh.instances) {
         std::vector<glm::mat4> matrices;
         matrices.reserve(mesh.instances->size());
@@ -75,7 +82,14 @@ GpuMesh::GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility) 
     glBindVertexArray(0);
 }
 
+void GpuMesh::setBouncedLight(const std::vector<BouncedVertex>& bounced) {
+    glBindBuffer(GL_ARRAY_BUFFER, bouncedBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bounced.size() * sizeof(BouncedVertex)), bounced.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 GpuMesh::~GpuMesh() {
+    glDeleteBuffers(1, &bouncedBuffer_);
     glDeleteBuffers(1, &instanceBuffer_);
     glDeleteBuffers(1, &indexBuffer_);
     glDeleteBuffers(1, &vertexBuffer_);

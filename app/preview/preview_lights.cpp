@@ -37,6 +37,7 @@ PreviewLight sampleOf(const EmissiveTriangle* first, const EmissiveTriangle* las
     const float len = glm::length(normalSum);
     l.axis = len > 0.0f ? normalSum / len : glm::vec3(0.0f, 0.0f, 1.0f);
     l.intensity = power;
+    l.area = area;
     return l;
 }
 

@@ -17,6 +17,7 @@ struct PreviewLight {
     glm::vec3 axis{0.0f};       // spot direction travelled, or area normal
     glm::vec3 intensity{0.0f};  // W/sr, W/m^2, or radiance x area
     float cosOuter = 0.0f, cosInner = 1.0f;
+    float area = 0.0f;  // an area sample's: of the triangles it stands for
 };
 
 struct PreviewLights {

@@ -17,7 +17,7 @@ namespace woven {
 
 namespace {
 
-void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
+void uploadLights(const ShaderProgram& program, const PreviewLights& lights, const glm::vec3& bouncedClothAlbedo) {
     const int n = std::min<int>(int(lights.lights.size()), PreviewLights::kMaxLights);
     std::vector<glm::vec4> position(n), axis(n), intensity(n);
     for (int i = 0; i < n; ++i) {
@@ -33,6 +33,16 @@ void uploadLights(const ShaderProgram& program, const PreviewLights& lights) {
         glUniform4fv(program.uniform("lightIntensity"), n, glm::value_ptr(intensity[0]));
     }
     glUniform3fv(program.uniform("ambientRadiance"), 1, glm::value_ptr(lights.ambient));
+    glUniform3fv(program.uniform("bouncedClothAlbedo"), 1, glm::value_ptr(bouncedClothAlbedo));
+}
+
+bool sameLights(const PreviewLights& a, const PreviewLights& b) {
+    auto same = [](const PreviewLight& x, const PreviewLight& y) {
+        return x.type == y.type && x.position == y.position && x.axis == y.axis && x.intensity == y.intensity &&
+               x.cosOuter == y.cosOuter && x.cosInner == y.cosInner && x.area == y.area;
+    };
+    return a.ambient == b.ambient &&
+           std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(), same);
 }
 
 // Whether a material lets light through its surface, so that its shadow is coloured: woven yarns
@@ -90,6 +100,9 @@ PreviewRenderer::~PreviewRenderer() {
 
 void PreviewRenderer::setMeshes(const SceneDescription& scene) {
     meshes_.clear();
+    sceneMeshes_.clear();
+    clothShares_.clear();
+    bouncedLights_.reset();
     weaves_.clear();
     textures_.reset(&scene.textures);
     shadowCasters_.clear();
@@ -115,6 +128,7 @@ void PreviewRenderer::setMeshes(const SceneDescription& scene) {
         const Mesh& m = scene.meshes[i];
         if (m.triangles.empty()) continue;
         meshes_.push_back(std::make_unique<GpuMesh>(m, sky_[i]));
+        sceneMeshes_.push_back(i);
         // Emitters cast no shadow here: an area light's samples sit on (or in) its own surface.
         const bool emitter = m.material >= 0 && m.material < int(scene.materials.size()) &&
                              scene.materials[m.material].emits();
@@ -174,6 +188,29 @@ void PreviewRenderer::updateShadows(const SceneDescription& scene, const Preview
     shadows_->update(opaque, casters, meshGeneration_, lights, bounds_);
 }
 
+void PreviewRenderer::updateBouncedLight(const SceneDescription& scene, const PreviewLights& lights, bool retrace) {
+    if (bouncedLights_ && (!retrace || sameLights(*bouncedLights_, lights))) return;
+    const BouncedLight bounced = bouncedLight(scene, lights);
+    bouncedLights_ = lights;
+    clothShares_ = bounced.clothShares;
+    for (size_t k = 0; k < meshes_.size(); ++k) meshes_[k]->setBouncedLight(bounced.meshes[sceneMeshes_[k]]);
+}
+
+glm::vec3 PreviewRenderer::bouncedClothAlbedo(const SceneDescription& scene) {
+    glm::vec3 albedo(0.0f);
+    for (size_t m = 0; m < clothShares_.size() && m < scene.materials.size(); ++m) {
+        if (!(clothShares_[m] > 0.0f) || !scene.materials[m].woven) continue;
+        const WovenParams& params = *scene.materials[m].woven;
+        auto& [key, cached] = clothAlbedos_[int(m)];
+        if (std::string json = paramsToJson(params).dump(); json != key) {
+            cached = wovenAlbedo(params);
+            key = std::move(json);
+        }
+        albedo += clothShares_[m] * cached;
+    }
+    return albedo;
+}
+
 void PreviewRenderer::ensureTarget(glm::ivec2 size) {
     if (size == size_) return;
     if (size.x < 1 || size.y < 1) throw GlError("preview size must be positive");
@@ -223,6 +260,8 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
         updateShadows(scene, lights);
         shadows = shadows_->lookups();
     }
+    updateBouncedLight(scene, lights, options.traceBounce);
+    const glm::vec3 clothAlbedo = bouncedClothAlbedo(scene);
     ensureTarget(size);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, size.x, size.y);
@@ -254,8 +293,8 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     for (const auto& mesh : meshes_) {
         const int index = mesh->material();
         const bool valid = index >= 0 && index < int(scene.materials.size());
-        drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, camera, viewProjection,
-                 options, shadows);
+        drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, clothAlbedo, camera,
+                 viewProjection, options, shadows);
     }
     glDisable(GL_CULL_FACE);
     accumulate(options.refinement);
@@ -311,14 +350,14 @@ void PreviewRenderer::drawEnvironment(const Environment& environment, const Came
 }
 
 void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,
-                               const PreviewLights& lights, const Camera& camera, const glm::mat4& viewProjection,
-                               const PreviewOptions& options, ShadowLookups shadows) {
+                               const PreviewLights& lights, const glm::vec3& bouncedClothAlbedo, const Camera& camera,
+                               const glm::mat4& viewProjection, const PreviewOptions& options, ShadowLookups shadows) {
     const ShaderProgram& program = surfaceProgram(material, options.filterWeave, shadows);
     glUseProgram(program.id());
     glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniform3fv(program.uniform("cameraPosition"), 1, glm::value_ptr(glm::vec3(camera.cameraToWorld[3])));
     glUniform3fv(program.uniform("emission"), 1, glm::value_ptr(material.emission));
-    uploadLights(program, lights);
+    uploadLights(program, lights, bouncedClothAlbedo);
     // A single-sided material shows its front alone, as glTF viewers draw it and camera rays see it
     // (RayKind in render_scene.h); counter-clockwise is the front, as in glTF.
     if (material.doubleSided) glDisable(GL_CULL_FACE);

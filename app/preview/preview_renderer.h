@@ -5,8 +5,10 @@
 // Needs a current OpenGL 4.1 core context.
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "bounced_light.h"
 #include "gltf_gl_material.h"
 #include "gpu_mesh.h"
 #include "display_transform.h"
@@ -26,6 +28,9 @@ struct PreviewOptions {
     // `refinement`, sampling each pixel `pixelOffset` pixels from its centre. 0: a frame of its own.
     int refinement = 0;
     glm::vec2 pixelOffset{0.0f};
+    // false: the bounced light traced before is kept though the lights changed (a light being
+    // dragged: it is traced again once the window rests).
+    bool traceBounce = true;
 };
 
 class PreviewRenderer {
@@ -36,7 +41,8 @@ public:
     PreviewRenderer& operator=(const PreviewRenderer&) = delete;
 
     // Uploads the scene's meshes, textures and environment image (materials, lights and the
-    // environment's colour and rotation are read at every render()).
+    // environment's colour and rotation are read at every render(); the first render() after
+    // this, or after a change of the lights, traces the light they bounce, bounced_light.h).
     void setMeshes(const SceneDescription& scene);
 
     // Renders the radiance image of `camera` at `size` into the internal target (into the running
@@ -63,14 +69,21 @@ private:
     void ensureTarget(glm::ivec2 size);
     void drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size);
     void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
-                  const Camera& camera, const glm::mat4& viewProjection, const PreviewOptions& options,
-                  ShadowLookups shadows);
+                  const glm::vec3& bouncedClothAlbedo, const Camera& camera, const glm::mat4& viewProjection,
+                  const PreviewOptions& options, ShadowLookups shadows);
     // Uploads the material's parameters and binds its textures, for its surface or shadow program.
     void uploadMaterial(const ShaderProgram& program, const Material& material, int materialIndex);
     // Re-renders the shadow maps where needed: the casters that let light through apart.
     void updateShadows(const SceneDescription& scene, const PreviewLights& lights);
+    // Traces the bounced light again where the meshes changed since it was traced, or the lights
+    // did and `retrace`.
+    void updateBouncedLight(const SceneDescription& scene, const PreviewLights& lights, bool retrace);
+    // The albedo the light off woven cloth is multiplied by: the woven materials' wovenAlbedo(),
+    // weighted by their shares of the bounced rays (recomputed where a woven material changed).
+    glm::vec3 bouncedClothAlbedo(const SceneDescription& scene);
 
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
+    std::vector<size_t> sceneMeshes_;  // the scene's index of each of meshes_
     std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
     std::map<int, std::unique_ptr<WeaveTextures>> weaves_;    // by material index
     GpuTextures textures_;                                    // SceneDescription::textures
@@ -83,6 +96,12 @@ private:
     // skyVisibility() of the meshes last uploaded, and their skyVisibilityKey().
     std::vector<std::vector<glm::vec2>> sky_;
     size_t skyKey_ = 0;
+    // The lights bouncedLight() was last traced with (none: not since setMeshes()), and the
+    // shares of its rays off woven cloth per material.
+    std::optional<PreviewLights> bouncedLights_;
+    std::vector<float> clothShares_;
+    // wovenAlbedo() per material index, with its parameters' JSON, for bouncedClothAlbedo().
+    std::map<int, std::pair<std::string, glm::vec3>> clothAlbedos_;
     SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
     void accumulate(int refinement);
 

@@ -505,6 +505,7 @@ void PreviewWindow::run() {
             PreviewOptions preview;
             preview.filterWeave = filterWeave_;
             preview.shadows = shadows_;
+            preview.traceBounce = !interacting_;
             status_.attempt([&] {
                 const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};

@@ -17,21 +17,15 @@ namespace {
 
 constexpr float kGoldenRatioFraction = 0.618034f;  // of a turn between successive spiral points
 
-// The share of kSkyRays cosine-weighted directions about n (a Fibonacci spiral on the disc, turned
-// by a hashed angle per vertex so that neighbours' errors do not line up) that no geometry blocks.
+// The share of kSkyRays directions about n (spiralDirection()) that no geometry blocks.
 float visibleShare(const RenderScene& scene, const glm::vec3& p, const glm::vec3& n, uint32_t key) {
     SurfaceHit hit;
     hit.p = p;
     hit.ng = hit.ns = n;
     const Frame frame = Frame::fromNormal(n);
-    const float turn = float(hash32(key) >> 8) * 0x1p-24f;
+    const float turn = vertexTurn(key);
     int open = 0;
-    for (int i = 0; i < kSkyRays; ++i) {
-        const float r = std::sqrt((float(i) + 0.5f) / float(kSkyRays));
-        const float phi = 2.0f * kPi * (float(i) * kGoldenRatioFraction + turn);
-        const glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::fmax(0.0f, 1.0f - r * r)));
-        open += !scene.occludedToInfinity(hit, frame.toWorld(local));
-    }
+    for (int i = 0; i < kSkyRays; ++i) open += !scene.occludedToInfinity(hit, frame.toWorld(spiralDirection(i, kSkyRays, turn)));
     return float(open) / float(kSkyRays);
 }
 
@@ -42,6 +36,14 @@ size_t hashBytes(const std::vector<T>& values, size_t seed) {
 }
 
 }  // namespace
+
+glm::vec3 spiralDirection(int i, int count, float turn) {
+    const float r = std::sqrt((float(i) + 0.5f) / float(count));
+    const float phi = 2.0f * kPi * (float(i) * kGoldenRatioFraction + turn);
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::fmax(0.0f, 1.0f - r * r))};
+}
+
+float vertexTurn(uint32_t key) { return float(hash32(key) >> 8) * 0x1p-24f; }
 
 size_t skyVisibilityKey(const SceneDescription& scene) {
     size_t key = scene.meshes.size();

@@ -21,4 +21,10 @@ std::vector<std::vector<glm::vec2>> skyVisibility(const SceneDescription& scene)
 // instances), so that a material edit, which sends the meshes to the GPU again, traces nothing.
 size_t skyVisibilityKey(const SceneDescription& scene);
 
+// Ray i of `count` cosine-weighted directions about +z: a Fibonacci spiral on the disc, lifted to
+// the hemisphere, turned by `turn` (of a whole turn; vertexTurn() gives each vertex its own, so
+// that neighbours' errors do not line up). bounced_light.h casts its rays the same way.
+glm::vec3 spiralDirection(int i, int count, float turn);
+float vertexTurn(uint32_t key);
+
 }  // namespace woven

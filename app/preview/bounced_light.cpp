@@ -1,0 +1,180 @@
+#include "bounced_light.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+
+#include "frame.h"
+#include "math_constants.h"
+#include "render_scene.h"
+#include "sky_visibility.h"
+#include "woven_material.h"
+
+namespace woven {
+
+namespace {
+
+bool emits(const SceneDescription& scene, int material) {
+    return material >= 0 && material < int(scene.materials.size()) && scene.materials[size_t(material)].emits();
+}
+
+// Whether light leaving `from` along unit `wi` gets `distance` far (infinitely far: a
+// directional light). Emitters are passed, as the shadow maps leave them out: an area light's
+// samples sit on (or in) its own surface.
+bool unblocked(const RenderScene& traced, const SceneDescription& scene, SurfaceHit from, const glm::vec3& wi,
+               float distance) {
+    constexpr int kMostEmittersPassed = 8;
+    for (int i = 0; i < kMostEmittersPassed; ++i) {
+        Ray ray = traced.spawnRay(from, wi);
+        ray.tMax = distance * (1.0f - 1e-4f);
+        const std::optional<SurfaceHit> hit = traced.intersect(ray);
+        if (!hit) return true;
+        if (!emits(scene, hit->material)) return false;
+        distance -= hit->t;
+        from = *hit;
+    }
+    return false;
+}
+
+// Irradiance at `hit` about unit `n` (on the side light is gathered from) from the preview's
+// lights, as lighting.glsl's incidentLight() has them, a shadow ray each.
+glm::vec3 lightIrradiance(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights,
+                          const SurfaceHit& hit, const glm::vec3& n, size_t& rays) {
+    glm::vec3 sum(0.0f);
+    for (const PreviewLight& l : lights.lights) {
+        glm::vec3 wi, intensity = l.intensity;
+        float distance = std::numeric_limits<float>::infinity();
+        if (l.type == PreviewLight::Directional) {
+            wi = -glm::normalize(l.position);
+        } else {
+            const glm::vec3 d = l.position - hit.p;
+            const float dist2 = std::max(glm::dot(d, d), 1e-12f);
+            distance = std::sqrt(dist2);
+            wi = d / distance;
+            // An area sample as a disc of its area seen along its axis, L A / (d^2 + A / pi): at
+            // most pi L however close a wall next to a lamp is, where a point's 1 / d^2 is not.
+            intensity /= dist2 + l.area / kPi;
+        }
+        const float cosine = glm::dot(wi, n);
+        if (cosine <= 0.0f) continue;
+        if (l.type == PreviewLight::Spot) {
+            const float t = glm::clamp((glm::dot(-wi, l.axis) - l.cosOuter) / std::max(l.cosInner - l.cosOuter, 1e-4f), 0.0f, 1.0f);
+            intensity *= t * t;
+        } else if (l.type == PreviewLight::Area || l.type == PreviewLight::AreaTwoSided) {
+            const float cosLight = glm::dot(-wi, l.axis);
+            intensity *= l.type == PreviewLight::AreaTwoSided ? std::abs(cosLight) : std::max(cosLight, 0.0f);
+        }
+        if (std::max({intensity.r, intensity.g, intensity.b}) <= 0.0f) continue;
+        ++rays;
+        if (!unblocked(traced, scene, hit, wi, distance)) continue;
+        sum += intensity * cosine;
+    }
+    return sum;
+}
+
+// The share of kHitSkyRays directions about unit n (spiralDirection(), turned by `turn`) that
+// leave the scene from the hit: traced, not interpolated from its triangle's vertices, whose
+// shares say nothing of a point inside a floor's or a wall's few large triangles.
+float skyShareAt(const RenderScene& traced, const SurfaceHit& hit, const glm::vec3& n, float turn, size_t& rays) {
+    const Frame frame = Frame::fromNormal(n);
+    int open = 0;
+    for (int i = 0; i < kHitSkyRays; ++i)
+        open += !traced.occludedToInfinity(hit, frame.toWorld(spiralDirection(i, kHitSkyRays, turn)));
+    rays += kHitSkyRays;
+    return float(open) / float(kHitSkyRays);
+}
+
+struct Gathered {
+    BouncedVertex vertex;
+    std::vector<int> clothHits;  // per material
+    size_t rays = 0;
+};
+
+// What kBounceRays rays about unit n from p bring, into side `side` of `out`.
+void gather(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights, const glm::vec3& p,
+            const glm::vec3& n, uint32_t key, int side, Gathered& out) {
+    SurfaceHit from;
+    from.p = p;
+    from.ng = from.ns = n;
+    const Frame frame = Frame::fromNormal(n);
+    const float turn = vertexTurn(key);
+    glm::vec3 radiance(0.0f), offCloth(0.0f);
+    for (int i = 0; i < kBounceRays; ++i) {
+        const glm::vec3 d = frame.toWorld(spiralDirection(i, kBounceRays, turn));
+        ++out.rays;
+        const std::optional<SurfaceHit> hit = traced.intersect(traced.spawnRay(from, d));
+        if (!hit) continue;
+        const glm::vec3 towards = -d;
+        const glm::vec3 facing = glm::dot(hit->ns, towards) >= 0.0f ? hit->ns : -hit->ns;
+        const float hitTurn = vertexTurn(key ^ (uint32_t(i + 1) * 0x85EBCA6BU));
+        const glm::vec3 irradiance = lightIrradiance(traced, scene, lights, *hit, facing, out.rays) +
+                                     kPi * lights.ambient * skyShareAt(traced, *hit, facing, hitTurn, out.rays);
+        const int m = hit->material;
+        if (m >= 0 && m < int(scene.materials.size()) && scene.materials[size_t(m)].woven) {
+            offCloth += irradiance / kPi;
+            ++out.clothHits[size_t(m)];
+        } else {
+            radiance += traced.materials()[m].unlitRadiance(hit->tex);
+            if (const std::optional<Bsdf> bsdf = traced.materials().bsdf(*hit, towards))
+                radiance += bsdf->albedo() * irradiance / kPi;
+        }
+    }
+    out.vertex.radiance[side] = radiance / float(kBounceRays);
+    out.vertex.offCloth[side] = offCloth / float(kBounceRays);
+}
+
+}  // namespace
+
+BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& lights) {
+    BouncedLight out;
+    out.clothShares.assign(scene.materials.size(), 0.0f);
+    for (const Mesh& mesh : scene.meshes) out.meshes.emplace_back(mesh.positions.size());
+    if (std::none_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangles.empty(); }))
+        return out;  // the environment alone: nothing to bounce off
+    const RenderScene traced(std::make_shared<const SceneDescription>(scene));
+    std::vector<int> clothHits(scene.materials.size(), 0);
+    std::mutex mutex;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        if (mesh.instances || mesh.normals.size() != mesh.positions.size()) continue;
+        // Each vertex is its own task: the same figures on any number of threads.
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+            Gathered g{{}, std::vector<int>(scene.materials.size(), 0), 0};
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                const glm::vec3 n = mesh.normals[i];
+                if (!(glm::dot(n, n) > 0.0f)) continue;
+                const glm::vec3 unit = glm::normalize(n);
+                const uint32_t key = uint32_t(i) * 2U + uint32_t(m) * 0x9E3779B9U;
+                gather(traced, scene, lights, mesh.positions[i], unit, key, 0, g);
+                gather(traced, scene, lights, mesh.positions[i], -unit, key + 1U, 1, g);
+                out.meshes[m][i] = g.vertex;
+            }
+            const std::lock_guard<std::mutex> lock(mutex);
+            for (size_t k = 0; k < clothHits.size(); ++k) clothHits[k] += g.clothHits[k];
+            out.rays += g.rays;
+        });
+    }
+    int total = 0;
+    for (int c : clothHits) total += c;
+    for (size_t k = 0; k < clothHits.size() && total > 0; ++k) out.clothShares[k] = float(clothHits[k]) / float(total);
+    return out;
+}
+
+glm::vec3 wovenAlbedo(const WovenParams& params) {
+    const WovenMaterial model(params);
+    ShadingInput in;
+    in.uvSpacing = glm::dvec2(1e3);  // a footprint of a thousand repeats: the far field alone
+    glm::vec3 sum(0.0f);
+    for (const bool back : {false, true}) {
+        in.backSide = back;
+        if (const auto lobe = model.shadeFiltered(in)) sum += lobe->lobe().albedo();
+    }
+    return 0.5f * sum;
+}
+
+}  // namespace woven

@@ -1,0 +1,46 @@
+#pragma once
+// One bounce of light for the preview's ambient term. The path tracer lights a point also by
+// light that came off other surfaces (a room lit off its ceiling, a hem lit by the floor, the
+// inside of a lampshade); the preview's lights and sky do not. Per vertex and side, rays cast as
+// sky_visibility.h's that meet geometry bring what leaves the hit towards the vertex,
+// approximated as diffuse: the hit's albedo times the irradiance there (the preview's lights,
+// each behind a shadow ray, plus the ambient times the hit's share of the sky) over pi. Their
+// mean is a radiance the shader adds to the ambient the vertex sees (lighting.glsl's ambientAt()).
+// Light off woven cloth is kept apart, as irradiance / pi, and multiplied by the cloth's mean
+// albedo (wovenAlbedo()) when drawn: a woven edit traces nothing; a change of the geometry, of a
+// mesh's material or of the lights traces again. Traced on core's BVH (RenderScene); plain
+// data, no GL.
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "preview_lights.h"
+#include "scene_description.h"
+
+namespace woven {
+
+constexpr int kBounceRays = 16;  // a side
+constexpr int kHitSkyRays = 4;   // at each hit, for its share of the sky
+
+// What a vertex sees bounced, on the normal's side [0] and on the other [1].
+struct BouncedVertex {
+    glm::vec3 radiance[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off every surface but woven cloth
+    glm::vec3 offCloth[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off woven cloth, before its albedo
+};
+
+struct BouncedLight {
+    // Per mesh of the scene, per vertex; zero for an instanced mesh and a mesh without normals
+    // (as skyVisibility() leaves them at (1, 1)).
+    std::vector<std::vector<BouncedVertex>> meshes;
+    // Per material, its share of the rays that met woven cloth: the weights of the woven
+    // materials' wovenAlbedo() in the albedo offCloth is multiplied by.
+    std::vector<float> clothShares;
+    size_t rays = 0;  // traced, the shadow rays included
+};
+
+BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& lights);
+
+// The cloth's albedo as core's weave filter sees it from afar (FilteredWeaveLobe::albedo() over
+// many repeats), the mean of both faces.
+glm::vec3 wovenAlbedo(const WovenParams& params);
+
+}  // namespace woven
