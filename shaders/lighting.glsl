@@ -2,8 +2,9 @@
 // point, spot and directional lights as they are, emissive triangles as a few point-like
 // samples each, the environment's brightest regions as directional lights and the rest of it as
 // a constant ambient radiance integrated against the lobe, weighed by the share of the sky the
-// vertices see, plus one bounce of light off the scene (mesh_varyings.glsl). With PREVIEW_SHADOWS, the strongest lights are occluded
-// through ShadowMaps (app/preview/shadow_maps.cpp).
+// vertices see, plus one bounce of light off the scene (mesh_varyings.glsl). With
+// PREVIEW_SHADOWS, the strongest lights are occluded through ShadowMaps
+// (app/preview/shadow_maps.cpp).
 // PREVIEW_TRANSMITTED_SHADOWS adds the occluders that let coloured light through.
 #define MAX_LIGHTS 32
 const int LIGHT_POINT = 0, LIGHT_SPOT = 1, LIGHT_DIRECTIONAL = 2, LIGHT_AREA = 3, LIGHT_AREA_TWO_SIDED = 4;
