@@ -77,18 +77,6 @@ glm::vec3 lightIrradiance(const RenderScene& traced, const SceneDescription& sce
     return sum;
 }
 
-// The share of kHitSkyRays directions about unit n (spiralDirection(), turned by `turn`) that
-// leave the scene from the hit: traced, not interpolated from its triangle's vertices, whose
-// shares say nothing of a point inside a floor's or a wall's few large triangles.
-float skyShareAt(const RenderScene& traced, const SurfaceHit& hit, const glm::vec3& n, float turn, size_t& rays) {
-    const Frame frame = Frame::fromNormal(n);
-    int open = 0;
-    for (int i = 0; i < kHitSkyRays; ++i)
-        open += !traced.occludedToInfinity(hit, frame.toWorld(spiralDirection(i, kHitSkyRays, turn)));
-    rays += kHitSkyRays;
-    return float(open) / float(kHitSkyRays);
-}
-
 struct Gathered {
     BouncedVertex vertex;
     std::vector<int> clothHits;  // per material
@@ -112,8 +100,9 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
         const glm::vec3 towards = -d;
         const glm::vec3 facing = glm::dot(hit->ns, towards) >= 0.0f ? hit->ns : -hit->ns;
         const float hitTurn = vertexTurn(key ^ (uint32_t(i + 1) * 0x85EBCA6BU));
+        out.rays += kHitSkyRays;
         const glm::vec3 irradiance = lightIrradiance(traced, scene, lights, *hit, facing, out.rays) +
-                                     kPi * lights.ambient * skyShareAt(traced, *hit, facing, hitTurn, out.rays);
+                                     kPi * lights.ambient * openShare(traced, *hit, facing, kHitSkyRays, hitTurn);
         const int m = hit->material;
         if (m >= 0 && m < int(scene.materials.size()) && scene.materials[size_t(m)].woven) {
             offCloth += irradiance / kPi;

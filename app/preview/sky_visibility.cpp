@@ -17,16 +17,12 @@ namespace {
 
 constexpr float kGoldenRatioFraction = 0.618034f;  // of a turn between successive spiral points
 
-// The share of kSkyRays directions about n (spiralDirection()) that no geometry blocks.
+// The share of kSkyRays directions about n from p that no geometry blocks.
 float visibleShare(const RenderScene& scene, const glm::vec3& p, const glm::vec3& n, uint32_t key) {
     SurfaceHit hit;
     hit.p = p;
     hit.ng = hit.ns = n;
-    const Frame frame = Frame::fromNormal(n);
-    const float turn = vertexTurn(key);
-    int open = 0;
-    for (int i = 0; i < kSkyRays; ++i) open += !scene.occludedToInfinity(hit, frame.toWorld(spiralDirection(i, kSkyRays, turn)));
-    return float(open) / float(kSkyRays);
+    return openShare(scene, hit, n, kSkyRays, vertexTurn(key));
 }
 
 template <class T>
@@ -44,6 +40,13 @@ glm::vec3 spiralDirection(int i, int count, float turn) {
 }
 
 float vertexTurn(uint32_t key) { return float(hash32(key) >> 8) * 0x1p-24f; }
+
+float openShare(const RenderScene& scene, const SurfaceHit& from, const glm::vec3& n, int count, float turn) {
+    const Frame frame = Frame::fromNormal(n);
+    int open = 0;
+    for (int i = 0; i < count; ++i) open += !scene.occludedToInfinity(from, frame.toWorld(spiralDirection(i, count, turn)));
+    return float(open) / float(count);
+}
 
 size_t skyVisibilityKey(const SceneDescription& scene) {
     size_t key = scene.meshes.size();

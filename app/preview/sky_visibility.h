@@ -10,6 +10,9 @@
 
 namespace woven {
 
+class RenderScene;
+struct SurfaceHit;
+
 // Per mesh of `scene`, per vertex: the cosine-weighted share of directions about its normal that
 // leave the scene unblocked, on the normal's side (x) and on the other (y), from kSkyRays
 // stratified directions a side. An instanced mesh's copies each see another sky: (1, 1) there,
@@ -26,5 +29,8 @@ size_t skyVisibilityKey(const SceneDescription& scene);
 // that neighbours' errors do not line up). bounced_light.h casts its rays the same way.
 glm::vec3 spiralDirection(int i, int count, float turn);
 float vertexTurn(uint32_t key);
+// The share of `count` spiralDirection()s about unit n (turned by `turn`) that leave `scene`
+// unblocked from `from`: a vertex's sky here, a bounce's hit's in bounced_light.h.
+float openShare(const RenderScene& scene, const SurfaceHit& from, const glm::vec3& n, int count, float turn);
 
 }  // namespace woven
