@@ -458,6 +458,8 @@ void PreviewWindow::run() {
         glfwPollEvents();
         bool rested = restUntilNeeded();
         if (restWhileRendering()) rested = true;
+        const bool input = inputs_ != inputsDrawn_;
+        inputsDrawn_ = inputs_;
         const double now = glfwGetTime();
         if (frame_ > 1 && !rested) resolution_.frameTook(now - frameStart);
         frameStart = now;
@@ -509,10 +511,15 @@ void PreviewWindow::run() {
             status_.attempt([&] {
                 const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
-                refinement_ = !interacting_ && view == refinedView_ ? refinement_ + 1 : 0;
+                // An input (a pointer move, a click, a key) holds the refinement, the mean so far
+                // shown: a refinement frame on software GL takes a second, which each hover and
+                // click of the panel would wait for. A view that changed is rendered at once.
+                const bool sameView = !interacting_ && view == refinedView_;
+                const bool held = sameView && input;
+                if (!held) refinement_ = sameView ? refinement_ + 1 : 0;
                 refinedView_ = view;
                 // Once the mean is complete the view is shown again as it is, not rendered.
-                if (refinement_ < kRefinementFrames) {
+                if (refinement_ < kRefinementFrames && !held) {
                     preview.refinement = refinement_;
                     preview.pixelOffset = refinementOffset(refinement_);
                     renderer_->render(scene(), lights_, camera, size, preview);

@@ -215,6 +215,7 @@ private:
     bool interacting_ = false;  // the last frame was drawn as an interactive one
     // A resting window draws nothing until an input (counted by the callbacks) or work arrives.
     uint64_t inputs_ = 0, inputsSeen_ = 0;
+    uint64_t inputsDrawn_ = 0;  // inputs_ when the last frame began
     double settleUntil_ = 0.0;
     int settleFrames_ = 0;
 };

@@ -15,6 +15,7 @@ Usage: window_click_xvfb.py WOVEN_BINARY
 import contextlib
 import json
 import os
+import select
 import signal
 import struct
 import subprocess
@@ -35,13 +36,6 @@ class Failure(Exception):
 def check(condition, message):
     if not condition:
         raise Failure(message)
-
-
-def free_display():
-    display = 97
-    while os.path.exists(f'/tmp/.X{display}-lock') or os.path.exists(f'/tmp/.X11-unix/X{display}'):
-        display += 1
-    return display
 
 
 def png_pixels(path):
@@ -187,17 +181,20 @@ def check_panel(m, where):
 
 
 def start_xvfb():
-    """An X server on a free display, and the display; the caller kills it."""
-    display = free_display()
-    xvfb = subprocess.Popen(['Xvfb', f':{display}', '-screen', '0', '1600x1000x24', '-nolisten', 'tcp'],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 10
-    while not os.path.exists(f'/tmp/.X11-unix/X{display}'):
-        if time.monotonic() >= deadline:
-            xvfb.kill()
-            raise Failure('Xvfb did not start within 10 s')
-        time.sleep(0.1)
-    return xvfb, display
+    """An X server on a display it chose free itself (-displayfd: tests may start servers at the
+    same time), and the display; the caller kills it."""
+    read_end, write_end = os.pipe()
+    xvfb = subprocess.Popen(['Xvfb', '-displayfd', str(write_end), '-screen', '0', '1600x1000x24', '-nolisten', 'tcp'],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, pass_fds=(write_end,))
+    os.close(write_end)
+    with os.fdopen(read_end) as announced:
+        ready, _, _ = select.select([announced], [], [], 10)
+        display = announced.readline().strip() if ready else ''
+    if not display.isdigit():
+        xvfb.kill()
+        xvfb.wait()
+        raise Failure('Xvfb did not start within 10 s')
+    return xvfb, int(display)
 
 
 @contextlib.contextmanager

@@ -11,12 +11,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# A display number nobody holds (parallel test runs and other Xvfbs on this machine).
-display=97
-while [ -e "/tmp/.X$display-lock" ] || [ -e "/tmp/.X11-unix/X$display" ]; do display=$((display + 1)); done
-Xvfb ":$display" -screen 0 1024x768x24 -nolisten tcp >"$tmp/xvfb.log" 2>&1 &
+# A display that Xvfb chose free itself (-displayfd): other tests may start servers at once.
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$tmp/display" >"$tmp/xvfb.log" 2>&1 &
 xvfb_pid=$!
-for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X$display" ] && break; sleep 0.1; done
+for _ in $(seq 100); do [ -s "$tmp/display" ] && break; sleep 0.1; done
+display=$(head -n 1 "$tmp/display")
+[ -n "$display" ] || { echo "Xvfb did not start within 10 s"; cat "$tmp/xvfb.log"; exit 1; }
 
 DISPLAY=":$display" LIBGL_ALWAYS_SOFTWARE=1 "$woven" preview --frames 5 --width 800 --height 600 \
     --window-screenshot "$tmp/shot.png"
