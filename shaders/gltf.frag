@@ -31,9 +31,8 @@ void main() {
     vec3 wo = normalize(cameraPosition - p);
     vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
     if (dot(ng, wo) < 0.0) ng = -ng;
-    vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
-    bool backSide = dot(wo, ns) < 0.0;
-    ambientAt(backSide);
+    bool backSide;
+    vec3 ns = seenSide(ng, backSide);
 
     vec4 base = gltfBaseColor();
 #if defined(ALPHA_MASK)

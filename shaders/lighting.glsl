@@ -25,6 +25,20 @@ void ambientAt(bool backSide) {
     ambientBehind = ambientRadiance * share.y + (backSide ? vBouncedFront : vBouncedBack);
 }
 
+// The side seen, as core's: the triangle's winding side (SurfaceHit::ng). In a fold seen edge-on
+// the vertex normals may face away from it; they are turned to it as core turns them (nsFlipped),
+// or the side of the vertex normal would show a woven cloth's back there. Returns the shading
+// normal on the winding side and sets the ambient of the side of the vertex normal seen (the sky
+// and the bounce are kept per vertex normal). `ng`: the geometric normal, facing the viewer.
+vec3 seenSide(vec3 ng, out bool backSide) {
+    backSide = !gl_FrontFacing;
+    vec3 windingNormal = backSide ? -ng : ng;
+    vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : windingNormal;
+    bool nsFlipped = dot(ns, windingNormal) < 0.0;
+    ambientAt(backSide != nsFlipped);
+    return nsFlipped ? -ns : ns;
+}
+
 #ifdef PREVIEW_SHADOWS
 #define MAX_SHADOW_MAPS 8
 uniform samplerCubeArrayShadow shadowCubes;  // distance to the light / shadowFar

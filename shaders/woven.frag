@@ -249,9 +249,8 @@ void main() {
     vec2 dux = dFdx(vUv), duy = dFdy(vUv);
     vec3 ng = normalize(cross(dpx, dpy));
     if (dot(ng, wo) < 0.0) ng = -ng;
-    vec3 ns = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : ng;
-    bool backSide = dot(wo, ns) < 0.0;
-    ambientAt(backSide);
+    bool backSide;
+    vec3 ns = seenSide(ng, backSide);
 #ifdef MAP_NORMAL
     vec3 t, b;
     if (tangentSpace(ns, vTangent, t, b)) ns = normalMapped(ns, t, b, lookup(MAP_NORMAL).xyz, normalScale);
