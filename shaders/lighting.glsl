@@ -61,6 +61,11 @@ uniform sampler2DArrayShadow transmittedFlats;
 uniform sampler2DArray transmittedFlatColors;
 #endif
 
+// Which of the first lights the vertices see, traced on the BVH (bounced_light.h's lightsSeen):
+// a fold's shadow on the cloth beside it, finer than a map's texel and its offset.
+#define VERTEX_SHADOW_LIGHTS 8
+float vertexSeesLight(int i) { return i < VERTEX_SHADOW_LIGHTS ? vLightsSeen[i / 4][i % 4] : 1.0; }
+
 // Fraction of light i that reaches p, per colour. The lookup point moves two shadow-map texels
 // along the geometric normal `ng` (on the light's side), so a surface does not shadow itself.
 // Behind a transmitting occluder, the light is what it passes; the filtered comparison blends
@@ -121,7 +126,7 @@ vec3 incidentLight(int i, vec3 p, vec3 ng, out vec3 wi) {
         intensity *= type == LIGHT_AREA_TWO_SIDED ? abs(cosLight) : max(cosLight, 0.0);
     }
 #ifdef PREVIEW_SHADOWS
-    intensity *= lightVisibility(i, p, ng);
+    intensity *= min(lightVisibility(i, p, ng), vec3(vertexSeesLight(i)));
 #endif
     return intensity;
 }

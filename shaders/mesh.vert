@@ -5,7 +5,7 @@
 // Attributes a mesh lacks are zero (uv1, tangent) or white (colour). skyVisibility: the sky's
 // share about the normal and about its opposite (app/preview/sky_visibility.h); bounced and
 // offCloth: the light bounced to each side (app/preview/bounced_light.h), that off woven cloth
-// times the cloth's albedo here.
+// times the cloth's albedo here; lightsSeen: which of the first lights the vertex sees.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
@@ -18,6 +18,7 @@ layout(location = 11) in vec3 bouncedFront;
 layout(location = 12) in vec3 bouncedBack;
 layout(location = 13) in vec3 offClothFront;
 layout(location = 14) in vec3 offClothBack;
+layout(location = 15) in uvec2 lightsSeen;  // a byte a light, 255: seen (bounced_light.h)
 
 uniform mat4 viewProjection;
 uniform vec3 bouncedClothAlbedo;
@@ -30,6 +31,9 @@ out vec4 vColor;
 out vec4 vTangent;
 out vec2 vSkyVisibility;
 out vec3 vBouncedFront, vBouncedBack;
+out vec4 vLightsSeen[2];
+
+vec4 unpackBytes(uint word) { return vec4(uvec4(word, word >> 8u, word >> 16u, word >> 24u) & 255u) / 255.0; }
 
 void main() {
     mat3 linear = mat3(instanceMatrix);
@@ -41,6 +45,8 @@ void main() {
     vSkyVisibility = skyVisibility;
     vBouncedFront = bouncedFront + bouncedClothAlbedo * offClothFront;
     vBouncedBack = bouncedBack + bouncedClothAlbedo * offClothBack;
+    vLightsSeen[0] = unpackBytes(lightsSeen.x);
+    vLightsSeen[1] = unpackBytes(lightsSeen.y);
     vTangent = vec4(linear * tangent.xyz, determinant(linear) < 0.0 ? -tangent.w : tangent.w);
     gl_Position = viewProjection * vec4(vPosition, 1.0);
 }

@@ -41,6 +41,56 @@ bool unblocked(const RenderScene& traced, const SceneDescription& scene, Surface
     return false;
 }
 
+// Where light `l` comes from at p: the unit direction towards it and its distance (infinite for a
+// directional light).
+void towardsLight(const PreviewLight& l, const glm::vec3& p, glm::vec3& wi, float& distance) {
+    if (l.type == PreviewLight::Directional) {
+        wi = -glm::normalize(l.position);
+        distance = std::numeric_limits<float>::infinity();
+        return;
+    }
+    const glm::vec3 d = l.position - p;
+    distance = std::max(std::sqrt(glm::dot(d, d)), 1e-6f);
+    wi = d / distance;
+}
+
+// Which of the first kVertexShadowLights lights reach the vertex at p with unit normal n: a
+// shadow ray each, from the side the light is on.
+void seenLights(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights, const glm::vec3& p,
+                const glm::vec3& n, BouncedVertex& out) {
+    const int count = std::min<int>(kVertexShadowLights, int(lights.lights.size()));
+    for (int i = 0; i < count; ++i) {
+        glm::vec3 wi;
+        float distance;
+        towardsLight(lights.lights[size_t(i)], p, wi, distance);
+        SurfaceHit from;
+        from.p = p;
+        from.ng = from.ns = glm::dot(wi, n) >= 0.0f ? n : -n;
+        if (!unblocked(traced, scene, from, wi, distance)) out.lightsSeen[i / 4] &= ~(0xFFU << (8 * (i % 4)));
+    }
+}
+
+// The diagonal of the box about every mesh's vertices.
+float sceneDiagonal(const SceneDescription& scene) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const Mesh& mesh : scene.meshes)
+        for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return hi.x >= lo.x ? glm::length(hi - lo) : 0.0f;
+}
+
+// Whether a mesh's triangles are small enough for its vertices' shadow rays to draw a shadow
+// (their mean edge under 1 % of the scene's size): a simulated drape or a sphere is, where a wall
+// of two triangles would spread one corner's shadow over the room.
+bool finelyMeshed(const Mesh& mesh, float sceneSize) {
+    if (mesh.triangles.empty()) return false;
+    double edges = 0.0;
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::vec3 &a = mesh.positions[t.x], &b = mesh.positions[t.y], &c = mesh.positions[t.z];
+        edges += double(glm::distance(a, b) + glm::distance(b, c) + glm::distance(c, a));
+    }
+    return edges / double(3 * mesh.triangles.size()) < 0.01 * double(sceneSize);
+}
+
 // Irradiance at `hit` about unit `n` (on the side light is gathered from) from the preview's
 // lights, as lighting.glsl's incidentLight() has them, a shadow ray each.
 glm::vec3 lightIrradiance(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights,
@@ -48,18 +98,11 @@ glm::vec3 lightIrradiance(const RenderScene& traced, const SceneDescription& sce
     glm::vec3 sum(0.0f);
     for (const PreviewLight& l : lights.lights) {
         glm::vec3 wi, intensity = l.intensity;
-        float distance = std::numeric_limits<float>::infinity();
-        if (l.type == PreviewLight::Directional) {
-            wi = -glm::normalize(l.position);
-        } else {
-            const glm::vec3 d = l.position - hit.p;
-            const float dist2 = std::max(glm::dot(d, d), 1e-12f);
-            distance = std::sqrt(dist2);
-            wi = d / distance;
-            // An area sample as a disc of its area seen along its axis, L A / (d^2 + A / pi): at
-            // most pi L however close a wall next to a lamp is, where a point's 1 / d^2 is not.
-            intensity /= dist2 + l.area / kPi;
-        }
+        float distance;
+        towardsLight(l, hit.p, wi, distance);
+        // An area sample as a disc of its area seen along its axis, L A / (d^2 + A / pi): at most
+        // pi L however close a wall next to a lamp is, where a point's 1 / d^2 is not.
+        if (l.type != PreviewLight::Directional) intensity /= distance * distance + l.area / kPi;
         const float cosine = glm::dot(wi, n);
         if (cosine <= 0.0f) continue;
         if (l.type == PreviewLight::Spot) {
@@ -126,11 +169,13 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
     if (std::none_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangles.empty(); }))
         return out;  // the environment alone: nothing to bounce off
     const RenderScene traced(std::make_shared<const SceneDescription>(scene));
+    const float sceneSize = sceneDiagonal(scene);
     std::vector<int> clothHits(scene.materials.size(), 0);
     std::mutex mutex;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
         if (mesh.instances || mesh.normals.size() != mesh.positions.size()) continue;
+        const bool dense = finelyMeshed(mesh, sceneSize);
         // Each vertex is its own task: the same figures on any number of threads.
         tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
             Gathered g{{}, std::vector<int>(scene.materials.size(), 0), 0};
@@ -141,6 +186,11 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
                 const uint32_t key = uint32_t(i) * 2U + uint32_t(m) * 0x9E3779B9U;
                 gather(traced, scene, lights, mesh.positions[i], unit, key, 0, g);
                 gather(traced, scene, lights, mesh.positions[i], -unit, key + 1U, 1, g);
+                g.vertex.lightsSeen[0] = g.vertex.lightsSeen[1] = 0xFFFFFFFFU;
+                if (dense) {
+                    seenLights(traced, scene, lights, mesh.positions[i], unit, g.vertex);
+                    g.rays += size_t(std::min<int>(kVertexShadowLights, int(lights.lights.size())));
+                }
                 out.meshes[m][i] = g.vertex;
             }
             const std::lock_guard<std::mutex> lock(mutex);

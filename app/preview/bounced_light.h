@@ -11,6 +11,7 @@
 // mesh's material or of the lights traces again. Traced on core's BVH (RenderScene); plain
 // data, no GL.
 #include <glm/glm.hpp>
+#include <cstdint>
 #include <vector>
 
 #include "preview_lights.h"
@@ -21,10 +22,19 @@ namespace woven {
 constexpr int kBounceRays = 16;  // a side
 constexpr int kHitSkyRays = 4;   // at each hit, for its share of the sky
 
-// What a vertex sees bounced, on the normal's side [0] and on the other [1].
+// The first lights whose shadow rays a vertex keeps (VERTEX_SHADOW_LIGHTS in lighting.glsl): a
+// byte each, four to a word.
+constexpr int kVertexShadowLights = 8;
+
+// What a vertex sees bounced, on the normal's side [0] and on the other [1], and, on a finely
+// meshed surface (a drape, not a wall of two triangles), which of the preview's first kVertexShadowLights lights it sees: light i reaches it where byte i % 4 of
+// lightsSeen[i / 4] is 255, is blocked where it is 0. The shader takes the smaller of that,
+// interpolated, and the shadow maps': a fold shading the cloth beside it is finer than a map's
+// texel and its offset, and a triangle larger than a shadow's edge keeps the map's.
 struct BouncedVertex {
     glm::vec3 radiance[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off every surface but woven cloth
     glm::vec3 offCloth[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off woven cloth, before its albedo
+    uint32_t lightsSeen[kVertexShadowLights / 4] = {0xFFFFFFFFU, 0xFFFFFFFFU};
 };
 
 struct BouncedLight {

@@ -61,6 +61,9 @@ GpuMesh::GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility) 
     attribute(kBouncedLightLocation + 1, 3, offsetof(BouncedVertex, radiance[1]), sizeof(BouncedVertex));
     attribute(kBouncedLightLocation + 2, 3, offsetof(BouncedVertex, offCloth[0]), sizeof(BouncedVertex));
     attribute(kBouncedLightLocation + 3, 3, offsetof(BouncedVertex, offCloth[1]), sizeof(BouncedVertex));
+    glEnableVertexAttribArray(kLightsSeenLocation);
+    glVertexAttribIPointer(kLightsSeenLocation, kVertexShadowLights / 4, GL_UNSIGNED_INT, sizeof(BouncedVertex),
+                           reinterpret_cast<void*>(offsetof(BouncedVertex, lightsSeen)));
     if (mesh.instances) {
         std::vector<glm::mat4> matrices;
         matrices.reserve(mesh.instances->size());

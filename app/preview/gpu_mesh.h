@@ -33,6 +33,7 @@ public:
     static constexpr GLuint kInstanceMatrixLocation = 6;  // to 9
     static constexpr GLuint kSkyVisibilityLocation = 10;
     static constexpr GLuint kBouncedLightLocation = 11;  // to 14: BouncedVertex's four vectors
+    static constexpr GLuint kLightsSeenLocation = 15;    // BouncedVertex::lightsSeen
 
 private:
     GLuint vao_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, instanceBuffer_ = 0, bouncedBuffer_ = 0;

@@ -92,6 +92,21 @@ TEST(BouncedLight, BlackUnlitOrShadowedWallSendsNone) {
     }
 }
 
+// The shadow rays each vertex of a finely meshed surface keeps (BouncedVertex::lightsSeen): the
+// patch sees the light below it until a floor comes between; the wall, two triangles 200 m wide,
+// is too coarse to keep them and stays seen though the floor shadows it too.
+TEST(BouncedLight, FinelyMeshedVerticesKeepWhichLightsTheySee) {
+    const BouncedLight open = bounce(wallScene(plain(glm::vec3(1.0f), 0.0f), {0.0f, 0.0f, 1.0f}));
+    for (const BouncedVertex& v : open.meshes[0]) EXPECT_EQ(v.lightsSeen[0] & 0xFFU, 0xFFU);
+    SceneDescription shadowed = wallScene(plain(glm::vec3(1.0f), 0.0f), {0.0f, 0.0f, 1.0f});
+    shadowed.meshes.push_back(quad(100.0f, -1.0f, true, 1));
+    const BouncedLight s = bounce(shadowed);
+    for (const BouncedVertex& v : s.meshes[0]) EXPECT_EQ(v.lightsSeen[0] & 0xFFU, 0U);
+    for (const BouncedVertex& v : s.meshes[1]) EXPECT_EQ(v.lightsSeen[0], 0xFFFFFFFFU);
+    // Lights past the first light keep nothing to block: seen.
+    for (const BouncedVertex& v : s.meshes[0]) EXPECT_EQ(v.lightsSeen[0] >> 8, 0xFFFFFFU);
+}
+
 TEST(BouncedLight, WovenWallIsKeptApartBeforeItsAlbedo) {
     Material cloth;
     cloth.woven = WovenParams{};
