@@ -70,6 +70,10 @@ void seenLights(const RenderScene& traced, const SceneDescription& scene, const 
     }
 }
 
+bool isWoven(const SceneDescription& scene, int material) {
+    return material >= 0 && material < int(scene.materials.size()) && scene.materials[size_t(material)].woven.has_value();
+}
+
 // The diagonal of the box about every mesh's vertices.
 float sceneDiagonal(const SceneDescription& scene) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
@@ -147,7 +151,7 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
         const glm::vec3 irradiance = lightIrradiance(traced, scene, lights, *hit, facing, out.rays) +
                                      kPi * lights.ambient * openShare(traced, *hit, facing, kHitSkyRays, hitTurn);
         const int m = hit->material;
-        if (m >= 0 && m < int(scene.materials.size()) && scene.materials[size_t(m)].woven) {
+        if (isWoven(scene, m)) {
             offCloth += irradiance / kPi;
             ++out.clothHits[size_t(m)];
         } else {
@@ -175,7 +179,10 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
         if (mesh.instances || mesh.normals.size() != mesh.positions.size()) continue;
-        const bool dense = finelyMeshed(mesh, sceneSize);
+        // Woven cloth alone: its folds shading it are what the maps miss. Another surface keeps the
+        // maps: a cloth over it that lets light through its gaps may open or close them by an
+        // edit, which traces nothing again.
+        const bool dense = isWoven(scene, mesh.material) && finelyMeshed(mesh, sceneSize);
         // Each vertex is its own task: the same figures on any number of threads.
         tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
             Gathered g{{}, std::vector<int>(scene.materials.size(), 0), 0};

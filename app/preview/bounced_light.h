@@ -26,8 +26,8 @@ constexpr int kHitSkyRays = 4;   // at each hit, for its share of the sky
 // byte each, four to a word.
 constexpr int kVertexShadowLights = 8;
 
-// What a vertex sees bounced, on the normal's side [0] and on the other [1], and, on a finely
-// meshed surface (a drape, not a wall of two triangles), which of the preview's first kVertexShadowLights lights it sees: light i reaches it where byte i % 4 of
+// What a vertex sees bounced, on the normal's side [0] and on the other [1], and, on finely meshed
+// woven cloth (a drape, not a curtain of two triangles), which of the preview's first kVertexShadowLights lights it sees: light i reaches it where byte i % 4 of
 // lightsSeen[i / 4] is 255, is blocked where it is 0. The shader takes the smaller of that,
 // interpolated, and the shadow maps': a fold shading the cloth beside it is finer than a map's
 // texel and its offset, and a triangle larger than a shadow's edge keeps the map's.

@@ -92,19 +92,27 @@ TEST(BouncedLight, BlackUnlitOrShadowedWallSendsNone) {
     }
 }
 
-// The shadow rays each vertex of a finely meshed surface keeps (BouncedVertex::lightsSeen): the
-// patch sees the light below it until a floor comes between; the wall, two triangles 200 m wide,
-// is too coarse to keep them and stays seen though the floor shadows it too.
-TEST(BouncedLight, FinelyMeshedVerticesKeepWhichLightsTheySee) {
-    const BouncedLight open = bounce(wallScene(plain(glm::vec3(1.0f), 0.0f), {0.0f, 0.0f, 1.0f}));
-    for (const BouncedVertex& v : open.meshes[0]) EXPECT_EQ(v.lightsSeen[0] & 0xFFU, 0xFFU);
-    SceneDescription shadowed = wallScene(plain(glm::vec3(1.0f), 0.0f), {0.0f, 0.0f, 1.0f});
+// The shadow rays each vertex of finely meshed woven cloth keeps (BouncedVertex::lightsSeen): the
+// woven patch sees the light below it until a floor comes between; the woven wall, two triangles
+// 200 m wide, is too coarse to keep them and stays seen though the floor shadows it too.
+TEST(BouncedLight, FinelyMeshedClothKeepsWhichLightsItsVerticesSee) {
+    Material cloth;
+    cloth.woven = WovenParams{};
+    SceneDescription open = wallScene(cloth, {0.0f, 0.0f, 1.0f});
+    open.materials[0] = cloth;
+    const BouncedLight lit = bounce(open);
+    for (const BouncedVertex& v : lit.meshes[0]) EXPECT_EQ(v.lightsSeen[0] & 0xFFU, 0xFFU);
+    SceneDescription shadowed = open;
     shadowed.meshes.push_back(quad(100.0f, -1.0f, true, 1));
     const BouncedLight s = bounce(shadowed);
     for (const BouncedVertex& v : s.meshes[0]) EXPECT_EQ(v.lightsSeen[0] & 0xFFU, 0U);
     for (const BouncedVertex& v : s.meshes[1]) EXPECT_EQ(v.lightsSeen[0], 0xFFFFFFFFU);
     // Lights past the first light keep nothing to block: seen.
     for (const BouncedVertex& v : s.meshes[0]) EXPECT_EQ(v.lightsSeen[0] >> 8, 0xFFFFFFU);
+    // A plain patch keeps the shadow maps alone.
+    shadowed.materials[0] = Material{};
+    const BouncedLight bare = bounce(shadowed);
+    for (const BouncedVertex& v : bare.meshes[0]) EXPECT_EQ(v.lightsSeen[0], 0xFFFFFFFFU);
 }
 
 TEST(BouncedLight, WovenWallIsKeptApartBeforeItsAlbedo) {
