@@ -513,9 +513,10 @@ void PreviewWindow::run() {
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
                 // An input (a pointer move, a click, a key) holds the refinement, the mean so far
                 // shown: a refinement frame on software GL takes a second, which each hover and
-                // click of the panel would wait for. A view that changed is rendered at once.
+                // click of the panel would wait for; so does the Render button's frame, whose
+                // cores the refinement would take. A view that changed is rendered at once.
                 const bool sameView = !interacting_ && view == refinedView_;
-                const bool held = sameView && input;
+                const bool held = sameView && (input || render_.running());
                 if (!held) refinement_ = sameView ? refinement_ + 1 : 0;
                 refinedView_ = view;
                 // Once the mean is complete the view is shown again as it is, not rendered.

@@ -20,11 +20,13 @@ void PreviewWindow::handleViewKeys() {
     if (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_R, false)) setRenderedView(!renderedView_);
 }
 
-// While the path tracer refines a still view, the window draws at most kRefreshSeconds apart
-// (sooner on an input): the cores are the passes'. Returns whether it waited.
+// While the path tracer refines a still view, or renders the Render button's frame, the window
+// draws at most kRefreshSeconds apart (sooner on an input): the cores are the path tracer's.
+// Returns whether it waited.
 bool PreviewWindow::restWhileRendering() {
     constexpr double kRefreshSeconds = 0.1;
-    if (!renderedView_ || interacting_ || inputs_ != inputsSeen_ || !rendered_.running()) return false;
+    const bool tracing = (renderedView_ && rendered_.running()) || render_.running();
+    if (!tracing || interacting_ || inputs_ != inputsSeen_) return false;
     glfwWaitEventsTimeout(kRefreshSeconds);
     return true;
 }
