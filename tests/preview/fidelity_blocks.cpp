@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 
 #include "display_transform.h"
+#include "fabric_library.h"
 
 namespace woven::test {
 namespace {
@@ -49,6 +51,18 @@ BlockErrors summarise(const std::vector<std::pair<double, double>>& differenceAn
 }
 
 }  // namespace
+
+std::vector<FidelitySubject> fidelitySubjects() {
+    std::vector<FidelitySubject> all;
+    for (const std::string& name : fabricNames()) all.push_back({name, {{"preset", name}}});
+    std::vector<std::string> drafts;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(WOVEN_ASSETS_DIR) + "/drafts"))
+        if (entry.path().extension() == ".wif") drafts.push_back(entry.path().string());
+    std::sort(drafts.begin(), drafts.end());
+    for (const std::string& wif : drafts)
+        all.push_back({"draft_" + std::filesystem::path(wif).stem().string(), {{"wif", wif}}});
+    return all;
+}
 
 BlockErrors blockErrors(const Image& preview, const Image& core, const std::vector<uint8_t>& mask) {
     std::vector<std::pair<double, double>> sums;

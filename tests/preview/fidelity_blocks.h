@@ -1,14 +1,24 @@
 #pragma once
-// The fidelity harnesses' measure of the preview against core (preview_fidelity_test.cpp on the
-// flat cloth, scene_fidelity_test.cpp on the shipped scenes): 8 x 8 block means, and the pictures
-// of docs/results/fidelity/.
+// The fidelity harnesses' subjects and measure of the preview against core (preview_fidelity_test.cpp
+// on the flat cloth, scene_fidelity_test.cpp on the shipped scenes and the drape): 8 x 8 block
+// means, and the pictures of docs/results/fidelity/.
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "scene_description.h"
 
 namespace woven::test {
+
+// What the harnesses show: every fabric of the library ({"preset": name}) and every draft of
+// assets/drafts ({"wif": path}, named draft_<stem>), as a material's JSON.
+struct FidelitySubject {
+    std::string name;
+    nlohmann::json material;
+};
+std::vector<FidelitySubject> fidelitySubjects();
 
 struct BlockErrors {
     double median = 0.0, worst = 0.0;

@@ -11,10 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <filesystem>
 #include <iostream>
 
-#include "fabric_library.h"
 #include "fidelity_blocks.h"
 #include "flat_cloth.h"
 #include "gl_test_context.h"
@@ -30,32 +28,15 @@ struct Distance {
 };
 constexpr Distance kDistances[] = {{"near", 20.0f, 8}, {"mid", 70.0f, 8}, {"far", 400.0f, 8}};
 
-struct Subject {
-    std::string name;
-    nlohmann::json material;
-};
-
-std::vector<Subject> subjects() {
-    std::vector<Subject> all;
-    for (const std::string& name : fabricNames()) all.push_back({name, {{"preset", name}}});
-    std::vector<std::string> drafts;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(WOVEN_ASSETS_DIR) + "/drafts"))
-        if (entry.path().extension() == ".wif") drafts.push_back(entry.path().string());
-    std::sort(drafts.begin(), drafts.end());
-    for (const std::string& wif : drafts)
-        all.push_back({"draft_" + std::filesystem::path(wif).stem().string(), {{"wif", wif}}});
-    return all;
-}
-
 struct Case {
-    Subject subject;
+    FidelitySubject subject;
     Distance distance;
 };
 void PrintTo(const Case& c, std::ostream* os) { *os << c.subject.name << "_" << c.distance.name; }
 
 std::vector<Case> cases() {
     std::vector<Case> all;
-    for (const Subject& s : subjects())
+    for (const FidelitySubject& s : fidelitySubjects())
         for (const Distance& d : kDistances) all.push_back({s, d});
     return all;
 }
