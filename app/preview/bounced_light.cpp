@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -12,6 +13,7 @@
 #include "frame.h"
 #include "math_constants.h"
 #include "render_scene.h"
+#include "scene_camera.h"
 #include "sky_visibility.h"
 #include "woven_material.h"
 
@@ -54,10 +56,11 @@ void towardsLight(const PreviewLight& l, const glm::vec3& p, glm::vec3& wi, floa
     wi = d / distance;
 }
 
-// Which of the first kVertexShadowLights lights reach the vertex at p with unit normal n: a
-// shadow ray each, from the side the light is on.
-void seenLights(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights, const glm::vec3& p,
-                const glm::vec3& n, BouncedVertex& out) {
+// Which of the first kVertexShadowLights lights reach the vertex at p with unit normal n, into
+// `out.lightsSeen`: a shadow ray each, from the side the light is on. Returns the rays cast.
+int seenLights(const RenderScene& traced, const SceneDescription& scene, const PreviewLights& lights, const glm::vec3& p,
+               const glm::vec3& n, BouncedVertex& out) {
+    std::fill(std::begin(out.lightsSeen), std::end(out.lightsSeen), 0xFFFFFFFFU);
     const int count = std::min<int>(kVertexShadowLights, int(lights.lights.size()));
     for (int i = 0; i < count; ++i) {
         glm::vec3 wi;
@@ -68,18 +71,11 @@ void seenLights(const RenderScene& traced, const SceneDescription& scene, const 
         from.ng = from.ns = glm::dot(wi, n) >= 0.0f ? n : -n;
         if (!unblocked(traced, scene, from, wi, distance)) out.lightsSeen[i / 4] &= ~(0xFFU << (8 * (i % 4)));
     }
+    return count;
 }
 
 bool isWoven(const SceneDescription& scene, int material) {
     return material >= 0 && material < int(scene.materials.size()) && scene.materials[size_t(material)].woven.has_value();
-}
-
-// The diagonal of the box about every mesh's vertices.
-float sceneDiagonal(const SceneDescription& scene) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const Mesh& mesh : scene.meshes)
-        for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return hi.x >= lo.x ? glm::length(hi - lo) : 0.0f;
 }
 
 // Whether a mesh's triangles are small enough for its vertices' shadow rays to draw a shadow
@@ -173,7 +169,7 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
     if (std::none_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangles.empty(); }))
         return out;  // the environment alone: nothing to bounce off
     const RenderScene traced(std::make_shared<const SceneDescription>(scene));
-    const float sceneSize = sceneDiagonal(scene);
+    const float sceneSize = 2.0f * sceneBounds(scene).radius();
     std::vector<int> clothHits(scene.materials.size(), 0);
     std::mutex mutex;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -182,7 +178,7 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
         // Woven cloth alone: its folds shading it are what the maps miss. Another surface keeps the
         // maps: a cloth over it that lets light through its gaps may open or close them by an
         // edit, which traces nothing again.
-        const bool dense = isWoven(scene, mesh.material) && finelyMeshed(mesh, sceneSize);
+        const bool keepsShadowRays = isWoven(scene, mesh.material) && finelyMeshed(mesh, sceneSize);
         // Each vertex is its own task: the same figures on any number of threads.
         tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
             Gathered g{{}, std::vector<int>(scene.materials.size(), 0), 0};
@@ -193,11 +189,7 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
                 const uint32_t key = uint32_t(i) * 2U + uint32_t(m) * 0x9E3779B9U;
                 gather(traced, scene, lights, mesh.positions[i], unit, key, 0, g);
                 gather(traced, scene, lights, mesh.positions[i], -unit, key + 1U, 1, g);
-                g.vertex.lightsSeen[0] = g.vertex.lightsSeen[1] = 0xFFFFFFFFU;
-                if (dense) {
-                    seenLights(traced, scene, lights, mesh.positions[i], unit, g.vertex);
-                    g.rays += size_t(std::min<int>(kVertexShadowLights, int(lights.lights.size())));
-                }
+                if (keepsShadowRays) g.rays += size_t(seenLights(traced, scene, lights, mesh.positions[i], unit, g.vertex));
                 out.meshes[m][i] = g.vertex;
             }
             const std::lock_guard<std::mutex> lock(mutex);
