@@ -458,9 +458,9 @@ void PreviewWindow::run() {
         glfwPollEvents();
         bool rested = restUntilNeeded();
         if (restWhileRendering()) rested = true;
-        const bool input = inputs_ != inputsDrawn_;
-        inputsDrawn_ = inputs_;
         const double now = glfwGetTime();
+        if (inputs_ != inputsDrawn_) lastInputAt_ = now;
+        inputsDrawn_ = inputs_;
         if (frame_ > 1 && !rested) resolution_.frameTook(now - frameStart);
         frameStart = now;
         std::vector<std::string> dropped;
@@ -511,12 +511,15 @@ void PreviewWindow::run() {
             status_.attempt([&] {
                 const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
                 const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
-                // An input (a pointer move, a click, a key) holds the refinement, the mean so far
-                // shown: a refinement frame on software GL takes a second, which each hover and
-                // click of the panel would wait for; so does the Render button's frame, whose
-                // cores the refinement would take. A view that changed is rendered at once.
+                // Input (a pointer move, a click, a key) holds the refinement, the mean so far
+                // shown, until it has paused for kInputPause: a refinement frame on software GL
+                // takes a second, which each hover and click of the panel would wait for, and the
+                // events of one gesture come tens of milliseconds apart. So does the Render
+                // button's frame, whose cores the refinement would take. A view that changed is
+                // rendered at once.
+                constexpr double kInputPause = 0.25;
                 const bool sameView = !interacting_ && view == refinedView_;
-                const bool held = sameView && (input || render_.running());
+                const bool held = sameView && (now - lastInputAt_ < kInputPause || render_.running());
                 if (!held) refinement_ = sameView ? refinement_ + 1 : 0;
                 refinedView_ = view;
                 // Once the mean is complete the view is shown again as it is, not rendered.

@@ -216,6 +216,7 @@ private:
     // A resting window draws nothing until an input (counted by the callbacks) or work arrives.
     uint64_t inputs_ = 0, inputsSeen_ = 0;
     uint64_t inputsDrawn_ = 0;  // inputs_ when the last frame began
+    double lastInputAt_ = -1e9;  // glfwGetTime() of the last frame that began with new input
     double settleUntil_ = 0.0;
     int settleFrames_ = 0;
 };
