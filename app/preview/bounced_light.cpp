@@ -134,7 +134,7 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
     from.ng = from.ns = n;
     const Frame frame = Frame::fromNormal(n);
     const float turn = vertexTurn(key);
-    glm::vec3 radiance(0.0f), offCloth(0.0f);
+    glm::vec3 radiance(0.0f), offCloth(0.0f), offFronts(0.0f);
     for (int i = 0; i < kBounceRays; ++i) {
         const glm::vec3 d = frame.toWorld(spiralDirection(i, kBounceRays, turn));
         ++out.rays;
@@ -149,6 +149,7 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
         const int m = hit->material;
         if (isWoven(scene, m)) {
             offCloth += irradiance / kPi;
+            if (glm::dot(hit->ng, towards) >= 0.0f) offFronts += irradiance / kPi;
             ++out.clothHits[size_t(m)];
         } else {
             radiance += traced.materials()[m].unlitRadiance(hit->tex);
@@ -157,7 +158,9 @@ void gather(const RenderScene& traced, const SceneDescription& scene, const Prev
         }
     }
     out.vertex.radiance[side] = radiance / float(kBounceRays);
-    out.vertex.offCloth[side] = offCloth / float(kBounceRays);
+    const float total = offCloth.r + offCloth.g + offCloth.b;
+    const float fronts = total > 0.0f ? (offFronts.r + offFronts.g + offFronts.b) / total : 1.0f;
+    out.vertex.offCloth[side] = glm::vec4(offCloth / float(kBounceRays), fronts);
 }
 
 }  // namespace
@@ -203,16 +206,16 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
     return out;
 }
 
-glm::vec3 wovenAlbedo(const WovenParams& params) {
+FaceAlbedos wovenAlbedos(const WovenParams& params) {
     const WovenMaterial model(params);
     ShadingInput in;
     in.uvSpacing = glm::dvec2(1e3);  // a footprint of a thousand repeats: the far field alone
-    glm::vec3 sum(0.0f);
-    for (const bool back : {false, true}) {
+    const auto albedo = [&](bool back) {
         in.backSide = back;
-        if (const auto lobe = model.shadeFiltered(in)) sum += lobe->lobe().albedo();
-    }
-    return 0.5f * sum;
+        const auto lobe = model.shadeFiltered(in);
+        return lobe ? lobe->lobe().albedo() : glm::vec3(0.0f);
+    };
+    return {albedo(false), albedo(true)};
 }
 
 }  // namespace woven

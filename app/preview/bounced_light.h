@@ -6,9 +6,11 @@
 // approximated as diffuse: the hit's albedo times the irradiance there (the preview's lights,
 // each behind a shadow ray, plus the ambient times the hit's share of the sky) over pi. Their
 // mean is a radiance the shader adds to the ambient the vertex sees (lighting.glsl's ambientAt()).
-// Light off woven cloth is kept apart, as irradiance / pi, and multiplied by the cloth's mean
-// albedo (wovenAlbedo()) when drawn: a woven edit traces nothing; a change of the geometry, of a
-// mesh's material or of the lights traces again. Traced on core's BVH (RenderScene); plain
+// Light off woven cloth is kept apart, as irradiance / pi with the share of it that left the
+// cloth's front faces, and multiplied by the albedo of each face (wovenAlbedos()) when drawn: a
+// woven edit traces nothing; a change of the geometry, of a mesh's material or of the lights
+// traces again. The faces differ on most cloth (a denim's blue front, its white back), and a fold's
+// inside sees the face the fold turned towards it. Traced on core's BVH (RenderScene); plain
 // data, no GL.
 #include <glm/glm.hpp>
 #include <cstdint>
@@ -33,7 +35,9 @@ constexpr int kVertexShadowLights = 8;
 // texel and its offset, and a triangle larger than a shadow's edge keeps the map's.
 struct BouncedVertex {
     glm::vec3 radiance[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off every surface but woven cloth
-    glm::vec3 offCloth[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};  // off woven cloth, before its albedo
+    // Off woven cloth, before its albedo (rgb), and the share of that which left a front face
+    // (a: core's side, by the hit triangle's winding).
+    glm::vec4 offCloth[2] = {glm::vec4(0.0f), glm::vec4(0.0f)};
     uint32_t lightsSeen[kVertexShadowLights / 4] = {0xFFFFFFFFU, 0xFFFFFFFFU};
 };
 
@@ -42,15 +46,18 @@ struct BouncedLight {
     // (as skyVisibility() leaves them at (1, 1)).
     std::vector<std::vector<BouncedVertex>> meshes;
     // Per material, its share of the rays that met woven cloth: the weights of the woven
-    // materials' wovenAlbedo() in the albedo offCloth is multiplied by.
+    // materials' wovenAlbedos() in the albedos offCloth is multiplied by.
     std::vector<float> clothShares;
     size_t rays = 0;  // traced, the shadow rays included
 };
 
 BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& lights);
 
-// The cloth's albedo as core's weave filter sees it from afar (FilteredWeaveLobe::albedo() over
-// many repeats), the mean of both faces.
-glm::vec3 wovenAlbedo(const WovenParams& params);
+// The cloth's albedo on each face as core's weave filter sees it from afar
+// (FilteredWeaveLobe::albedo() over many repeats).
+struct FaceAlbedos {
+    glm::vec3 front = glm::vec3(0.0f), back = glm::vec3(0.0f);
+};
+FaceAlbedos wovenAlbedos(const WovenParams& params);
 
 }  // namespace woven

@@ -59,8 +59,8 @@ GpuMesh::GpuMesh(const Mesh& mesh, const std::vector<glm::vec2>& skyVisibility) 
     glBindBuffer(GL_ARRAY_BUFFER, bouncedBuffer_);
     attribute(kBouncedLightLocation, 3, offsetof(BouncedVertex, radiance[0]), sizeof(BouncedVertex));
     attribute(kBouncedLightLocation + 1, 3, offsetof(BouncedVertex, radiance[1]), sizeof(BouncedVertex));
-    attribute(kBouncedLightLocation + 2, 3, offsetof(BouncedVertex, offCloth[0]), sizeof(BouncedVertex));
-    attribute(kBouncedLightLocation + 3, 3, offsetof(BouncedVertex, offCloth[1]), sizeof(BouncedVertex));
+    attribute(kBouncedLightLocation + 2, 4, offsetof(BouncedVertex, offCloth[0]), sizeof(BouncedVertex));
+    attribute(kBouncedLightLocation + 3, 4, offsetof(BouncedVertex, offCloth[1]), sizeof(BouncedVertex));
     glEnableVertexAttribArray(kLightsSeenLocation);
     glVertexAttribIPointer(kLightsSeenLocation, kVertexShadowLights / 4, GL_UNSIGNED_INT, sizeof(BouncedVertex),
                            reinterpret_cast<void*>(offsetof(BouncedVertex, lightsSeen)));

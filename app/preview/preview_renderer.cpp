@@ -17,7 +17,7 @@ namespace woven {
 
 namespace {
 
-void uploadLights(const ShaderProgram& program, const PreviewLights& lights, const glm::vec3& bouncedClothAlbedo) {
+void uploadLights(const ShaderProgram& program, const PreviewLights& lights, const FaceAlbedos& bouncedCloth) {
     const int n = std::min<int>(int(lights.lights.size()), PreviewLights::kMaxLights);
     std::vector<glm::vec4> position(n), axis(n), intensity(n);
     for (int i = 0; i < n; ++i) {
@@ -33,7 +33,8 @@ void uploadLights(const ShaderProgram& program, const PreviewLights& lights, con
         glUniform4fv(program.uniform("lightIntensity"), n, glm::value_ptr(intensity[0]));
     }
     glUniform3fv(program.uniform("ambientRadiance"), 1, glm::value_ptr(lights.ambient));
-    glUniform3fv(program.uniform("bouncedClothAlbedo"), 1, glm::value_ptr(bouncedClothAlbedo));
+    glUniform3fv(program.uniform("bouncedClothFront"), 1, glm::value_ptr(bouncedCloth.front));
+    glUniform3fv(program.uniform("bouncedClothBack"), 1, glm::value_ptr(bouncedCloth.back));
 }
 
 bool sameLights(const PreviewLights& a, const PreviewLights& b) {
@@ -196,19 +197,20 @@ void PreviewRenderer::updateBouncedLight(const SceneDescription& scene, const Pr
     for (size_t k = 0; k < meshes_.size(); ++k) meshes_[k]->setBouncedLight(bounced.meshes[sceneMeshes_[k]]);
 }
 
-glm::vec3 PreviewRenderer::bouncedClothAlbedo(const SceneDescription& scene) {
-    glm::vec3 albedo(0.0f);
+FaceAlbedos PreviewRenderer::bouncedClothAlbedos(const SceneDescription& scene) {
+    FaceAlbedos albedos;
     for (size_t m = 0; m < clothShares_.size() && m < scene.materials.size(); ++m) {
         if (!(clothShares_[m] > 0.0f) || !scene.materials[m].woven) continue;
         const WovenParams& params = *scene.materials[m].woven;
         auto& [key, cached] = clothAlbedos_[int(m)];
         if (std::string json = paramsToJson(params).dump(); json != key) {
-            cached = wovenAlbedo(params);
+            cached = wovenAlbedos(params);
             key = std::move(json);
         }
-        albedo += clothShares_[m] * cached;
+        albedos.front += clothShares_[m] * cached.front;
+        albedos.back += clothShares_[m] * cached.back;
     }
-    return albedo;
+    return albedos;
 }
 
 void PreviewRenderer::ensureTarget(glm::ivec2 size) {
@@ -261,7 +263,7 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
         shadows = shadows_->lookups();
     }
     updateBouncedLight(scene, lights, options.traceBounce);
-    const glm::vec3 clothAlbedo = bouncedClothAlbedo(scene);
+    const FaceAlbedos clothAlbedos = bouncedClothAlbedos(scene);
     ensureTarget(size);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, size.x, size.y);
@@ -293,7 +295,7 @@ void PreviewRenderer::render(const SceneDescription& scene, const PreviewLights&
     for (const auto& mesh : meshes_) {
         const int index = mesh->material();
         const bool valid = index >= 0 && index < int(scene.materials.size());
-        drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, clothAlbedo, camera,
+        drawMesh(*mesh, valid ? scene.materials[index] : fallback, valid ? index : -1, lights, clothAlbedos, camera,
                  viewProjection, options, shadows);
     }
     glDisable(GL_CULL_FACE);
@@ -350,14 +352,14 @@ void PreviewRenderer::drawEnvironment(const Environment& environment, const Came
 }
 
 void PreviewRenderer::drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex,
-                               const PreviewLights& lights, const glm::vec3& bouncedClothAlbedo, const Camera& camera,
+                               const PreviewLights& lights, const FaceAlbedos& bouncedCloth, const Camera& camera,
                                const glm::mat4& viewProjection, const PreviewOptions& options, ShadowLookups shadows) {
     const ShaderProgram& program = surfaceProgram(material, options.filterWeave, shadows);
     glUseProgram(program.id());
     glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniform3fv(program.uniform("cameraPosition"), 1, glm::value_ptr(glm::vec3(camera.cameraToWorld[3])));
     glUniform3fv(program.uniform("emission"), 1, glm::value_ptr(material.emission));
-    uploadLights(program, lights, bouncedClothAlbedo);
+    uploadLights(program, lights, bouncedCloth);
     // A single-sided material shows its front alone, as glTF viewers draw it and camera rays see it
     // (RayKind in render_scene.h); counter-clockwise is the front, as in glTF.
     if (material.doubleSided) glDisable(GL_CULL_FACE);

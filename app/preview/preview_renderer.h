@@ -69,7 +69,7 @@ private:
     void ensureTarget(glm::ivec2 size);
     void drawEnvironment(const Environment& environment, const Camera& camera, glm::ivec2 size);
     void drawMesh(const GpuMesh& mesh, const Material& material, int materialIndex, const PreviewLights& lights,
-                  const glm::vec3& bouncedClothAlbedo, const Camera& camera, const glm::mat4& viewProjection,
+                  const FaceAlbedos& bouncedCloth, const Camera& camera, const glm::mat4& viewProjection,
                   const PreviewOptions& options, ShadowLookups shadows);
     // Uploads the material's parameters and binds its textures, for its surface or shadow program.
     void uploadMaterial(const ShaderProgram& program, const Material& material, int materialIndex);
@@ -78,9 +78,10 @@ private:
     // Traces the bounced light again where the meshes changed since it was traced, or the lights
     // did and `retrace`.
     void updateBouncedLight(const SceneDescription& scene, const PreviewLights& lights, bool retrace);
-    // The albedo the light off woven cloth is multiplied by: the woven materials' wovenAlbedo(),
-    // weighted by their shares of the bounced rays (recomputed where a woven material changed).
-    glm::vec3 bouncedClothAlbedo(const SceneDescription& scene);
+    // The albedos the light off woven cloth's faces is multiplied by: the woven materials'
+    // wovenAlbedos(), weighted by their shares of the bounced rays (recomputed where a woven
+    // material changed).
+    FaceAlbedos bouncedClothAlbedos(const SceneDescription& scene);
 
     std::vector<std::unique_ptr<GpuMesh>> meshes_;
     std::vector<size_t> sceneMeshes_;  // the scene's index of each of meshes_
@@ -100,8 +101,8 @@ private:
     // shares of its rays off woven cloth per material.
     std::optional<PreviewLights> bouncedLights_;
     std::vector<float> clothShares_;
-    // wovenAlbedo() per material index, with its parameters' JSON, for bouncedClothAlbedo().
-    std::map<int, std::pair<std::string, glm::vec3>> clothAlbedos_;
+    // wovenAlbedos() per material index, with its parameters' JSON, for bouncedClothAlbedos().
+    std::map<int, std::pair<std::string, FaceAlbedos>> clothAlbedos_;
     SceneBox bounds_;  // of the meshes, for the depth range and the shadow maps
     void accumulate(int refinement);
 

@@ -448,6 +448,46 @@ bool PreviewWindow::restUntilNeeded() {
     return true;
 }
 
+// The preview's view: its next refinement frame rendered where one is due, and shown.
+void PreviewWindow::drawPreviewView(int width, int height, double now) {
+    Camera camera = camera_.camera();
+    camera.aspect = float(width) / float(height);
+    PreviewOptions preview;
+    preview.filterWeave = filterWeave_;
+    preview.shadows = shadows_;
+    preview.traceBounce = !interacting_;
+    status_.attempt([&] {
+        const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
+        const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
+        // Input (a pointer move, a click, a key) holds the refinement, the mean so far
+        // shown, until it has paused for kInputPause: a refinement frame on software GL
+        // takes a second, which each hover and click of the panel would wait for, and the
+        // events of one gesture come tens of milliseconds apart. So does the Render
+        // button's frame, whose cores the refinement would take. A view that changed is
+        // rendered at once.
+        constexpr double kInputPause = 0.25;
+        const bool sameView = !interacting_ && view == refinedView_;
+        const bool held = sameView && (now - lastInputAt_ < kInputPause || render_.running());
+        if (!held) refinement_ = sameView ? refinement_ + 1 : 0;
+        refinedView_ = view;
+        // Once the mean is complete the view is shown again as it is, not rendered.
+        if (refinement_ < kRefinementFrames && !held) {
+            preview.refinement = refinement_;
+            preview.pixelOffset = refinementOffset(refinement_);
+            renderer_->render(scene(), lights_, camera, size, preview);
+            // Its first frame is a function of the view alone: the window tests need not
+            // wait for the refinement to end to tell whether an edit changed the view.
+            if (refinement_ == 0 && size == glm::ivec2(width, height) && !options_.widgetMap.empty()) {
+                const Image radiance = renderer_->radiance();
+                begunView_ = {frame_, checksum(radiance), meanColour(radiance)};
+            }
+        }
+        renderer_->display(0, {0, 0}, {width, height}, display_);
+    });
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+}
+
 void PreviewWindow::run() {
     closeRequested = false;
     auto previousInt = std::signal(SIGINT, requestClose);
@@ -501,44 +541,7 @@ void PreviewWindow::run() {
         glViewport(0, 0, width, height);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        if (width > 0 && height > 0 && !finalShown && !renderedView_) {
-            Camera camera = camera_.camera();
-            camera.aspect = float(width) / float(height);
-            PreviewOptions preview;
-            preview.filterWeave = filterWeave_;
-            preview.shadows = shadows_;
-            preview.traceBounce = !interacting_;
-            status_.attempt([&] {
-                const glm::ivec2 size = resolution_.frameSize({width, height}, interacting_, now);
-                const RefinedView view{camera.cameraToWorld, camera.yfov, size, sceneGeneration_, filterWeave_, shadows_};
-                // Input (a pointer move, a click, a key) holds the refinement, the mean so far
-                // shown, until it has paused for kInputPause: a refinement frame on software GL
-                // takes a second, which each hover and click of the panel would wait for, and the
-                // events of one gesture come tens of milliseconds apart. So does the Render
-                // button's frame, whose cores the refinement would take. A view that changed is
-                // rendered at once.
-                constexpr double kInputPause = 0.25;
-                const bool sameView = !interacting_ && view == refinedView_;
-                const bool held = sameView && (now - lastInputAt_ < kInputPause || render_.running());
-                if (!held) refinement_ = sameView ? refinement_ + 1 : 0;
-                refinedView_ = view;
-                // Once the mean is complete the view is shown again as it is, not rendered.
-                if (refinement_ < kRefinementFrames && !held) {
-                    preview.refinement = refinement_;
-                    preview.pixelOffset = refinementOffset(refinement_);
-                    renderer_->render(scene(), lights_, camera, size, preview);
-                    // Its first frame is a function of the view alone: the window tests need not
-                    // wait for the refinement to end to tell whether an edit changed the view.
-                    if (refinement_ == 0 && size == glm::ivec2(width, height) && !options_.widgetMap.empty()) {
-                        const Image radiance = renderer_->radiance();
-                        begunView_ = {frame_, checksum(radiance), meanColour(radiance)};
-                    }
-                }
-                renderer_->display(0, {0, 0}, {width, height}, display_);
-            });
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, width, height);
-        }
+        if (width > 0 && height > 0 && !finalShown && !renderedView_) drawPreviewView(width, height, now);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         // A signal ends the loop after this frame, which is then the last (and its screenshot).

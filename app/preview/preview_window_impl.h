@@ -123,6 +123,7 @@ private:
     void setRenderedView(bool on);
     void handleViewKeys();
     bool restWhileRendering();
+    void drawPreviewView(int width, int height, double now);
     void drawRenderedView();
     nlohmann::json renderedViewState() const;
     void writeWindowScreenshot(const std::string& path);

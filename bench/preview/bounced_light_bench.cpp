@@ -1,7 +1,7 @@
 // What opening a scene costs the preview's ambient, per shipped scene as `woven preview` opens it:
 // the sky's share per vertex (sky_visibility.h, traced once per mesh upload) and the bounced
 // light (bounced_light.h, traced again after a light edit), their rays and seconds; and what a
-// woven edit costs instead (wovenAlbedo() of the scene's first woven material). A printed table,
+// woven edit costs instead (wovenAlbedos() of the scene's first woven material). A printed table,
 // never a test: every figure depends on the machine and its load. CPU seconds beside the wall's:
 // the bounce runs on every core (TBB), the sky on one.
 #include <algorithm>
@@ -52,7 +52,7 @@ void run(int argc, char** argv) {
         for (const Material& m : scene.materials)
             if (m.woven) {
                 const Timer edit;
-                (void)wovenAlbedo(*m.woven);
+                (void)wovenAlbedos(*m.woven);
                 editMs = 1e3 * edit.wallSeconds();
                 break;
             }

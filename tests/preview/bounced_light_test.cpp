@@ -60,7 +60,7 @@ TEST(BouncedLight, WhiteWallLitFromBelowSendsEOverPi) {
     for (const BouncedVertex& v : b.meshes[0]) {
         expectNear(v.radiance[0], glm::vec3(kE / kPi), 1e-4f);
         expectNear(v.radiance[1], glm::vec3(0.0f), 0.0f);  // below the patch: nothing
-        expectNear(v.offCloth[0], glm::vec3(0.0f), 0.0f);
+        expectNear(glm::vec3(v.offCloth[0]), glm::vec3(0.0f), 0.0f);
     }
     // A grey metal's albedo is its base colour.
     const BouncedLight grey = bounce(wallScene(plain(glm::vec3(0.25f, 0.5f, 0.75f), 1.0f), {0.0f, 0.0f, 1.0f}));
@@ -115,26 +115,46 @@ TEST(BouncedLight, FinelyMeshedClothKeepsWhichLightsItsVerticesSee) {
     for (const BouncedVertex& v : bare.meshes[0]) EXPECT_EQ(v.lightsSeen[0], 0xFFFFFFFFU);
 }
 
-TEST(BouncedLight, WovenWallIsKeptApartBeforeItsAlbedo) {
+// Off woven cloth, the light is kept apart before its albedo, with the share that left the wall's
+// front: all of it where the wall's winding faces the patch, none where the wall is turned over
+// (lit from below alike: the irradiance is the side's the ray met).
+TEST(BouncedLight, WovenWallIsKeptApartBeforeItsAlbedoWithTheFaceItLeft) {
     Material cloth;
     cloth.woven = WovenParams{};
-    const BouncedLight b = bounce(wallScene(cloth, {0.0f, 0.0f, 1.0f}));
+    SceneDescription scene = wallScene(cloth, {0.0f, 0.0f, 1.0f});
+    const BouncedLight b = bounce(scene);
     for (const BouncedVertex& v : b.meshes[0]) {
         expectNear(v.radiance[0], glm::vec3(0.0f), 0.0f);
-        expectNear(v.offCloth[0], glm::vec3(kE / kPi), 1e-4f);
+        expectNear(glm::vec3(v.offCloth[0]), glm::vec3(kE / kPi), 1e-4f);
+        EXPECT_EQ(v.offCloth[0].a, 1.0f);
     }
     EXPECT_EQ(b.clothShares[0], 0.0f);
     EXPECT_EQ(b.clothShares[1], 1.0f);
+    scene.meshes[1] = quad(100.0f, 1.0f, true, 1);
+    const BouncedLight turned = bounce(scene);
+    for (const BouncedVertex& v : turned.meshes[0]) {
+        expectNear(glm::vec3(v.offCloth[0]), glm::vec3(kE / kPi), 1e-4f);
+        EXPECT_EQ(v.offCloth[0].a, 0.0f);
+    }
 }
 
-TEST(BouncedLight, WovenAlbedoIsTheYarnsReflectance) {
+TEST(BouncedLight, WovenAlbedoIsTheYarnsReflectanceOnEachFace) {
     // Every lobe of white yarns reflects R_d (1 - rs) + rs = 1; of black ones rs.
     WovenParams white;
     white.weft_color = white.warp_color = glm::vec3(1.0f);
-    expectNear(wovenAlbedo(white), glm::vec3(1.0f), 1e-5f);
+    expectNear(wovenAlbedos(white).front, glm::vec3(1.0f), 1e-5f);
+    expectNear(wovenAlbedos(white).back, glm::vec3(1.0f), 1e-5f);
     WovenParams black;
     black.weft_color = black.warp_color = glm::vec3(0.0f);
-    expectNear(wovenAlbedo(black), glm::vec3(black.rs), 1e-5f);
+    expectNear(wovenAlbedos(black).front, glm::vec3(black.rs), 1e-5f);
+    // A 3/1 twill of black warp and white weft: the warp floats on the front, the weft on the
+    // back, so the front is the darker face.
+    WovenParams twill;
+    twill.pattern = {1, 3, 1};
+    twill.warp_color = glm::vec3(0.0f);
+    twill.weft_color = glm::vec3(1.0f);
+    const FaceAlbedos faces = wovenAlbedos(twill);
+    EXPECT_LT(faces.front.g + 0.2f, faces.back.g) << "front " << faces.front.g << ", back " << faces.back.g;
 }
 
 }  // namespace
