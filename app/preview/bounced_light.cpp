@@ -1,5 +1,7 @@
 #include "bounced_light.h"
 
+#include "sampling.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -13,6 +15,7 @@
 #include "frame.h"
 #include "math_constants.h"
 #include "render_scene.h"
+#include "sampling.h"
 #include "scene_camera.h"
 #include "sky_visibility.h"
 #include "woven_material.h"
@@ -206,14 +209,22 @@ BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& li
     return out;
 }
 
-FaceAlbedos wovenAlbedos(const WovenParams& params) {
+FaceAlbedos wovenAlbedos(const WovenParams& params, int samples) {
     const WovenMaterial model(params);
-    ShadingInput in;
-    in.uvSpacing = glm::dvec2(1e3);  // a footprint of a thousand repeats: the far field alone
     const auto albedo = [&](bool back) {
-        in.backSide = back;
-        const auto lobe = model.shadeFiltered(in);
-        return lobe ? lobe->lobe().albedo() : glm::vec3(0.0f);
+        Rng rng(back ? 2 : 1);
+        const glm::vec3 side(1.0f, 1.0f, back ? -1.0f : 1.0f);
+        glm::dvec3 sum(0.0);
+        for (int k = 0; k < samples; ++k) {
+            ShadingInput in;
+            in.uv = glm::dvec2(kAlbedoThreads * rng.uniform2());
+            in.backSide = back;
+            const glm::vec3 wo = side * sampleCosineHemisphere(rng.uniform2());
+            const glm::vec3 wi = side * sampleCosineHemisphere(rng.uniform2());
+            // A see-through gap reflects nothing.
+            if (const std::optional<WovenShading> s = model.shade(in)) sum += glm::dvec3(s->bsdf.eval(wo, wi));
+        }
+        return glm::vec3(double(kPi) * sum / double(samples));
     };
     return {albedo(false), albedo(true)};
 }

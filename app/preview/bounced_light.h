@@ -53,11 +53,15 @@ struct BouncedLight {
 
 BouncedLight bouncedLight(const SceneDescription& scene, const PreviewLights& lights);
 
-// The cloth's albedo on each face as core's weave filter sees it from afar
-// (FilteredWeaveLobe::albedo() over many repeats).
+// The cloth's albedo on each face to light from the whole hemisphere, as core's BSDF (the point
+// model, what the Render button renders) reflects it averaged over the cloth: the mean of pi f over
+// uv uniform across kAlbedoThreads threads each way and outgoing and incoming directions each
+// cosine-distributed (Monte Carlo, a fixed seed). Not the lobes' own albedo(), R_d (1 - rs) + rs,
+// which is what they reflect before the yarns shade and mask each other (docs/RESULTS.md).
+constexpr float kAlbedoThreads = 1024.0f;  // past a tartan's repeat of colours
 struct FaceAlbedos {
     glm::vec3 front = glm::vec3(0.0f), back = glm::vec3(0.0f);
 };
-FaceAlbedos wovenAlbedos(const WovenParams& params);
+FaceAlbedos wovenAlbedos(const WovenParams& params, int samples = 16384);
 
 }  // namespace woven

@@ -138,21 +138,29 @@ TEST(BouncedLight, WovenWallIsKeptApartBeforeItsAlbedoWithTheFaceItLeft) {
     }
 }
 
-TEST(BouncedLight, WovenAlbedoIsTheYarnsReflectanceOnEachFace) {
-    // Every lobe of white yarns reflects R_d (1 - rs) + rs = 1; of black ones rs.
+// The albedo the bounce gives light off woven cloth is what core's BSDF reflects on that face: for
+// white yarns under the lobes' own R_d (1 - rs) + rs = 1, the yarns shading and masking each other
+// (measured 0.70; the weave filter's far field gives 0.755); within 3 % of the estimate at 16
+// times the samples; and on a 3/1 twill of black warp and white weft, the warp's floats on the
+// front and the weft's on the back, the front the darker face.
+TEST(BouncedLight, WovenAlbedoIsWhatCoresBsdfReflectsOnEachFace) {
     WovenParams white;
     white.weft_color = white.warp_color = glm::vec3(1.0f);
-    expectNear(wovenAlbedos(white).front, glm::vec3(1.0f), 1e-5f);
-    expectNear(wovenAlbedos(white).back, glm::vec3(1.0f), 1e-5f);
-    WovenParams black;
-    black.weft_color = black.warp_color = glm::vec3(0.0f);
-    expectNear(wovenAlbedos(black).front, glm::vec3(black.rs), 1e-5f);
-    // A 3/1 twill of black warp and white weft: the warp floats on the front, the weft on the
-    // back, so the front is the darker face.
     WovenParams twill;
     twill.pattern = {1, 3, 1};
     twill.warp_color = glm::vec3(0.0f);
     twill.weft_color = glm::vec3(1.0f);
+    for (const WovenParams& p : {white, twill}) {
+        const FaceAlbedos faces = wovenAlbedos(p), converged = wovenAlbedos(p, 16 * 16384);
+        for (const bool back : {false, true}) {
+            const glm::vec3 got = back ? faces.back : faces.front, want = back ? converged.back : converged.front;
+            std::cerr << (back ? "back " : "front ") << got.g << ", at 16 times the samples " << want.g << "\n";
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 0.03f * want[c] + 1e-3f) << "channel " << c;
+        }
+    }
+    const FaceAlbedos whiteFaces = wovenAlbedos(white);
+    EXPECT_GT(whiteFaces.front.g, 0.6f);
+    EXPECT_LT(whiteFaces.front.g, 0.8f);
     const FaceAlbedos faces = wovenAlbedos(twill);
     EXPECT_LT(faces.front.g + 0.2f, faces.back.g) << "front " << faces.front.g << ", back " << faces.back.g;
 }

@@ -89,9 +89,9 @@ struct KnownMiss {
 constexpr KnownMiss kKnownMisses[] = {
     {"converge_indirect", 0.597, 0.832},    // lit off the ceiling: one bounce of the path tracer's many
     {"curtain_window", 0.083, 0.338},       // the window's glow through the curtain as a few points
-    {"default_scene", 0.05, 0.271},         // the fold's shaded side: the preview's indirect light over core's
-    {"default_scene_backlit", 0.067, 0.262},  // the same fold, lit from behind
-    {"lampshade", 0.125, 0.282},            // the shade's glow, lit by the light bounced inside it
+    {"default_scene", 0.05, 0.219},         // the fold's shaded side: the preview's indirect light over core's
+    {"default_scene_backlit", 0.067, 0.255},  // the same fold, lit from behind
+    {"lampshade", 0.09, 0.202},             // the shade's glow, lit by the light bounced inside it
     {"twill_stripes", 0.05, 0.26},          // its worst block, a miss before the bounce too
 };
 
@@ -159,13 +159,13 @@ std::vector<DrapeCase> drapeCases() {
     return all;
 }
 
-// The drape's worst block misses the bound in 45 of the 51 cases, all on the fold's shaded side,
-// where the preview's indirect light (the sky's share, one bounce) is over core's (the default
-// scene's, docs/results/fidelity/README.md): measured 13.2 to 25.3 %, held at 1.3 x the
-// largest. The tartan's worst block (the same blocks, 29 to 78 % over core's dark) and the voile's (its see-through gaps
-// show the drape's dark inside in the preview, lit surfaces in core's) miss more, held as the
-// scenes' misses are (llvmpipe, 2026-12-07).
-constexpr double kDrapeWorstBound = 0.33;
+// The drape's worst block misses the bound in 18 of the 51 cases, on the fold's shaded side, where
+// the preview's indirect light (the sky's share, one bounce) is over core's (the default scene's,
+// docs/results/fidelity/README.md): measured 15.3 to 19.2 % there (10.1 to 15.0 % in the other
+// 33), held at 1.3 x the largest. The tartan's worst block (the same blocks, 29 to 78 % over core's
+// dark) and the voile's (its see-through gaps show the drape's dark inside in the preview, lit
+// surfaces in core's) miss more, held as the scenes' misses are (llvmpipe, 2026-12-08).
+constexpr double kDrapeWorstBound = 0.25;
 constexpr KnownMiss kDrapeKnownMisses[] = {
     {"tartan_near", 0.05, 0.89}, {"tartan_mid", 0.05, 0.90}, {"tartan_far", 0.05, 0.93},
     {"voile_near", 0.22, 0.63},  {"voile_mid", 0.19, 0.57},  {"voile_far", 0.19, 0.54},
