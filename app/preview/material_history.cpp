@@ -23,16 +23,14 @@ void PreviewWindow::commitCompletedEdit() {
 }
 
 MaterialState PreviewWindow::materialState() const {
-    return {edits_->edits(), editIndex_, draft_, draftEdit_, fabrics_.chosen()};
+    return {edits_->edits(), editIndex_, draft_.state(), fabrics_.chosen()};
 }
 
 void PreviewWindow::restore(MaterialState state) {
     edits_->restore(std::move(state.edits));
     editIndex_ = state.editIndex;
-    draft_ = std::move(state.draft);
-    draftEdit_ = state.draftEdit;
+    draft_.restore(std::move(state.draft));
     fabrics_.setChosen(std::move(state.chosenFabric));
-    if (draft_) copyToBuffer(draftPath_, draft_->name());
     render_.hide();
     ++sceneGeneration_;
     applyEdits();

@@ -13,6 +13,7 @@
 #include "material_file.h"
 #include "preview_window_impl.h"
 #include "uv_scale.h"
+#include "weave_candidates.h"
 #include "weave_draft.h"
 #include "weave_presets.h"
 #include "woven_params.h"
@@ -30,7 +31,7 @@ void PreviewWindow::drawFabricControls(WovenParams& p) {
             p = chosen.params;
             materialEdited();
             showDraftOf(chosen.wif, warnings);
-            if (chosen.wif.empty()) showWeaveAsDraft(p, name);
+            if (chosen.wif.empty()) showWeaveAsDraft(p, name, true);
             fabrics_.setChosen(std::move(chosen));
             status_.say("fabric " + name + (warnings.empty() ? "" : " (" + warnings.front() + ")"));
             for (const std::string& w : warnings) status_.warn(w);
@@ -45,24 +46,18 @@ const std::optional<glm::dvec2>& PreviewWindow::metresPerUvOf(const std::string&
 
 void PreviewWindow::showDraftOf(const std::string& wif, std::vector<std::string>& warnings) {
     if (wif.empty()) {
-        if (draftEdit_ == editIndex_) draft_.reset();
+        draft_.closeFor(editIndex_);
         return;
     }
-    draft_ = DraftEditor::open(wif, warnings);
-    draftEdit_ = editIndex_;
-    showDraftWindow_ = true;
-    copyToBuffer(draftPath_, wif);
+    draft_.open(DraftEditor::open(wif, warnings), editIndex_, true, wif);
 }
 
-void PreviewWindow::showWeaveAsDraft(const WovenParams& p, const std::string& name) {
+void PreviewWindow::showWeaveAsDraft(const WovenParams& p, const std::string& name, bool show) {
     std::string file = name;  // a material's name may hold what a file name cannot
     for (char& c : file)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
     const std::string path = besideScene(scenePath_, "-" + file + ".wif", file + ".wif");
-    draft_ = DraftEditor(weaveDraft(p, name), path);
-    draftEdit_ = editIndex_;
-    showDraftWindow_ = true;
-    copyToBuffer(draftPath_, path);
+    draft_.open(DraftEditor(weaveDraft(p, name), path), editIndex_, show, path);
 }
 
 namespace {
@@ -135,9 +130,15 @@ void recolour(WovenParams& p, const glm::vec3& from, const glm::vec3& to) {
 void PreviewWindow::drawWeaveControls(WovenParams& p) {
     const auto& presets = weavePresets();
     const int current = presetOf(p);
-    const char* name = current >= 0 ? presets[size_t(current)].name.c_str() : p.tile.empty() ? "(custom)" : "(a tile)";
+    // A tile (a draft's, or drawn) of the regular family shows as its (i, j, k): the default
+    // denim's draft is a 3/1 twill, not the pattern's (1, 1, 1) the tile overrides.
+    const std::optional<glm::ivec3> regular = p.tile.empty() ? std::nullopt : regularWeaveOf(p.tile);
+    const std::string name = current >= 0   ? presets[size_t(current)].name
+                             : regular      ? "(a tile: " + describeWeave(*regular) + ")"
+                             : p.tile.empty() ? "(custom)"
+                                              : "(a tile)";
     std::string chosen;
-    if (ui::BeginCombo("weave preset", name)) {
+    if (ui::BeginCombo("weave preset", name.c_str())) {
         for (size_t i = 0; i < presets.size(); ++i)
             if (ui::Selectable(presets[i].name.c_str(), int(i) == current)) {
                 applyPreset(presets[i], p);
@@ -147,17 +148,19 @@ void PreviewWindow::drawWeaveControls(WovenParams& p) {
     }
     const ParamInfo& pattern = *std::find_if(wovenParamTable().begin(), wovenParamTable().end(),
                                              [](const ParamInfo& info) { return info.type == ParamType::IVec3; });
-    int* v = &p.pattern.x;
+    glm::ivec3 shown = regular.value_or(p.pattern);
+    int* v = &shown.x;
     if (ui::InputInt3(pattern.label, v)) {
         for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], int(pattern.min), int(pattern.max));
+        p.pattern = shown;
         p.tile.clear();
         chosen = "(" + std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]) + ")";
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s: %s%s", pattern.name, pattern.description,
                           p.tile.empty() ? "" : "\nthe weave is a tile now (a draft's or drawn): a weave typed here replaces it");
-    if (!chosen.empty() && draft_ && draftEdit_ == editIndex_) {
-        draft_.reset();
+    if (!chosen.empty() && draft_.openFor(editIndex_)) {
+        draft_.closeFor(editIndex_);
         status_.say("the weave " + chosen + " replaces the draft's; its threads keep their colours");
     }
 }
@@ -279,15 +282,16 @@ void PreviewWindow::drawMaterialControls(WovenParams& p) {
 
 void PreviewWindow::drawDraftControls(WovenParams& p) {
     ImGui::Separator();
-    ui::InputText("draft file", draftPath_, sizeof draftPath_);
+    ui::InputText("draft file", draft_.path(), DraftSection::kPathSize);
     if (ui::Button("Open draft")) {
         status_.attempt([&] {
-            openDraft(draftPath_);
+            openDraft(draft_.path());
         });
     }
-    if (!draft_ || draftEdit_ != editIndex_) {
+    DraftEditor* editor = draft_.of(editIndex_);
+    if (!editor) {
         ImGui::SameLine();
-        if (ui::Button("Draft view")) status_.attempt([&] { showWeaveAsDraft(p, "weave"); });
+        if (ui::Button("Draft view")) status_.attempt([&] { showWeaveAsDraft(p, "weave", true); });
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("this weave and its thread colours as a draft, to edit thread by thread and save as WIF "
                               "(or drop a .wif on the window)");
@@ -296,8 +300,8 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
     ImGui::SameLine();
     if (ui::Button("Save WIF")) {
         status_.attempt([&] {
-            draft_->save(draftPath_);
-            status_.say(std::string("saved ") + draftPath_);
+            editor->save(draft_.path());
+            status_.say(std::string("saved ") + draft_.path());
         });
     }
     ImGui::SameLine();
@@ -306,7 +310,7 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
         status_.attempt([&] {
             const std::string& target = edits_->edits()[size_t(editIndex_)].target;
             p.repeat = repeatForThreadsPerCm(scene(), edits_->meshesOf(target),
-                                             draftThreadsPerCm(draft_->draft(), draft_->name()));
+                                             draftThreadsPerCm(editor->draft(), editor->name()));
             validate(p);
             materialEdited();
             status_.say("repeat from the draft's spacing");
@@ -316,8 +320,8 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
         status_.attempt([&] {
             const bool gltf = hasExtension(scenePath_, ".gltf") || hasExtension(scenePath_, ".glb");
             const std::string wif = saveMaterialWithDraft(materialPath_, edits_->edits()[size_t(editIndex_)].target, p,
-                                                          gltf ? scenePath_ : "", *draft_);
-            copyToBuffer(draftPath_, wif);
+                                                          gltf ? scenePath_ : "", *editor);
+            draft_.setPath(wif);
             status_.say(std::string("saved ") + materialPath_ + " and " + wif);
         });
     }
@@ -325,27 +329,12 @@ void PreviewWindow::drawDraftControls(WovenParams& p) {
 
 // The draft view of the material the draft belongs to, beside the panel.
 void PreviewWindow::drawDraftWindow() {
-    if (!draft_ || draftEdit_ < 0 || draftEdit_ >= int(edits_->edits().size())) return;
-    WovenParams* woven = &edits_->params(draftEdit_);
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    // Beside the panel, as wide as it leaves the window.
-    const ImGuiWindow* panel = ImGui::FindWindowByName("woven");
-    const float left = panel ? panel->Rect().Max.x + 8.0f : 456.0f;
-    ImGui::SetNextWindowPos(ImVec2(left, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(std::max(display.x - left - 8.0f, 200.0f), display.y * 0.45f), ImGuiCond_FirstUseEver);
-    // A scene's own draft starts collapsed to its title bar (beside the panel it would hide a third
-    // of the view); a draft the user opens is shown.
-    ImGui::SetNextWindowCollapsed(!showDraftWindow_, showDraftWindow_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
-    showDraftWindow_ = false;
-    ImGui::Begin("Draft");
-    status_.attempt([&] {
-        if (draftView_.draw(*draft_, woven->warp_color, woven->weft_color)) {
-            *woven = draft_->material(*woven);
-            materialEdited();
-            applyEdits();
-        }
-    });
-    ImGui::End();
+    const int edit = draft_.edit();
+    if (edit < 0 || edit >= int(edits_->edits().size())) return;
+    if (draft_.drawWindow(edits_->params(edit), status_)) {
+        materialEdited();
+        status_.attempt([&] { applyEdits(); });
+    }
 }
 
 

@@ -144,7 +144,7 @@ void PreviewWindow::openScene(const std::string& path) {
     camera_ = OrbitCamera::forScene(scene());
     // The panel starts on the first woven material, as an edit of its own name (no change yet).
     editIndex_ = -1;
-    draft_.reset();
+    draft_.close();
     for (const Material& m : scene().materials)
         if (m.woven) {
             editIndex_ = edits_->makeWoven(literalTarget(TargetKind::Material, m.name));
@@ -153,12 +153,9 @@ void PreviewWindow::openScene(const std::string& path) {
             const WovenParams& p = edits_->params(editIndex_);
             if (!m.draft.empty()) {
                 std::vector<std::string> warnings;  // printed when the scene was read
-                draft_ = DraftEditor::open(m.draft, warnings);
-                draftEdit_ = editIndex_;
-                copyToBuffer(draftPath_, draft_->name());
+                draft_.open(DraftEditor::open(m.draft, warnings), editIndex_, false);
             } else if (!p.warp_colors.empty() || !p.weft_colors.empty()) {
-                status_.attempt([&] { showWeaveAsDraft(p, m.name); });
-                showDraftWindow_ = false;  // collapsed, as a scene's own draft
+                status_.attempt([&] { showWeaveAsDraft(p, m.name, false); });
             }
             break;
         }
@@ -185,12 +182,9 @@ void PreviewWindow::openDraft(const std::string& path) {
     std::vector<std::string> warnings;
     DraftEditor editor = DraftEditor::open(path, warnings);
     *p = editor.material(*p);
-    draft_ = std::move(editor);
-    draftEdit_ = editIndex_;
-    showDraftWindow_ = true;
+    draft_.open(std::move(editor), editIndex_, true, path);
     materialEdited();
     applyEdits();
-    copyToBuffer(draftPath_, path);
     for (const std::string& w : warnings) status_.warn(w);
     std::string said = "opened " + path;
     if (!warnings.empty())
@@ -378,7 +372,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
                     {"warp_color", {p->warp_color.x, p->warp_color.y, p->warp_color.z}},
                     {"pattern", {p->pattern.x, p->pattern.y, p->pattern.z}},
                     {"tile_rows", p->tile.size()},
-                    {"draft_open", draft_.has_value() && draftEdit_ == editIndex_},
+                    {"draft_open", draft_.openFor(editIndex_)},
                     {"measures", fabrics_.measures()},
                     // Every parameter, for the tests to tell whether an undo restored them all.
                     {"params", paramsToJson(*p)}};

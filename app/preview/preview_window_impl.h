@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "draft_editor.h"
-#include "draft_view.h"
+#include "draft_section.h"
 #include "fabric_choice.h"
 #include "fabric_menu.h"
 #include "fabrics_section.h"
@@ -45,8 +45,7 @@ std::string besideScene(const std::string& scene, const std::string& suffix, con
 struct MaterialState {
     std::vector<WovenEdit> edits;
     int editIndex = -1;
-    std::optional<DraftEditor> draft;
-    int draftEdit = -1;
+    DraftSection::State draft;
     std::optional<ChosenFabric> chosenFabric;
 };
 
@@ -90,8 +89,9 @@ private:
     // draft is closed, for it no longer describes the material.
     void showDraftOf(const std::string& wif, std::vector<std::string>& warnings);
     // The edited material's weave and thread colours as a draft (weave_draft.h) in the draft
-    // view, for a fabric that has no draft file: its threads are edited as a draft's are.
-    void showWeaveAsDraft(const WovenParams& p, const std::string& name);
+    // view, for a fabric that has no draft file: its threads are edited as a draft's are. `show`:
+    // the Draft window expanded (a scene's own starts collapsed).
+    void showWeaveAsDraft(const WovenParams& p, const std::string& name, bool show);
     void drawDraftWindow();
     void applyEdits();
     // Any change of a material: the shown final frame is of the old cloth, and the change is
@@ -189,13 +189,9 @@ private:
     MaterialState committed_;    // the state after the last completed edit
     bool editPending_ = false;  // a material changed since
 
-    // The draft of edit draftEdit_: every edit in the draft view is applied to that edit's
-    // parameters at once, so the next frame shows it.
-    std::optional<DraftEditor> draft_;
-    int draftEdit_ = -1;
-    DraftView draftView_;
-    bool showDraftWindow_ = false;  // expand the Draft window next frame: the user opened a draft
-    char draftPath_[512] = "draft.wif";
+    // Every edit in the draft view is applied to its edit's parameters at once, so the next frame
+    // shows it.
+    DraftSection draft_;
 
     FabricsSection fabrics_;
 
