@@ -10,16 +10,13 @@ namespace woven {
 
 void PreviewWindow::materialEdited() {
     render_.hide();  // the rendered frame is of the old cloth
-    editPending_ = true;
+    history_.edited();
     ++sceneGeneration_;
 }
 
 // A drag is one step, not one a frame: the step is taken once the control is let go.
 void PreviewWindow::commitCompletedEdit() {
-    if (!editPending_ || ImGui::IsAnyItemActive()) return;
-    history_.commit(std::move(committed_));
-    committed_ = materialState();
-    editPending_ = false;
+    if (history_.pending() && !ImGui::IsAnyItemActive()) history_.complete(materialState());
 }
 
 MaterialState PreviewWindow::materialState() const {
@@ -39,8 +36,7 @@ void PreviewWindow::restore(MaterialState state) {
 void PreviewWindow::undo() {
     commitCompletedEdit();
     if (std::optional<MaterialState> before = history_.undo(materialState())) {
-        restore(*before);
-        committed_ = std::move(*before);
+        restore(std::move(*before));
         status_.say("undone");
     } else {
         status_.say("nothing to undo");
@@ -49,8 +45,7 @@ void PreviewWindow::undo() {
 
 void PreviewWindow::redo() {
     if (std::optional<MaterialState> after = history_.redo(materialState())) {
-        restore(*after);
-        committed_ = std::move(*after);
+        restore(std::move(*after));
         status_.say("redone");
     } else {
         status_.say("nothing to redo");
@@ -66,7 +61,7 @@ void PreviewWindow::handleShortcuts() {
 }
 
 void PreviewWindow::drawUndoButtons() {
-    ImGui::BeginDisabled(!history_.canUndo() && !editPending_);
+    ImGui::BeginDisabled(!history_.canUndo());
     if (ui::Button("Undo")) undo();
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Z: the last material edit");

@@ -161,9 +161,7 @@ void PreviewWindow::openScene(const std::string& path) {
         }
     loadedEnvironment_ = scene().environment.color;
     ++sceneGeneration_;
-    history_.clear();
-    committed_ = materialState();
-    editPending_ = false;
+    history_.reset(materialState());
     // The Render button's settings as `woven render` takes them, but a size neither the command
     // line nor the scene gives is the window's: what it frames.
     RenderSettings settings = frameSettings(scene(), options_.frame);
@@ -388,7 +386,7 @@ void PreviewWindow::writeWidgetMap(const std::string& path) {
         {"view", {{"since", begunView_.frame}, {"checksum", begunView_.checksum},
                   {"mean", {begunView_.mean.r, begunView_.mean.g, begunView_.mean.b}}}},
         {"material", material},
-        {"history", {{"undo", history_.canUndo() || editPending_}, {"redo", history_.canRedo()}}},
+        {"history", {{"undo", history_.canUndo()}, {"redo", history_.canRedo()}}},
         {"render", render_.settingsState()},
         {"fit", fit_.state()},
         {"rendered", renderedViewState()},

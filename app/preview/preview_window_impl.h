@@ -186,8 +186,6 @@ private:
     glm::vec3 loadedEnvironment_{0.0f};  // as opened: Save writes the colour once it was changed
 
     UndoHistory<MaterialState> history_;
-    MaterialState committed_;    // the state after the last completed edit
-    bool editPending_ = false;  // a material changed since
 
     // Every edit in the draft view is applied to its edit's parameters at once, so the next frame
     // shows it.
