@@ -46,10 +46,11 @@ bool sameLights(const PreviewLights& a, const PreviewLights& b) {
            std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(), same);
 }
 
-// Whether a material lets light through its surface, so that its shadow is coloured: woven yarns
-// that transmit, or KHR_materials_diffuse_transmission on a glTF material.
+// Whether a material lets light through its surface, so that its shadow is coloured or partial:
+// woven yarns that transmit, woven cloth with see-through gaps (a voile: core's rays pass them), or
+// KHR_materials_diffuse_transmission on a glTF material.
 bool letsLightThrough(const Material& m) {
-    if (m.woven) return yarnsTransmit(*m.woven);
+    if (m.woven) return yarnsTransmit(*m.woven) || (m.woven->backing == 0 && mayShowGaps(*m.woven));
     return !m.unlit && m.diffuseTransmission.factor > 0.0f;
 }
 

@@ -9,8 +9,9 @@
 // Casters that let light through (TransmittingCasters) get maps of their own: the nearest one's
 // depth and the colour it passes, which the lookup multiplies in behind it, as game engines
 // colour the shadows of stained glass and foliage; a scene without them has neither the pass nor
-// the lookup. Unlike core, opaque woven cloth with see-through gaps casts a solid shadow here, and
-// emitters cast none (an area light's samples sit on its own surface).
+// the lookup. Woven cloth with see-through gaps is such a caster, its gaps' mean share passed
+// (core's rays pass each gap: the map's texel averages them). Emitters cast none (an area light's
+// samples sit on its own surface).
 #include <functional>
 #include <memory>
 #include <string>

@@ -163,12 +163,14 @@ std::vector<DrapeCase> drapeCases() {
 // the preview's indirect light (the sky's share, one bounce) is over core's (the default scene's,
 // docs/results/fidelity/README.md): measured 15.3 to 19.2 % there (10.1 to 15.0 % in the other
 // 33), held at 1.3 x the largest. The tartan's worst block (the same blocks, 29 to 78 % over core's
-// dark) and the voile's (its see-through gaps show the drape's dark inside in the preview, lit
-// surfaces in core's) miss more, held as the scenes' misses are (llvmpipe, 2026-12-08).
+// dark) and the voile's (behind its see-through gaps the preview's shadow map passes the gaps' mean
+// share, where core's rays pass each gap and draw the threads' shadows: 9.7-11.1 / 23.2-25.5 %,
+// 14.5-15.7 / 48.5-53.9 % while the gaps cast a solid shadow) miss more, held as the scenes'
+// misses are (llvmpipe, 2026-12-08).
 constexpr double kDrapeWorstBound = 0.25;
 constexpr KnownMiss kDrapeKnownMisses[] = {
     {"tartan_near", 0.05, 0.89}, {"tartan_mid", 0.05, 0.90}, {"tartan_far", 0.05, 0.93},
-    {"voile_near", 0.22, 0.63},  {"voile_mid", 0.19, 0.57},  {"voile_far", 0.19, 0.54},
+    {"voile_near", 0.144, 0.311}, {"voile_mid", 0.126, 0.332}, {"voile_far", 0.138, 0.302},
 };
 
 class DrapeFidelity : public testing::TestWithParam<DrapeCase> {};

@@ -210,7 +210,7 @@ glm::vec3 transmittedAlbedo(const WovenParams& p, float mu) {
     return glm::vec3(sum * (2.0 * M_PI / (n * n)));
 }
 
-TEST(PreviewShadows, WovenYarnsThatTransmitCastTheirColouredShadow) {
+TEST(PreviewShadows, WovenYarnsAndGapsThatPassLightCastTheirColouredShadow) {
     const Material voile = redVoile(1.0f);
     const WeaveCoverage coverage = weaveCoverage(Weave(*voile.woven), false);
     const float yarns = coverage.weft + coverage.warp;
@@ -231,9 +231,12 @@ TEST(PreviewShadows, WovenYarnsThatTransmitCastTheirColouredShadow) {
         EXPECT_GT(c.r, c.g + 0.1f);
         EXPECT_GT(c.g, 1.0f - yarns - 0.01f);  // the gaps' share at least
     }
-    // The same cloth with yarns that pass nothing is an opaque caster: a solid shadow, its gaps
-    // included (the preview's simplification for opaque cloth, shadow_maps.h).
-    expectShadowPasses(sun, redVoile(0.0f), [](float) { return glm::vec3(0.0f); });
+    // The same cloth with yarns that pass nothing passes its gaps' share alone, as core's rays
+    // pass the gaps (shadow_maps.h); with a backing behind the gaps it is an opaque caster.
+    expectShadowPasses(sun, redVoile(0.0f), [&](float) { return glm::vec3(1.0f - yarns); });
+    Material backed = redVoile(0.0f);
+    backed.woven->backing = 1;
+    expectShadowPasses(sun, backed, [](float) { return glm::vec3(0.0f); });
 }
 
 TEST(PreviewShadows, DiffuseTransmissionCastsItsColouredShadow) {
