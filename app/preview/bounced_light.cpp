@@ -1,7 +1,5 @@
 #include "bounced_light.h"
 
-#include "sampling.h"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 

@@ -50,7 +50,7 @@ bool sameLights(const PreviewLights& a, const PreviewLights& b) {
 // woven yarns that transmit, woven cloth with see-through gaps (a voile: core's rays pass them), or
 // KHR_materials_diffuse_transmission on a glTF material.
 bool letsLightThrough(const Material& m) {
-    if (m.woven) return yarnsTransmit(*m.woven) || (m.woven->backing == 0 && mayShowGaps(*m.woven));
+    if (m.woven) return yarnsTransmit(*m.woven) || mayBeSeenThrough(*m.woven);
     return !m.unlit && m.diffuseTransmission.factor > 0.0f;
 }
 

@@ -62,6 +62,8 @@ bool mayShowGaps(const WovenParams& p) {
     return narrow(YarnSide::Warp) && narrow(YarnSide::Weft);
 }
 
+bool mayBeSeenThrough(const WovenParams& p) { return p.backing == 0 && mayShowGaps(p); }
+
 bool hasNoise(const WovenParams& p) {
     for (YarnSide side : {YarnSide::Warp, YarnSide::Weft})
         for (const Yarn& yarn : usedYarns(p, side))

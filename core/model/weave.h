@@ -61,6 +61,8 @@ private:
 std::vector<Yarn> usedYarns(const WovenParams& p, YarnSide side);
 // Gaps between yarns exist only where both crossing yarns are narrower than their cells.
 bool mayShowGaps(const WovenParams& p);
+// Whether light may pass the cloth between its yarns: gaps, and no backing behind them.
+bool mayBeSeenThrough(const WovenParams& p);
 // Whether any thread's yarn has colour noise.
 bool hasNoise(const WovenParams& p);
 

@@ -42,7 +42,7 @@ WovenMaterial::WovenMaterial(const WovenParams& params)
     : params_((validate(params), params)),
       weave_(params),
       farField_{WeaveFarField(weave_, params_, false), WeaveFarField(weave_, params_, true)},
-      mayHaveGaps_(mayShowGaps(params) && params.backing == 0),
+      mayHaveGaps_(mayBeSeenThrough(params)),
       transmits_(false) {
     for (int i = 0; i < weave_.yarnCount(); ++i) transmits_ = transmits_ || weave_.yarn(i).transmission() > 0.0f;
 }

@@ -1,6 +1,7 @@
 #include "fidelity_blocks.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -62,6 +63,11 @@ std::vector<FidelitySubject> fidelitySubjects() {
     for (const std::string& wif : drafts)
         all.push_back({"draft_" + std::filesystem::path(wif).stem().string(), {{"wif", wif}}});
     return all;
+}
+
+std::string testName(std::string name) {
+    std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+    return name;
 }
 
 BlockErrors blockErrors(const Image& preview, const Image& core, const std::vector<uint8_t>& mask) {

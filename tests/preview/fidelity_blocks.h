@@ -2,7 +2,10 @@
 // The fidelity harnesses' subjects and measure of the preview against core (preview_fidelity_test.cpp
 // on the flat cloth, scene_fidelity_test.cpp on the shipped scenes and the drape): 8 x 8 block
 // means, and the pictures of docs/results/fidelity/.
+#include <gtest/gtest.h>
+
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -19,6 +22,35 @@ struct FidelitySubject {
     nlohmann::json material;
 };
 std::vector<FidelitySubject> fidelitySubjects();
+
+// A harness's case: a subject seen at one of the harness's distances (a struct of its own with a
+// `name`), named subject_distance.
+template <class Distance>
+struct SubjectAt {
+    FidelitySubject subject;
+    Distance distance;
+    std::string name() const { return subject.name + "_" + distance.name; }
+};
+template <class Distance>
+void PrintTo(const SubjectAt<Distance>& c, std::ostream* os) {
+    *os << c.name();
+}
+
+// Every subject at each of `distances`.
+template <class Distance, size_t N>
+std::vector<SubjectAt<Distance>> subjectsAt(const Distance (&distances)[N]) {
+    std::vector<SubjectAt<Distance>> all;
+    for (const FidelitySubject& s : fidelitySubjects())
+        for (const Distance& d : distances) all.push_back({s, d});
+    return all;
+}
+
+// `name` as a test's name: anything but letters and digits as '_'.
+std::string testName(std::string name);
+template <class Distance>
+std::string caseName(const testing::TestParamInfo<SubjectAt<Distance>>& info) {
+    return testName(info.param.name());
+}
 
 struct BlockErrors {
     double median = 0.0, worst = 0.0;

@@ -28,18 +28,7 @@ struct Distance {
 };
 constexpr Distance kDistances[] = {{"near", 20.0f, 8}, {"mid", 70.0f, 8}, {"far", 400.0f, 8}};
 
-struct Case {
-    FidelitySubject subject;
-    Distance distance;
-};
-void PrintTo(const Case& c, std::ostream* os) { *os << c.subject.name << "_" << c.distance.name; }
-
-std::vector<Case> cases() {
-    std::vector<Case> all;
-    for (const FidelitySubject& s : fidelitySubjects())
-        for (const Distance& d : kDistances) all.push_back({s, d});
-    return all;
-}
+using Case = SubjectAt<Distance>;
 
 // The weave's period and direction: the magnitude spectrum of a 64 x 64 window of the image's
 // luminance (mean removed, Hann-windowed), over the half plane of frequencies (kx in [-32, 32),
@@ -126,13 +115,13 @@ TEST_P(PreviewFidelity, BlockMeansMatchCore) {
     // As a resting window shows it: the mean of the refinement's 3 x 3 sample points a pixel.
     const Image preview = previewRadiance(scene, kWidth, kHeight, true, false, true, true);
     const BlockErrors e = blockErrors(preview, core, onCloth);
-    writeFidelityPicture(c.subject.name + "_" + c.distance.name, preview, core, 2);
+    writeFidelityPicture(c.name(), preview, core, 2);
     std::cout << "fidelity " << c.subject.name << " " << c.distance.name << ": " << e.blocks
               << " blocks, median " << e.median << ", worst " << e.worst << "\n";
     ASSERT_GT(e.blocks, size_t(50));
     double medianBound = 0.05, worstBound = 0.15;
     for (const KnownMiss& miss : kKnownMisses)
-        if (c.subject.name + "_" + c.distance.name == miss.name) medianBound = miss.median, worstBound = miss.worst;
+        if (c.name() == miss.name) medianBound = miss.median, worstBound = miss.worst;
     EXPECT_LE(e.median, medianBound);
     EXPECT_LE(e.worst, worstBound);
 }
@@ -161,20 +150,15 @@ TEST_P(PreviewWeave, PeriodAndDirectionMatchCore) {
     EXPECT_GE(preview.at(corePeak), 0.8 * preview.at(previewPeak));
 }
 
-std::string caseName(const testing::TestParamInfo<Case>& info) {
-    std::string name = info.param.subject.name + "_" + info.param.distance.name;
-    std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
-    return name;
-}
-INSTANTIATE_TEST_SUITE_P(Shipped, PreviewFidelity, testing::ValuesIn(cases()), caseName);
+INSTANTIATE_TEST_SUITE_P(Shipped, PreviewFidelity, testing::ValuesIn(subjectsAt(kDistances)), caseName<Distance>);
 
 // The cases whose threads span 2 pixels or more: near and mid.
 std::vector<Case> resolvedCases() {
-    std::vector<Case> all = cases();
+    std::vector<Case> all = subjectsAt(kDistances);
     all.erase(std::remove_if(all.begin(), all.end(), [](const Case& c) { return c.distance.threadsPerUv > 100.0f; }), all.end());
     return all;
 }
-INSTANTIATE_TEST_SUITE_P(Shipped, PreviewWeave, testing::ValuesIn(resolvedCases()), caseName);
+INSTANTIATE_TEST_SUITE_P(Shipped, PreviewWeave, testing::ValuesIn(resolvedCases()), caseName<Distance>);
 
 }  // namespace
 }  // namespace woven::test

@@ -127,11 +127,7 @@ TEST_P(SceneFidelity, BlockMeansMatchCore) {
     expectFidelity(name, "scene_" + name, openScene(GetParam()), 64, 0.15, kKnownMisses, std::size(kKnownMisses));
 }
 
-std::string sceneName(const testing::TestParamInfo<std::string>& info) {
-    std::string name = info.param;
-    std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
-    return name;
-}
+std::string sceneName(const testing::TestParamInfo<std::string>& info) { return testName(info.param); }
 INSTANTIATE_TEST_SUITE_P(Shipped, SceneFidelity, testing::ValuesIn(sceneFiles()), sceneName);
 
 // Every fabric of the library and every draft of assets/drafts on the default scene's drape (its
@@ -146,18 +142,7 @@ struct DrapeDistance {
 };
 constexpr DrapeDistance kDrapeDistances[] = {{"near", 1.0f / 25.0f}, {"mid", 1.0f / 8.0f}, {"far", 1.0f}};
 
-struct DrapeCase {
-    FidelitySubject subject;
-    DrapeDistance distance;
-};
-void PrintTo(const DrapeCase& c, std::ostream* os) { *os << c.subject.name << "_" << c.distance.name; }
-
-std::vector<DrapeCase> drapeCases() {
-    std::vector<DrapeCase> all;
-    for (const FidelitySubject& s : fidelitySubjects())
-        for (const DrapeDistance& d : kDrapeDistances) all.push_back({s, d});
-    return all;
-}
+using DrapeCase = SubjectAt<DrapeDistance>;
 
 // The drape's worst block misses the bound in 18 of the 51 cases, on the fold's shaded side, where
 // the preview's indirect light (the sky's share, one bounce) is over core's (the default scene's,
@@ -186,16 +171,11 @@ TEST_P(DrapeFidelity, BlockMeansMatchCore) {
     const glm::vec2 denim = cloth->woven->repeat;
     p.repeat *= c.distance.repeatShare * 0.5f * (denim.x + denim.y) / (0.5f * (p.repeat.x + p.repeat.y));
     cloth->woven = p;
-    const std::string name = c.subject.name + "_" + c.distance.name;
+    const std::string name = c.name();
     expectFidelity(name, "drape_" + name, scene, 128, kDrapeWorstBound, kDrapeKnownMisses, std::size(kDrapeKnownMisses));
 }
 
-std::string drapeCaseName(const testing::TestParamInfo<DrapeCase>& info) {
-    std::string name = info.param.subject.name + "_" + info.param.distance.name;
-    std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
-    return name;
-}
-INSTANTIATE_TEST_SUITE_P(Shipped, DrapeFidelity, testing::ValuesIn(drapeCases()), drapeCaseName);
+INSTANTIATE_TEST_SUITE_P(Shipped, DrapeFidelity, testing::ValuesIn(subjectsAt(kDrapeDistances)), caseName<DrapeDistance>);
 
 }  // namespace
 }  // namespace woven::test
